@@ -1,0 +1,475 @@
+#include "vtkHexahedraToTetrahedra.h"
+
+#include "uvLinearCellSplit.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkCellTypes.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStructuredGrid.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+vtkStandardNewMacro(vtkHexahedraToTetrahedra);
+
+namespace
+{
+// What happens to each input cell type: a positive tet count, 0 (dropped: not 3D), or -1 (error).
+constexpr int DroppedCell = 0;
+constexpr int UnsupportedCell = -1;
+
+int TetsPerCellType(int cellType, int splitMode)
+{
+  switch (cellType)
+  {
+    case VTK_TETRA:
+      return 1;
+    case VTK_HEXAHEDRON:
+    case VTK_VOXEL:
+      return splitMode == vtkHexahedraToTetrahedra::FIVE_TETRAHEDRA ? 5 : 6;
+    case VTK_WEDGE:
+      return 3;
+    case VTK_PYRAMID:
+      return 2;
+    default:
+      return UnsupportedCell;
+  }
+}
+
+/// Table indexed by cell type, built from the input's distinct cell types.
+std::array<int, 256> ClassifyCellTypes(vtkDataSet* input, int splitMode, std::vector<int>& unsupported)
+{
+  std::array<int, 256> table;
+  table.fill(UnsupportedCell);
+  vtkNew<vtkCellTypes> types;
+  input->GetCellTypes(types);
+  vtkNew<vtkGenericCell> probe;
+  for (vtkIdType i = 0; i < types->GetNumberOfTypes(); ++i)
+  {
+    const int type = types->GetCellType(i);
+    int tets = TetsPerCellType(type, splitMode);
+    if (tets == UnsupportedCell)
+    {
+      if (type == VTK_EMPTY_CELL)
+      {
+        tets = DroppedCell;
+      }
+      else
+      {
+        probe->SetCellType(type);
+        if (probe->GetCellDimension() < 3)
+        {
+          tets = DroppedCell;
+        }
+        else
+        {
+          unsupported.push_back(type);
+        }
+      }
+    }
+    table[type] = tets;
+  }
+  return table;
+}
+
+/// Writes the tets of one cell given its point ids in VTK order; returns how many.
+int SplitCell(int cellType, const vtkIdType* ids, vtkIdType tets[uv::MaxTetsPerCell][4])
+{
+  int local[uv::MaxTetsPerCell][4];
+  const vtkIdType* cornerIds = ids;
+  vtkIdType hexIds[8];
+  int count = 0;
+  switch (cellType)
+  {
+    case VTK_TETRA:
+      std::copy(ids, ids + 4, tets[0]);
+      return 1;
+    case VTK_VOXEL:
+      for (int k = 0; k < 8; ++k)
+      {
+        hexIds[k] = ids[uv::VoxelToHexahedronOrder[k]];
+      }
+      cornerIds = hexIds;
+      count = uv::SplitHexahedron(cornerIds, local);
+      break;
+    case VTK_HEXAHEDRON:
+      count = uv::SplitHexahedron(cornerIds, local);
+      break;
+    case VTK_WEDGE:
+      count = uv::SplitWedge(cornerIds, local);
+      break;
+    case VTK_PYRAMID:
+      count = uv::SplitPyramid(cornerIds, local);
+      break;
+    default:
+      return 0;
+  }
+  for (int t = 0; t < count; ++t)
+  {
+    for (int v = 0; v < 4; ++v)
+    {
+      tets[t][v] = cornerIds[local[t][v]];
+    }
+  }
+  return count;
+}
+
+/// Grid dimensions and global parity origin of a structured input, or false.
+bool GetStructuredLayout(vtkDataSet* input, int dims[3], int parityOrigin[3])
+{
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  if (auto image = vtkImageData::SafeDownCast(input))
+  {
+    image->GetExtent(extent);
+  }
+  else if (auto rectilinear = vtkRectilinearGrid::SafeDownCast(input))
+  {
+    rectilinear->GetExtent(extent);
+  }
+  else if (auto structured = vtkStructuredGrid::SafeDownCast(input))
+  {
+    if (structured->HasAnyBlankCells())
+    {
+      return false; // blanked cells go through the generic path, which drops them
+    }
+    structured->GetExtent(extent);
+  }
+  else
+  {
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    dims[d] = extent[2 * d + 1] - extent[2 * d] + 1;
+    parityOrigin[d] = extent[2 * d];
+    if (dims[d] < 2)
+    {
+      return false; // a 2D or 1D grid: its cells are dropped by the generic path
+    }
+  }
+  return true;
+}
+
+/// Points of the output: shared with a vtkPointSet input, computed otherwise.
+vtkSmartPointer<vtkPoints> OutputPoints(vtkDataSet* input)
+{
+  if (auto pointSet = vtkPointSet::SafeDownCast(input))
+  {
+    return pointSet->GetPoints();
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  points->SetNumberOfPoints(numPoints);
+  double* out = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
+  double first[3];
+  input->GetPoint(0, first); // the first call must come from one thread
+  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType id = begin; id < end; ++id)
+    {
+      input->GetPoint(id, out + 3 * id);
+    }
+  });
+  return points;
+}
+
+/// Makes every tet positive: a left-handed structured grid or a mirrored cell gives negative
+/// combinatorial orientation, which only the coordinates reveal.
+template <typename ConnectivityType, typename CoordinateType>
+void OrientTets(ConnectivityType* connectivity, vtkIdType numTets, const CoordinateType* xyz)
+{
+  vtkSMPTools::For(0, numTets, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType t = begin; t < end; ++t)
+    {
+      ConnectivityType* tet = connectivity + 4 * t;
+      const CoordinateType* p[4];
+      for (int v = 0; v < 4; ++v)
+      {
+        p[v] = xyz + 3 * tet[v];
+      }
+      if (uv::SixSignedVolume(p[0], p[1], p[2], p[3]) < 0.0)
+      {
+        std::swap(tet[1], tet[2]);
+      }
+    }
+  });
+}
+
+template <typename ConnectivityType>
+void OrientTets(ConnectivityType* connectivity, vtkIdType numTets, vtkPoints* points)
+{
+  vtkDataArray* data = points->GetData();
+  if (auto doubles = vtkDoubleArray::SafeDownCast(data))
+  {
+    OrientTets(connectivity, numTets, doubles->GetPointer(0));
+  }
+  else if (auto floats = vtkFloatArray::SafeDownCast(data))
+  {
+    OrientTets(connectivity, numTets, floats->GetPointer(0));
+  }
+  else
+  {
+    std::vector<double> xyz(3 * static_cast<size_t>(points->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      points->GetPoint(i, xyz.data() + 3 * i);
+    }
+    OrientTets(connectivity, numTets, xyz.data());
+  }
+}
+
+/// Fills connectivity (4 ids per tet) and original cell ids for a structured grid.
+template <typename ConnectivityType>
+void SplitStructured(const int dims[3], const int parityOrigin[3], bool fiveTets,
+  ConnectivityType* connectivity, vtkIdType* originalIds)
+{
+  const vtkIdType cx = dims[0] - 1, cy = dims[1] - 1, cz = dims[2] - 1;
+  const vtkIdType px = dims[0], pxy = static_cast<vtkIdType>(dims[0]) * dims[1];
+  const int tetsPerCell = fiveTets ? 5 : 6;
+  vtkSMPTools::For(0, cx * cy * cz, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      const vtkIdType i = cell % cx, j = (cell / cx) % cy, k = cell / (cx * cy);
+      const vtkIdType base = i + j * px + k * pxy;
+      const vtkIdType corners[8] = { base, base + 1, base + 1 + px, base + px, base + pxy,
+        base + 1 + pxy, base + 1 + px + pxy, base + px + pxy };
+      int local[uv::MaxTetsPerCell][4];
+      const int(*split)[4] = local;
+      if (fiveTets)
+      {
+        const bool odd = ((i + j + k + parityOrigin[0] + parityOrigin[1] + parityOrigin[2]) & 1) != 0;
+        split = uv::FiveTetSplit(odd);
+      }
+      else
+      {
+        uv::SplitHexahedron(corners, local);
+      }
+      ConnectivityType* out = connectivity + 4 * tetsPerCell * cell;
+      for (int t = 0; t < tetsPerCell; ++t)
+      {
+        originalIds[tetsPerCell * cell + t] = cell;
+        for (int v = 0; v < 4; ++v)
+        {
+          *out++ = static_cast<ConnectivityType>(corners[split[t][v]]);
+        }
+      }
+    }
+  });
+}
+
+/// Fills connectivity and original cell ids for any dataset, given each cell's first tet.
+template <typename ConnectivityType>
+void SplitGeneric(vtkDataSet* input, const std::vector<vtkIdType>& firstTet,
+  ConnectivityType* connectivity, vtkIdType* originalIds)
+{
+  const vtkIdType numCells = input->GetNumberOfCells();
+  vtkSMPThreadLocalObject<vtkIdList> threadIds;
+  vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
+    vtkIdList* ids = threadIds.Local();
+    vtkIdType tets[uv::MaxTetsPerCell][4];
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      if (firstTet[cell + 1] == firstTet[cell])
+      {
+        continue;
+      }
+      input->GetCellPoints(cell, ids);
+      const int count = SplitCell(input->GetCellType(cell), ids->GetPointer(0), tets);
+      for (int t = 0; t < count; ++t)
+      {
+        const vtkIdType tet = firstTet[cell] + t;
+        originalIds[tet] = cell;
+        for (int v = 0; v < 4; ++v)
+        {
+          connectivity[4 * tet + v] = static_cast<ConnectivityType>(tets[t][v]);
+        }
+      }
+    }
+  });
+}
+
+/// Offsets, connectivity filled by `fill(ValueType*)`, orientation fixed: a single-type cell array.
+template <typename ArrayType, typename Fill>
+vtkSmartPointer<vtkCellArray> BuildCells(vtkIdType numTets, Fill&& fill, vtkPoints* points)
+{
+  using ValueType = typename ArrayType::ValueType;
+  vtkNew<ArrayType> offsets;
+  vtkNew<ArrayType> connectivity;
+  offsets->SetNumberOfValues(numTets + 1);
+  connectivity->SetNumberOfValues(4 * numTets);
+  ValueType* offsetData = offsets->GetPointer(0);
+  vtkSMPTools::For(0, numTets + 1, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType t = begin; t < end; ++t)
+    {
+      offsetData[t] = static_cast<ValueType>(4 * t);
+    }
+  });
+  fill(connectivity->GetPointer(0));
+  OrientTets(connectivity->GetPointer(0), numTets, points);
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+} // namespace
+
+vtkHexahedraToTetrahedra::vtkHexahedraToTetrahedra() = default;
+
+int vtkHexahedraToTetrahedra::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  return 1;
+}
+
+int vtkHexahedraToTetrahedra::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0]);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  output->Initialize();
+  const vtkIdType numCells = input->GetNumberOfCells();
+  if (numCells == 0 || input->GetNumberOfPoints() == 0)
+  {
+    return 1; // empty in, empty out
+  }
+
+  int dims[3], parityOrigin[3];
+  const bool structured = GetStructuredLayout(input, dims, parityOrigin);
+  int splitMode = this->SplitMode;
+  if (splitMode == FIVE_TETRAHEDRA && !structured)
+  {
+    vtkWarningMacro("The five-tetrahedra split needs a structured 3D input (vtkImageData, "
+                    "vtkRectilinearGrid or an unblanked vtkStructuredGrid); using six tetrahedra.");
+    splitMode = SIX_TETRAHEDRA;
+  }
+
+  // Tets per cell, then each cell's first tet by a prefix sum.
+  std::vector<vtkIdType> firstTet;
+  vtkIdType numTets = 0;
+  if (structured)
+  {
+    numTets = numCells * (splitMode == FIVE_TETRAHEDRA ? 5 : 6);
+  }
+  else
+  {
+    std::vector<int> unsupported;
+    const std::array<int, 256> tetsPerType = ClassifyCellTypes(input, splitMode, unsupported);
+    if (!unsupported.empty())
+    {
+      vtkErrorMacro("Input has 3D cells that cannot be split (first type: "
+        << vtkCellTypes::GetClassNameFromTypeId(unsupported.front())
+        << "). Only linear tetrahedra, hexahedra, voxels, wedges and pyramids are supported; "
+           "linearize higher-order cells first (e.g. with vtkTessellatorFilter).");
+      return 0;
+    }
+    firstTet.resize(numCells + 1);
+    input->GetCellType(0); // the first call must come from one thread
+    vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType cell = begin; cell < end; ++cell)
+      {
+        firstTet[cell] = tetsPerType[input->GetCellType(cell)];
+      }
+    });
+    vtkIdType dropped = 0;
+    for (vtkIdType cell = 0; cell < numCells; ++cell)
+    {
+      const vtkIdType count = firstTet[cell];
+      dropped += count == 0 ? 1 : 0;
+      firstTet[cell] = numTets;
+      numTets += count;
+    }
+    firstTet[numCells] = numTets;
+    if (dropped > 0)
+    {
+      vtkWarningMacro("Dropped " << dropped << " cells that are not 3D (vertices, lines, "
+                                 << "polygons or empty cells).");
+    }
+  }
+  this->UpdateProgress(0.2);
+
+  vtkSmartPointer<vtkPoints> points = OutputPoints(input);
+  this->UpdateProgress(0.4);
+
+  vtkNew<vtkIdTypeArray> originalIds;
+  originalIds->SetName("vtkOriginalCellIds");
+  originalIds->SetNumberOfValues(numTets);
+  vtkIdType* originalIdData = originalIds->GetPointer(0);
+
+  auto fill = [&](auto* connectivity) {
+    if (structured)
+    {
+      SplitStructured(dims, parityOrigin, splitMode == FIVE_TETRAHEDRA, connectivity, originalIdData);
+    }
+    else
+    {
+      SplitGeneric(input, firstTet, connectivity, originalIdData);
+    }
+  };
+  // 32-bit connectivity halves memory and bandwidth whenever the ids fit.
+  const vtkIdType int32Max = std::numeric_limits<vtkTypeInt32>::max();
+  vtkSmartPointer<vtkCellArray> cells =
+    (input->GetNumberOfPoints() <= int32Max && 4 * numTets <= int32Max)
+    ? BuildCells<vtkTypeInt32Array>(numTets, fill, points)
+    : BuildCells<vtkTypeInt64Array>(numTets, fill, points);
+  this->UpdateProgress(0.8);
+
+  output->SetPoints(points);
+  output->SetCells(VTK_TETRA, cells);
+  output->GetPointData()->PassData(input->GetPointData());
+  output->GetFieldData()->PassData(input->GetFieldData());
+  vtkCellData* inCellData = input->GetCellData();
+  vtkCellData* outCellData = output->GetCellData();
+  if (inCellData->GetNumberOfArrays() > 0 && numTets > 0)
+  {
+    outCellData->CopyAllocate(inCellData, numTets);
+    vtkNew<vtkIdList> fromIds;
+    vtkNew<vtkIdList> toIds;
+    fromIds->SetNumberOfIds(numTets);
+    toIds->SetNumberOfIds(numTets);
+    vtkIdType* fromIdData = fromIds->GetPointer(0);
+    vtkIdType* toIdData = toIds->GetPointer(0);
+    vtkSMPTools::For(0, numTets, [&](vtkIdType begin, vtkIdType end) {
+      std::copy(originalIdData + begin, originalIdData + end, fromIdData + begin);
+      std::iota(toIdData + begin, toIdData + end, begin);
+    });
+    outCellData->CopyData(inCellData, fromIds, toIds);
+  }
+  outCellData->AddArray(originalIds);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkHexahedraToTetrahedra::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SplitMode: " << (this->SplitMode == FIVE_TETRAHEDRA ? "FiveTetrahedra" : "SixTetrahedra")
+     << "\n";
+}
