@@ -12,10 +12,10 @@
 #ifndef vtkAnalyticMeshSource_h
 #define vtkAnalyticMeshSource_h
 
-#include "UnstructuredVolumeModule.h" // for export macro
+#include "vtkUnstructuredVolumeModule.h" // for export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
-class UNSTRUCTUREDVOLUME_EXPORT vtkAnalyticMeshSource : public vtkUnstructuredGridAlgorithm
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkAnalyticMeshSource : public vtkUnstructuredGridAlgorithm
 {
 public:
   static vtkAnalyticMeshSource* New();

@@ -20,6 +20,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkRectilinearGrid.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
@@ -64,14 +65,34 @@ int TetsPerCellType(int cellType, int splitMode)
 /// Table indexed by cell type, built from the input's distinct cell types.
 std::array<int, 256> ClassifyCellTypes(vtkDataSet* input, int splitMode, std::vector<int>& unsupported)
 {
+  // Distinct cell types by a parallel scan (vtkDataSet::GetCellTypes is deprecated after VTK 9.1).
+  vtkSMPThreadLocal<std::array<bool, 256>> threadSeen(std::array<bool, 256>{});
+  const vtkIdType numCells = input->GetNumberOfCells();
+  input->GetCellType(0); // the first call must come from one thread
+  vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
+    std::array<bool, 256>& seen = threadSeen.Local();
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      seen[input->GetCellType(cell)] = true;
+    }
+  });
+  std::array<bool, 256> present{};
+  for (const std::array<bool, 256>& seen : threadSeen)
+  {
+    for (int type = 0; type < 256; ++type)
+    {
+      present[type] = present[type] || seen[type];
+    }
+  }
   std::array<int, 256> table;
   table.fill(UnsupportedCell);
-  vtkNew<vtkCellTypes> types;
-  input->GetCellTypes(types);
   vtkNew<vtkGenericCell> probe;
-  for (vtkIdType i = 0; i < types->GetNumberOfTypes(); ++i)
+  for (int type = 0; type < 256; ++type)
   {
-    const int type = types->GetCellType(i);
+    if (!present[type])
+    {
+      continue;
+    }
     int tets = TetsPerCellType(type, splitMode);
     if (tets == UnsupportedCell)
     {

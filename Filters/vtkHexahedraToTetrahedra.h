@@ -21,10 +21,10 @@
 #ifndef vtkHexahedraToTetrahedra_h
 #define vtkHexahedraToTetrahedra_h
 
-#include "UnstructuredVolumeModule.h" // for export macro
+#include "vtkUnstructuredVolumeModule.h" // for export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
-class UNSTRUCTUREDVOLUME_EXPORT vtkHexahedraToTetrahedra : public vtkUnstructuredGridAlgorithm
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkHexahedraToTetrahedra : public vtkUnstructuredGridAlgorithm
 {
 public:
   static vtkHexahedraToTetrahedra* New();

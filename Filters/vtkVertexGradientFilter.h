@@ -21,10 +21,10 @@
 #ifndef vtkVertexGradientFilter_h
 #define vtkVertexGradientFilter_h
 
-#include "UnstructuredVolumeModule.h" // for export macro
+#include "vtkUnstructuredVolumeModule.h" // for export macro
 #include "vtkDataSetAlgorithm.h"
 
-class UNSTRUCTUREDVOLUME_EXPORT vtkVertexGradientFilter : public vtkDataSetAlgorithm
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkVertexGradientFilter : public vtkDataSetAlgorithm
 {
 public:
   static vtkVertexGradientFilter* New();

@@ -6,4 +6,4 @@
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 import vtkmodules.vtkRenderingVolume  # noqa: F401
 
-from .UnstructuredVolume import *  # noqa: F401,F403
+from .vtkUnstructuredVolume import *  # noqa: F401,F403
