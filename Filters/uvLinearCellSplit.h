@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 
 namespace uv
 {
@@ -133,31 +134,6 @@ int SplitPyramid(const IdType globalIds[5], int tets[][4])
   return SplitByMinimumVertexCone(PyramidFaces, 5, globalIds, tets);
 }
 
-/// The 5-tet split of a structured cell. Corners whose global (i+j+k) is even form the central tet,
-/// each odd corner a tet with its three edge neighbours; the parity is global, so neighbouring cells
-/// cut their shared face along the same (even-even) diagonal. `originParityOdd` is (i+j+k) % 2 of the
-/// cell's corner 0. Local indices are in hexahedron order.
-inline const int (*FiveTetSplit(bool originParityOdd))[4]
-{
-  // Hexahedron corner 0..7 at (x,y,z) = (0,0,0) (1,0,0) (1,1,0) (0,1,0) (0,0,1) (1,0,1) (1,1,1) (0,1,1).
-  // Corners with even local parity: 0, 2, 5, 7; odd: 1, 3, 4, 6. Orientations checked on the unit cube.
-  static const int evenCentre[5][4] = {
-    { 0, 5, 2, 7 }, // central
-    { 1, 2, 5, 0 }, // corner 1 with neighbours 0, 2, 5
-    { 3, 0, 7, 2 }, // corner 3 with neighbours 0, 2, 7
-    { 4, 5, 0, 7 }, // corner 4 with neighbours 0, 5, 7
-    { 6, 7, 2, 5 }, // corner 6 with neighbours 2, 5, 7
-  };
-  static const int oddCentre[5][4] = {
-    { 1, 3, 4, 6 }, // central
-    { 0, 4, 3, 1 }, // corner 0 with neighbours 1, 3, 4
-    { 2, 6, 1, 3 }, // corner 2 with neighbours 1, 3, 6
-    { 5, 6, 4, 1 }, // corner 5 with neighbours 1, 4, 6
-    { 7, 4, 6, 3 }, // corner 7 with neighbours 3, 4, 6
-  };
-  return originParityOdd ? oddCentre : evenCentre;
-}
-
 /// Six times the signed volume of tet (a,b,c,d): positive for VTK's orientation.
 template <typename Vec3>
 double SixSignedVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
@@ -166,6 +142,39 @@ double SixSignedVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
   return (uy * vz - uz * vy) * wx + (uz * vx - ux * vz) * wy + (ux * vy - uy * vx) * wz;
+}
+
+/// The 5-tet split of a structured cell. Corners whose global (i+j+k) is even form the central tet,
+/// each odd corner a tet with its three edge neighbours; the parity is global, so neighbouring cells
+/// cut their shared face along the same (even-even) diagonal. `originParityOdd` is (i+j+k) % 2 of the
+/// cell's corner 0. Local indices are in hexahedron order; the tables are oriented once on the unit
+/// cube, so the order written below does not matter.
+inline const int (*FiveTetSplit(bool originParityOdd))[4]
+{
+  // Hexahedron corner 0..7 at (x,y,z) = (0,0,0) (1,0,0) (1,1,0) (0,1,0) (0,0,1) (1,0,1) (1,1,1) (0,1,1).
+  // Corners with even local parity: 0, 2, 5, 7; odd: 1, 3, 4, 6.
+  struct Tables
+  {
+    int Even[5][4] = { { 0, 2, 5, 7 }, { 1, 0, 2, 5 }, { 3, 0, 2, 7 }, { 4, 0, 5, 7 }, { 6, 2, 5, 7 } };
+    int Odd[5][4] = { { 1, 3, 4, 6 }, { 0, 1, 3, 4 }, { 2, 1, 3, 6 }, { 5, 1, 4, 6 }, { 7, 3, 4, 6 } };
+    Tables()
+    {
+      const double cube[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+        { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+      for (auto* table : { &this->Even, &this->Odd })
+      {
+        for (auto& tet : *table)
+        {
+          if (SixSignedVolume(cube[tet[0]], cube[tet[1]], cube[tet[2]], cube[tet[3]]) < 0.0)
+          {
+            std::swap(tet[1], tet[2]);
+          }
+        }
+      }
+    }
+  };
+  static const Tables tables;
+  return originParityOdd ? tables.Odd : tables.Even;
 }
 
 } // namespace uv

@@ -1,0 +1,154 @@
+// Checks shared by the VTK-level tests: conformity of tet meshes, volumes, error counting, data files.
+#ifndef uvTestMeshChecks_h
+#define uvTestMeshChecks_h
+
+#include "vtkCallbackCommand.h"
+#include "vtkCell.h"
+#include "vtkCommand.h"
+#include "vtkDataSet.h"
+#include "vtkGenericCell.h"
+#include "vtkIdList.h"
+#include "vtkObject.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace uvtest
+{
+
+/// Path of a file under ../shared/data, or "" when it is not there.
+inline std::string SharedData(const std::string& relative)
+{
+  const std::string path = std::string(UV_SHARED_DATA_DIR) + "/" + relative;
+  std::ifstream probe(path);
+  return probe.good() ? path : std::string();
+}
+
+struct FaceCensus
+{
+  long long Interior = 0;   // faces shared by exactly two cells
+  long long Boundary = 0;   // faces of one cell
+  long long Overshared = 0; // faces of three or more cells: overlap or a T-junction's mismatch
+};
+
+/// Counts the faces of every 3D cell by their sorted point ids.
+inline FaceCensus CountFaces(vtkDataSet* mesh)
+{
+  std::map<std::vector<vtkIdType>, int> faces;
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCell(c, cell);
+    if (cell->GetCellDimension() != 3)
+    {
+      continue;
+    }
+    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+    {
+      vtkIdList* ids = cell->GetFace(f)->GetPointIds();
+      std::vector<vtkIdType> key(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfIds());
+      std::sort(key.begin(), key.end());
+      ++faces[key];
+    }
+  }
+  FaceCensus census;
+  for (const auto& face : faces)
+  {
+    census.Interior += face.second == 2 ? 1 : 0;
+    census.Boundary += face.second == 1 ? 1 : 0;
+    census.Overshared += face.second > 2 ? 1 : 0;
+  }
+  return census;
+}
+
+/// Boundary triangles a conforming tet split of `mesh` must have: 2 per boundary quad, 1 per triangle.
+inline long long ExpectedBoundaryTriangles(vtkDataSet* mesh)
+{
+  std::map<std::vector<vtkIdType>, int> faces;
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCell(c, cell);
+    if (cell->GetCellDimension() != 3)
+    {
+      continue;
+    }
+    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+    {
+      vtkIdList* ids = cell->GetFace(f)->GetPointIds();
+      std::vector<vtkIdType> key(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfIds());
+      std::sort(key.begin(), key.end());
+      ++faces[key];
+    }
+  }
+  long long triangles = 0;
+  for (const auto& face : faces)
+  {
+    if (face.second == 1)
+    {
+      triangles += face.first.size() == 4 ? 2 : 1;
+    }
+  }
+  return triangles;
+}
+
+/// Signed volumes of the tets of a tetrahedral grid.
+inline std::vector<double> TetVolumes(vtkUnstructuredGrid* tets)
+{
+  std::vector<double> volumes;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < tets->GetNumberOfCells(); ++c)
+  {
+    tets->GetCellPoints(c, ids);
+    double p[4][3];
+    for (int v = 0; v < 4; ++v)
+    {
+      tets->GetPoint(ids->GetId(v), p[v]);
+    }
+    double u[3], w[3], n[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      u[d] = p[1][d] - p[0][d];
+      w[d] = p[2][d] - p[0][d];
+    }
+    n[0] = u[1] * w[2] - u[2] * w[1];
+    n[1] = u[2] * w[0] - u[0] * w[2];
+    n[2] = u[0] * w[1] - u[1] * w[0];
+    volumes.push_back(
+      (n[0] * (p[3][0] - p[0][0]) + n[1] * (p[3][1] - p[0][1]) + n[2] * (p[3][2] - p[0][2])) / 6.0);
+  }
+  return volumes;
+}
+
+/// Counts error and warning events of one VTK object (and keeps them off the console).
+class EventCounter
+{
+public:
+  explicit EventCounter(vtkObject* object)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback([](vtkObject*, unsigned long event, void* clientData, void* callData) {
+      auto* self = static_cast<EventCounter*>(clientData);
+      (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
+      self->LastMessage = callData ? static_cast<const char*>(callData) : "";
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+    object->AddObserver(vtkCommand::WarningEvent, this->Callback);
+  }
+  int Errors = 0;
+  int Warnings = 0;
+  std::string LastMessage;
+
+private:
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
+} // namespace uvtest
+
+#endif
