@@ -1,0 +1,91 @@
+"""The module from VTK's own Python (/usr/bin/python3 with python3-vtk9)."""
+import math
+import os
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import uvrender  # noqa: E402
+
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,  # noqa: E402
+                                vtkVertexGradientFilter)
+from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
+
+# vtkImageDifference's thresholded error allowed against a baseline (VTK's regression tests use 10).
+IMAGE_THRESHOLD = 10.0
+
+
+class Errors:
+    """Counts ErrorEvents of a VTK object instead of printing them."""
+
+    def __init__(self, obj):
+        self.count = 0
+        obj.AddObserver(vtkCommand.ErrorEvent, self)
+
+    def __call__(self, caller, event):
+        self.count += 1
+
+
+class FilterTests(unittest.TestCase):
+    def test_split_and_gradient_pipeline(self):
+        source = vtkAnalyticMeshSource()
+        source.SetResolution(4, 3, 2)
+        source.SetDistortion(vtkAnalyticMeshSource.JITTER)
+        split = vtkHexahedraToTetrahedra()
+        split.SetInputConnection(source.GetOutputPort())
+        gradient = vtkVertexGradientFilter()
+        gradient.SetInputConnection(split.GetOutputPort())
+        gradient.SetInputArrayToProcess(0, 0, 0, 0, "Linear")
+        gradient.Update()
+        out = gradient.GetOutput()
+        self.assertEqual(out.GetNumberOfCells(), 6 * 4 * 3 * 2)
+        self.assertEqual(out.GetCellData().GetArray("vtkOriginalCellIds").GetValue(7), 1)
+        gx, gy, gz = out.GetPointData().GetArray("Gradients").GetTuple3(11)
+        self.assertAlmostEqual(gx, 0.25, places=12)
+        self.assertAlmostEqual(gy, 0.15, places=12)
+        self.assertAlmostEqual(gz, 0.10, places=12)
+
+    def test_five_tetrahedra_on_image_data(self):
+        image = vtkImageData()
+        image.SetDimensions(3, 4, 5)
+        split = vtkHexahedraToTetrahedra()
+        split.SetSplitModeToFiveTetrahedra()
+        split.SetInputData(image)
+        split.Update()
+        self.assertEqual(split.GetOutput().GetNumberOfCells(), 5 * 2 * 3 * 4)
+
+    def test_missing_array_is_an_error_not_a_crash(self):
+        gradient = vtkVertexGradientFilter()
+        errors = Errors(gradient)
+        gradient.SetInputData(vtkUnstructuredGrid())
+        gradient.Update()  # empty: quiet
+        self.assertEqual(errors.count, 0)
+        source = vtkAnalyticMeshSource()
+        source.SetResolution(2, 2, 2)
+        gradient.SetInputConnection(source.GetOutputPort())
+        gradient.SetInputArrayToProcess(0, 0, 0, 0, "NotThere")
+        gradient.Update()
+        self.assertEqual(errors.count, 1)
+        self.assertIsNone(gradient.GetOutput().GetPointData().GetArray("Gradients"))
+
+    def test_default_dataset_render_matches_baseline(self):
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(os.path.join(uvrender.ROOT, "Data", "marschner_lobb_twisted_hex.vtu"))
+        split = vtkHexahedraToTetrahedra()
+        split.SetInputConnection(reader.GetOutputPort())
+        split.Update()
+        baseline = os.path.join(uvrender.BASELINES, "python_split_projected_tetrahedra.png")
+        out_dir = os.environ.get("UV_TEST_OUTPUT", tempfile.gettempdir())
+        candidate = os.path.join(out_dir, "python_split_projected_tetrahedra.png")
+        uvrender.render_projected_tetrahedra(split.GetOutput(), "MarschnerLobb", candidate, size=256)
+        self.assertTrue(os.path.exists(baseline), f"no baseline: look at {candidate}, then copy it to {baseline}")
+        error = uvrender.image_difference(candidate, baseline)
+        self.assertLessEqual(error, IMAGE_THRESHOLD, f"{candidate} differs from {baseline}: {error}")
+        self.assertTrue(math.isfinite(error))
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,143 @@
+"""Rendering helpers shared by the main job (render_default.py) and the Python image tests."""
+import os
+
+from vtkmodules.vtkCommonColor import vtkNamedColors  # noqa: F401  (registers colour names)
+from vtkmodules.vtkCommonDataModel import vtkPlane
+from vtkmodules.vtkFiltersCore import vtkCutter
+from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
+from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+from vtkmodules.vtkImagingCore import vtkImageDifference  # noqa: F401
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkDataSetMapper,
+                                         vtkRenderWindow, vtkRenderer, vtkVolume, vtkVolumeProperty,
+                                         vtkWindowToImageFilter)
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+from vtkmodules.vtkRenderingVolume import vtkProjectedTetrahedraMapper
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL backend)
+import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
+import vtkmodules.vtkRenderingFreeType  # noqa: F401
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+BASELINES = os.path.join(ROOT, "Testing", "Data", "Baseline")
+
+
+def volume_property(scalar_range):
+    """A cool-to-warm colour map with a ramp of opacity over the scalar range."""
+    low, high = scalar_range
+    colors = vtkColorTransferFunction()
+    colors.AddRGBPoint(low, 0.23, 0.30, 0.75)
+    colors.AddRGBPoint(0.5 * (low + high), 0.87, 0.87, 0.87)
+    colors.AddRGBPoint(high, 0.71, 0.02, 0.15)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(low, 0.0)
+    opacity.AddPoint(low + 0.3 * (high - low), 0.05)
+    opacity.AddPoint(high, 0.6)
+    prop = vtkVolumeProperty()
+    prop.SetColor(colors)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(0.2)
+    prop.SetInterpolationTypeToLinear()
+    return prop
+
+
+def _window(size):
+    renderer = vtkRenderer()
+    renderer.SetBackground(0.1, 0.1, 0.12)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    window.SetSize(size, size)
+    window.AddRenderer(renderer)
+    return renderer, window
+
+
+def _frame(renderer):
+    camera = renderer.GetActiveCamera()
+    renderer.ResetCamera()
+    camera.Azimuth(30)
+    camera.Elevation(25)
+    camera.OrthogonalizeViewUp()
+    renderer.ResetCamera()
+
+
+def _boundary_wireframe(grid):
+    """The grid's boundary faces as a faint wireframe, to show the mesh around what is drawn."""
+    surface = vtkDataSetSurfaceFilter()
+    surface.SetInputData(grid)
+    mapper = vtkDataSetMapper()
+    mapper.SetInputConnection(surface.GetOutputPort())
+    mapper.ScalarVisibilityOff()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetOpacity(0.15)
+    actor.GetProperty().SetRepresentationToWireframe()
+    return actor
+
+
+def write_png(window, path):
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtkPNGWriter()
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.SetFileName(path)
+    writer.Write()
+    return path
+
+
+def render_projected_tetrahedra(tets, scalar, path, size=512):
+    """Volume-renders a tetrahedral grid with VTK's vtkProjectedTetrahedraMapper."""
+    tets.GetPointData().SetActiveScalars(scalar)
+    mapper = vtkProjectedTetrahedraMapper()
+    mapper.SetInputData(tets)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(volume_property(tets.GetPointData().GetArray(scalar).GetRange()))
+    renderer, window = _window(size)
+    renderer.AddVolume(volume)
+    renderer.AddActor(_boundary_wireframe(tets))
+    _frame(renderer)
+    window.Render()
+    return write_png(window, path)
+
+
+def render_gradient_cut(grid, gradients, path, size=512):
+    """A cut through the grid coloured by |gradient|, over the grid's translucent boundary."""
+    plane = vtkPlane()
+    plane.SetOrigin(grid.GetCenter())
+    plane.SetNormal(0.3, -0.4, 1.0)
+    cut = vtkCutter()
+    cut.SetInputData(grid)
+    cut.SetCutFunction(plane)
+    cut_mapper = vtkDataSetMapper()
+    cut_mapper.SetInputConnection(cut.GetOutputPort())
+    cut_mapper.SetScalarModeToUsePointFieldData()
+    cut_mapper.SelectColorArray(gradients)
+    cut.Update()
+    magnitude_range = cut.GetOutput().GetPointData().GetArray(gradients).GetRange(-1)
+    cut_mapper.SetScalarRange(magnitude_range)
+    cut_mapper.GetLookupTable().SetVectorModeToMagnitude()
+    cut_mapper.GetLookupTable().SetHueRange(0.66, 0.0)
+    cut_actor = vtkActor()
+    cut_actor.SetMapper(cut_mapper)
+    renderer, window = _window(size)
+    renderer.AddActor(cut_actor)
+    renderer.AddActor(_boundary_wireframe(grid))
+    _frame(renderer)
+    window.Render()
+    return write_png(window, path)
+
+
+def image_difference(candidate_png, baseline_png):
+    """vtkImageDifference's thresholded error (0 = same image) between two PNG files."""
+    readers = []
+    for path in (candidate_png, baseline_png):
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        readers.append(reader)
+    difference = vtkImageDifference()
+    difference.SetInputConnection(readers[0].GetOutputPort())
+    difference.SetImageConnection(readers[1].GetOutputPort())
+    difference.Update()
+    return difference.GetThresholdedError()
