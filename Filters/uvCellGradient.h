@@ -3,12 +3,15 @@
 // Each function returns the gradient at the cell's parametric centre and a weight (the cell's volume,
 // or the isoparametric Jacobian determinant at the centre, which equals it for parallelepipeds and
 // approximates it otherwise). All are exact for fields linear in x, y, z on any valid cell, because
-// isoparametric interpolation reproduces linear functions. A non-positive weight means the cell is
-// degenerate or inverted; callers skip such cells.
+// isoparametric interpolation reproduces linear functions. The gradient does not depend on the
+// cell's orientation, so mirrored cells (negative image spacing, left-handed grids) count with
+// |det J|. A zero weight means the cell is degenerate; callers skip such cells.
 #ifndef uvCellGradient_h
 #define uvCellGradient_h
 
 #include <glm/glm.hpp>
+
+#include <cmath>
 
 namespace uv
 {
@@ -21,11 +24,11 @@ struct CellGradient
 
 namespace detail
 {
-/// grad f = J^-T df/dxi, where J's columns are dx/dxi_k. Weight = det J.
+/// grad f = J^-T df/dxi, where J's columns are dx/dxi_k. Weight = |det J|.
 inline CellGradient FromJacobian(const glm::dmat3& jacobian, const glm::dvec3& dfdxi)
 {
   CellGradient result;
-  const double det = glm::determinant(jacobian);
+  const double det = std::abs(glm::determinant(jacobian));
   // Relative test: a cell whose Jacobian is this close to singular carries no usable gradient.
   const double scale = glm::length(jacobian[0]) * glm::length(jacobian[1]) * glm::length(jacobian[2]);
   if (!(det > 1e-12 * scale))
@@ -104,7 +107,7 @@ inline CellGradient PyramidGradient(const glm::dvec3 p[5], const double f[5])
   const CellGradient second = TetrahedronGradient(secondPoints, secondValues);
   CellGradient result;
   result.Weight = first.Weight + second.Weight;
-  if (first.Weight <= 0.0 || second.Weight <= 0.0)
+  if (first.Weight <= 0.0 || second.Weight <= 0.0) // a degenerate half
   {
     result.Weight = 0.0;
     return result;

@@ -220,10 +220,31 @@ vtkSmartPointer<vtkPoints> OutputPoints(vtkDataSet* input)
 }
 
 /// Makes every tet positive: a left-handed structured grid or a mirrored cell gives negative
-/// combinatorial orientation, which only the coordinates reveal.
+/// combinatorial orientation, which only the coordinates reveal. When all cells are congruent
+/// (image data), the first tet's sign holds for all, and one test replaces numTets.
 template <typename ConnectivityType, typename CoordinateType>
-void OrientTets(ConnectivityType* connectivity, vtkIdType numTets, const CoordinateType* xyz)
+void OrientTets(
+  ConnectivityType* connectivity, vtkIdType numTets, const CoordinateType* xyz, bool congruentCells)
 {
+  if (congruentCells && numTets > 0)
+  {
+    const CoordinateType* p[4];
+    for (int v = 0; v < 4; ++v)
+    {
+      p[v] = xyz + 3 * connectivity[v];
+    }
+    if (uv::SixSignedVolume(p[0], p[1], p[2], p[3]) >= 0.0)
+    {
+      return;
+    }
+    vtkSMPTools::For(0, numTets, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        std::swap(connectivity[4 * t + 1], connectivity[4 * t + 2]);
+      }
+    });
+    return;
+  }
   vtkSMPTools::For(0, numTets, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType t = begin; t < end; ++t)
     {
@@ -242,16 +263,16 @@ void OrientTets(ConnectivityType* connectivity, vtkIdType numTets, const Coordin
 }
 
 template <typename ConnectivityType>
-void OrientTets(ConnectivityType* connectivity, vtkIdType numTets, vtkPoints* points)
+void OrientTets(ConnectivityType* connectivity, vtkIdType numTets, vtkPoints* points, bool congruentCells)
 {
   vtkDataArray* data = points->GetData();
   if (auto doubles = vtkDoubleArray::SafeDownCast(data))
   {
-    OrientTets(connectivity, numTets, doubles->GetPointer(0));
+    OrientTets(connectivity, numTets, doubles->GetPointer(0), congruentCells);
   }
   else if (auto floats = vtkFloatArray::SafeDownCast(data))
   {
-    OrientTets(connectivity, numTets, floats->GetPointer(0));
+    OrientTets(connectivity, numTets, floats->GetPointer(0), congruentCells);
   }
   else
   {
@@ -260,7 +281,7 @@ void OrientTets(ConnectivityType* connectivity, vtkIdType numTets, vtkPoints* po
     {
       points->GetPoint(i, xyz.data() + 3 * i);
     }
-    OrientTets(connectivity, numTets, xyz.data());
+    OrientTets(connectivity, numTets, xyz.data(), congruentCells);
   }
 }
 
@@ -272,6 +293,11 @@ void SplitStructured(const int dims[3], const int parityOrigin[3], bool fiveTets
   const vtkIdType cx = dims[0] - 1, cy = dims[1] - 1, cz = dims[2] - 1;
   const vtkIdType px = dims[0], pxy = static_cast<vtkIdType>(dims[0]) * dims[1];
   const int tetsPerCell = fiveTets ? 5 : 6;
+  // Point ids grow with i, j and k, so every cell's smallest corner and face minima sit at the
+  // same local places: the six-tet split is the same for all cells, computed once.
+  int sixTets[uv::MaxTetsPerCell][4];
+  const vtkIdType firstCellCorners[8] = { 0, 1, 1 + px, px, pxy, 1 + pxy, 1 + px + pxy, px + pxy };
+  uv::SplitHexahedron(firstCellCorners, sixTets);
   vtkSMPTools::For(0, cx * cy * cz, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType cell = begin; cell < end; ++cell)
     {
@@ -279,16 +305,11 @@ void SplitStructured(const int dims[3], const int parityOrigin[3], bool fiveTets
       const vtkIdType base = i + j * px + k * pxy;
       const vtkIdType corners[8] = { base, base + 1, base + 1 + px, base + px, base + pxy,
         base + 1 + pxy, base + 1 + px + pxy, base + px + pxy };
-      int local[uv::MaxTetsPerCell][4];
-      const int(*split)[4] = local;
+      const int(*split)[4] = sixTets;
       if (fiveTets)
       {
         const bool odd = ((i + j + k + parityOrigin[0] + parityOrigin[1] + parityOrigin[2]) & 1) != 0;
         split = uv::FiveTetSplit(odd);
-      }
-      else
-      {
-        uv::SplitHexahedron(corners, local);
       }
       ConnectivityType* out = connectivity + 4 * tetsPerCell * cell;
       for (int t = 0; t < tetsPerCell; ++t)
@@ -336,7 +357,8 @@ void SplitGeneric(vtkDataSet* input, const std::vector<vtkIdType>& firstTet,
 
 /// Offsets, connectivity filled by `fill(ValueType*)`, orientation fixed: a single-type cell array.
 template <typename ArrayType, typename Fill>
-vtkSmartPointer<vtkCellArray> BuildCells(vtkIdType numTets, Fill&& fill, vtkPoints* points)
+vtkSmartPointer<vtkCellArray> BuildCells(
+  vtkIdType numTets, Fill&& fill, vtkPoints* points, bool congruentCells)
 {
   using ValueType = typename ArrayType::ValueType;
   vtkNew<ArrayType> offsets;
@@ -351,7 +373,7 @@ vtkSmartPointer<vtkCellArray> BuildCells(vtkIdType numTets, Fill&& fill, vtkPoin
     }
   });
   fill(connectivity->GetPointer(0));
-  OrientTets(connectivity->GetPointer(0), numTets, points);
+  OrientTets(connectivity->GetPointer(0), numTets, points, congruentCells);
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsets, connectivity);
   return cells;
@@ -444,6 +466,9 @@ int vtkHexahedraToTetrahedra::RequestData(
   originalIds->SetNumberOfValues(numTets);
   vtkIdType* originalIdData = originalIds->GetPointer(0);
 
+  // Image data cells are translates of one another (whatever spacing or direction), so one sign
+  // test orients them all.
+  const bool congruentCells = vtkImageData::SafeDownCast(input) != nullptr;
   auto fill = [&](auto* connectivity) {
     if (structured)
     {
@@ -458,8 +483,8 @@ int vtkHexahedraToTetrahedra::RequestData(
   const vtkIdType int32Max = std::numeric_limits<vtkTypeInt32>::max();
   vtkSmartPointer<vtkCellArray> cells =
     (input->GetNumberOfPoints() <= int32Max && 4 * numTets <= int32Max)
-    ? BuildCells<vtkTypeInt32Array>(numTets, fill, points)
-    : BuildCells<vtkTypeInt64Array>(numTets, fill, points);
+    ? BuildCells<vtkTypeInt32Array>(numTets, fill, points, congruentCells)
+    : BuildCells<vtkTypeInt64Array>(numTets, fill, points, congruentCells);
   this->UpdateProgress(0.8);
 
   output->SetPoints(points);

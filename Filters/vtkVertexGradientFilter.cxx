@@ -10,6 +10,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -18,6 +19,7 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -73,6 +75,84 @@ uv::CellGradient GradientOfCell(int cellType, const vtkIdType* ids, const std::v
     default:
       return uv::HexahedronGradient(p, f);
   }
+}
+/// The same mean of cell gradients for image data, without links: every voxel is the same affine
+/// image of the unit cube, so all weights are equal and J^-T is applied once per vertex.
+/// Returns false (and leaves `gradients` alone) for grids that are not 3D.
+bool ImageDataVertexGradients(vtkImageData* image, const std::vector<double>& values,
+  std::vector<glm::dvec3>& gradients)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2)
+  {
+    return false;
+  }
+  const vtkIdType nx = dims[0], nxy = static_cast<vtkIdType>(dims[0]) * dims[1];
+  const vtkIdType cx = nx - 1, cy = dims[1] - 1, cz = dims[2] - 1;
+  // The voxel Jacobian from real corner positions: spacing, its signs and any direction matrix.
+  glm::dvec3 origin, alongX, alongY, alongZ;
+  image->GetPoint(0, &origin.x);
+  image->GetPoint(1, &alongX.x);
+  image->GetPoint(nx, &alongY.x);
+  image->GetPoint(nxy, &alongZ.x);
+  const glm::dmat3 jacobian(alongX - origin, alongY - origin, alongZ - origin);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  gradients.assign(values.size(), glm::dvec3(nan));
+  const uv::CellGradient probe = uv::detail::FromJacobian(jacobian, glm::dvec3(0.0));
+  if (probe.Weight <= 0.0)
+  {
+    return true; // degenerate spacing: no cell carries a gradient
+  }
+  const glm::dmat3 inverseTranspose = glm::transpose(glm::inverse(jacobian));
+
+  // df/dxi at each voxel's centre; NaN when a corner is not finite.
+  std::vector<glm::dvec3> cellDerivatives(cx * cy * cz);
+  vtkSMPTools::For(0, cx * cy * cz, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      const vtkIdType i = cell % cx, j = (cell / cx) % cy, k = cell / (cx * cy);
+      const double* f = values.data() + i + j * nx + k * nxy;
+      const double f000 = f[0], f100 = f[1], f010 = f[nx], f110 = f[nx + 1];
+      const double f001 = f[nxy], f101 = f[nxy + 1], f011 = f[nxy + nx], f111 = f[nxy + nx + 1];
+      const glm::dvec3 derivative(
+        0.25 * ((f100 - f000) + (f110 - f010) + (f101 - f001) + (f111 - f011)),
+        0.25 * ((f010 - f000) + (f110 - f100) + (f011 - f001) + (f111 - f101)),
+        0.25 * ((f001 - f000) + (f101 - f100) + (f011 - f010) + (f111 - f110)));
+      // Any non-finite corner makes a non-finite sum, which marks the cell unusable.
+      cellDerivatives[cell] = std::isfinite(derivative.x + derivative.y + derivative.z)
+        ? derivative
+        : glm::dvec3(nan);
+    }
+  });
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType vertex = begin; vertex < end; ++vertex)
+    {
+      const vtkIdType i = vertex % nx, j = (vertex / nx) % dims[1], k = vertex / nxy;
+      glm::dvec3 sum(0.0);
+      int count = 0;
+      for (vtkIdType ck = std::max<vtkIdType>(k - 1, 0); ck <= std::min(k, cz - 1); ++ck)
+      {
+        for (vtkIdType cj = std::max<vtkIdType>(j - 1, 0); cj <= std::min(j, cy - 1); ++cj)
+        {
+          for (vtkIdType ci = std::max<vtkIdType>(i - 1, 0); ci <= std::min(i, cx - 1); ++ci)
+          {
+            const glm::dvec3& derivative = cellDerivatives[ci + cx * (cj + cy * ck)];
+            if (!std::isnan(derivative.x))
+            {
+              sum += derivative;
+              ++count;
+            }
+          }
+        }
+      }
+      if (count > 0)
+      {
+        gradients[vertex] = inverseTranspose * (sum / static_cast<double>(count));
+      }
+    }
+  });
+  return true;
 }
 } // namespace
 
@@ -132,15 +212,29 @@ int vtkVertexGradientFilter::RequestData(
     return 0;
   }
 
-  // Values and positions in double, read once in parallel.
+  // Values in double, read once in parallel.
   std::vector<double> values(numPoints);
+  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType id = begin; id < end; ++id)
+    {
+      values[id] = scalars->GetComponent(id, 0);
+    }
+  });
+  std::vector<glm::dvec3> vertexGradients;
+  auto image = vtkImageData::SafeDownCast(input);
+  if (image && ImageDataVertexGradients(image, values, vertexGradients))
+  {
+    this->AddGradientArray(output, scalars, vertexGradients);
+    this->UpdateProgress(1.0);
+    return 1;
+  }
+
   std::vector<glm::dvec3> points(numPoints);
   double first[3];
   input->GetPoint(0, first); // the first call must come from one thread
   vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType id = begin; id < end; ++id)
     {
-      values[id] = scalars->GetComponent(id, 0);
       input->GetPoint(id, &points[id].x);
     }
   });
@@ -192,18 +286,7 @@ int vtkVertexGradientFilter::RequestData(
   const uv::VertexCellLinks links = uv::BuildVertexCellLinks(numPoints, cellOffsets, connectivity);
   this->UpdateProgress(0.8);
 
-  vtkSmartPointer<vtkDataArray> gradients;
-  if (scalars->GetDataType() == VTK_DOUBLE)
-  {
-    gradients = vtkSmartPointer<vtkDoubleArray>::New();
-  }
-  else
-  {
-    gradients = vtkSmartPointer<vtkFloatArray>::New();
-  }
-  gradients->SetName(this->ResultArrayName);
-  gradients->SetNumberOfComponents(3);
-  gradients->SetNumberOfTuples(numPoints);
+  vertexGradients.resize(numPoints);
   vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType vertex = begin; vertex < end; ++vertex)
     {
@@ -215,14 +298,37 @@ int vtkVertexGradientFilter::RequestData(
         sum += cell.Weight * cell.Gradient;
         weight += cell.Weight;
       }
-      const glm::dvec3 mean =
+      vertexGradients[vertex] =
         weight > 0.0 ? sum / weight : glm::dvec3(std::numeric_limits<double>::quiet_NaN());
-      gradients->SetTuple(vertex, &mean.x);
+    }
+  });
+  this->AddGradientArray(output, scalars, vertexGradients);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkVertexGradientFilter::AddGradientArray(
+  vtkDataSet* output, vtkDataArray* scalars, const std::vector<glm::dvec3>& vertexGradients)
+{
+  vtkSmartPointer<vtkDataArray> gradients;
+  if (scalars->GetDataType() == VTK_DOUBLE)
+  {
+    gradients = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  else
+  {
+    gradients = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  gradients->SetName(this->ResultArrayName);
+  gradients->SetNumberOfComponents(3);
+  gradients->SetNumberOfTuples(static_cast<vtkIdType>(vertexGradients.size()));
+  vtkSMPTools::For(0, gradients->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType vertex = begin; vertex < end; ++vertex)
+    {
+      gradients->SetTuple(vertex, &vertexGradients[vertex].x);
     }
   });
   output->GetPointData()->AddArray(gradients);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 void vtkVertexGradientFilter::PrintSelf(ostream& os, vtkIndent indent)

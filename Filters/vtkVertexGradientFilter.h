@@ -12,10 +12,12 @@
  * name); by default the active point scalars are used. The result is a 3-component point array,
  * `Gradients` unless SetResultArrayName says otherwise, double for double input and float otherwise.
  *
- * Cells touching a non-finite scalar, degenerate or inverted cells, and cells that are not linear 3D
- * cells contribute nothing; a vertex with no contributing cell gets NaN. So a NaN in the input
+ * Mirrored cells (negative image spacing, left-handed structured grids) count like any other.
+ * Cells touching a non-finite scalar, degenerate cells, and cells that are not linear 3D cells
+ * contribute nothing; a vertex with no contributing cell gets NaN. So a NaN in the input
  * changes only the gradients of the vertices that share a cell with it.
  * A missing or multi-component array is an error, and the output then has no gradient array.
+ * vtkImageData takes a direct structured path with the same result, without building vertex-cell links.
  * Multithreaded with vtkSMPTools; the result does not depend on the number of threads.
  */
 #ifndef vtkVertexGradientFilter_h
@@ -23,6 +25,9 @@
 
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 #include "vtkDataSetAlgorithm.h"
+
+#include <glm/vec3.hpp> // for the gradient buffer
+#include <vector>       // for the gradient buffer
 
 class VTKUNSTRUCTUREDVOLUME_EXPORT vtkVertexGradientFilter : public vtkDataSetAlgorithm
 {
@@ -44,6 +49,10 @@ protected:
   ~vtkVertexGradientFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /// Stores per-vertex gradients as the result array, double for double scalars, float otherwise.
+  void AddGradientArray(
+    vtkDataSet* output, vtkDataArray* scalars, const std::vector<glm::dvec3>& vertexGradients);
 
   char* ResultArrayName = nullptr;
 

@@ -65,13 +65,18 @@ TEST(CellGradient, ExactForLinearFieldsOnDistortedCells)
   ExpectExactOnLinear(Pyramid, uv::PyramidGradient, 1.0 / 3.0);
 }
 
-TEST(CellGradient, DegenerateAndInvertedCellsHaveNoWeight)
+TEST(CellGradient, DegenerateCellsHaveNoWeightMirroredOnesCount)
 {
   glm::dvec3 flat[4] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 1e-15 } };
   const double f[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
   EXPECT_EQ(uv::TetrahedronGradient(flat, f).Weight, 0.0);
-  glm::dvec3 inverted[4] = { Tet[0], Tet[2], Tet[1], Tet[3] };
-  EXPECT_EQ(uv::TetrahedronGradient(inverted, f).Weight, 0.0);
+  // A mirrored cell (points listed left-handed) has the same gradient and volume.
+  glm::dvec3 mirrored[4] = { Tet[0], Tet[2], Tet[1], Tet[3] };
+  const double mirroredValues[4] = { f[0], f[2], f[1], f[3] };
+  const uv::CellGradient mirroredResult = uv::TetrahedronGradient(mirrored, mirroredValues);
+  const uv::CellGradient result = uv::TetrahedronGradient(Tet, f);
+  EXPECT_NEAR(mirroredResult.Weight, 1.0 / 6.0, 1e-15);
+  EXPECT_NEAR(glm::length(mirroredResult.Gradient - result.Gradient), 0.0, 1e-14);
   glm::dvec3 collapsed[8];
   for (int k = 0; k < 8; ++k)
   {

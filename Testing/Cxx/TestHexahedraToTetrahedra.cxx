@@ -200,6 +200,19 @@ TEST(HexahedraToTetrahedra, ImageDataSixAndFive)
   }
 }
 
+TEST(HexahedraToTetrahedra, MirroredImageData)
+{
+  // Negative spacing mirrors every voxel; one sign test must flip them all.
+  vtkSmartPointer<vtkImageData> image = Image(3, 4, 2);
+  image->SetSpacing(-0.5, 0.25, -2.0);
+  for (int mode : { vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, vtkHexahedraToTetrahedra::FIVE_TETRAHEDRA })
+  {
+    ExpectValidSplit(image, Split(image, mode), (3 * 0.5) * (4 * 0.25) * (2 * 2.0));
+  }
+  image->SetSpacing(-0.5, 0.25, 2.0);
+  ExpectValidSplit(image, Split(image), (3 * 0.5) * (4 * 0.25) * (2 * 2.0));
+}
+
 TEST(HexahedraToTetrahedra, RectilinearAndLeftHandedStructuredGrids)
 {
   vtkNew<vtkRectilinearGrid> rectilinear;
