@@ -37,8 +37,8 @@ struct FaceCensus
   long long Overshared = 0; // faces of three or more cells: overlap or a T-junction's mismatch
 };
 
-/// Counts the faces of every 3D cell by their sorted point ids.
-inline FaceCensus CountFaces(vtkDataSet* mesh)
+/// How many 3D cells share each face, faces keyed by their sorted point ids.
+inline std::map<std::vector<vtkIdType>, int> FaceMultiplicity(vtkDataSet* mesh)
 {
   std::map<std::vector<vtkIdType>, int> faces;
   vtkNew<vtkGenericCell> cell;
@@ -57,8 +57,13 @@ inline FaceCensus CountFaces(vtkDataSet* mesh)
       ++faces[key];
     }
   }
+  return faces;
+}
+
+inline FaceCensus CountFaces(vtkDataSet* mesh)
+{
   FaceCensus census;
-  for (const auto& face : faces)
+  for (const auto& face : FaceMultiplicity(mesh))
   {
     census.Interior += face.second == 2 ? 1 : 0;
     census.Boundary += face.second == 1 ? 1 : 0;
@@ -70,25 +75,8 @@ inline FaceCensus CountFaces(vtkDataSet* mesh)
 /// Boundary triangles a conforming tet split of `mesh` must have: 2 per boundary quad, 1 per triangle.
 inline long long ExpectedBoundaryTriangles(vtkDataSet* mesh)
 {
-  std::map<std::vector<vtkIdType>, int> faces;
-  vtkNew<vtkGenericCell> cell;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-  {
-    mesh->GetCell(c, cell);
-    if (cell->GetCellDimension() != 3)
-    {
-      continue;
-    }
-    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
-    {
-      vtkIdList* ids = cell->GetFace(f)->GetPointIds();
-      std::vector<vtkIdType> key(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfIds());
-      std::sort(key.begin(), key.end());
-      ++faces[key];
-    }
-  }
   long long triangles = 0;
-  for (const auto& face : faces)
+  for (const auto& face : FaceMultiplicity(mesh))
   {
     if (face.second == 1)
     {

@@ -73,6 +73,17 @@ def _boundary_wireframe(grid):
     return actor
 
 
+def _render_scene(props, grid, size, path):
+    """Renders the props inside the grid's boundary wireframe from the standard view; writes a PNG."""
+    renderer, window = _window(size)
+    for prop in props:
+        renderer.AddViewProp(prop)
+    renderer.AddActor(_boundary_wireframe(grid))
+    _frame(renderer)
+    window.Render()
+    return write_png(window, path)
+
+
 def write_png(window, path):
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
@@ -93,12 +104,7 @@ def render_projected_tetrahedra(tets, scalar, path, size=512):
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(volume_property(tets.GetPointData().GetArray(scalar).GetRange()))
-    renderer, window = _window(size)
-    renderer.AddVolume(volume)
-    renderer.AddActor(_boundary_wireframe(tets))
-    _frame(renderer)
-    window.Render()
-    return write_png(window, path)
+    return _render_scene([volume], tets, size, path)
 
 
 def render_gradient_cut(grid, gradients, path, size=512):
@@ -120,12 +126,7 @@ def render_gradient_cut(grid, gradients, path, size=512):
     cut_mapper.GetLookupTable().SetHueRange(0.66, 0.0)
     cut_actor = vtkActor()
     cut_actor.SetMapper(cut_mapper)
-    renderer, window = _window(size)
-    renderer.AddActor(cut_actor)
-    renderer.AddActor(_boundary_wireframe(grid))
-    _frame(renderer)
-    window.Render()
-    return write_png(window, path)
+    return _render_scene([cut_actor], grid, size, path)
 
 
 def image_difference(candidate_png, baseline_png):
