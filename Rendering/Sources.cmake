@@ -1,5 +1,15 @@
 # Sources of the Rendering half of the UnstructuredVolume module (included by the root CMakeLists.txt).
-# The mappers land here; the GLSL they use is embedded from Shaders/ by the root CMakeLists.txt.
+# The GLSL the mappers use is embedded from Shaders/ by the root CMakeLists.txt.
+set(uv_rendering_classes
+  vtkUnstructuredVolumeReferenceRenderer)
 set(uv_rendering_sources)
 set(uv_rendering_headers)
-set(uv_rendering_private_headers)
+foreach (class IN LISTS uv_rendering_classes)
+  list(APPEND uv_rendering_sources "${CMAKE_CURRENT_LIST_DIR}/${class}.cxx")
+  list(APPEND uv_rendering_headers "${CMAKE_CURRENT_LIST_DIR}/${class}.h")
+endforeach ()
+# VTK-free math, unit-tested on its own, and the one VTK-reading helper the mappers share.
+set(uv_rendering_private_headers
+  "${CMAKE_CURRENT_LIST_DIR}/uvOpticalModel.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvRayCellGeometry.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvTransferFunctionFromVolumeProperty.h")

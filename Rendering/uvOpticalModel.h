@@ -1,0 +1,224 @@
+// The project's optical model, free of VTK: emission-absorption with colour and extinction
+// piecewise linear in the scalar, and the exact integral of it along a ray segment.
+//
+// Along a ray, with scalar s(t), extinction tau(s) and colour c(s):
+//   premultiplied colour  C = integral c(s(t)) tau(s(t)) exp(-integral_0^t tau) dt
+//   opacity               A = 1 - exp(-integral tau dt)
+// composited front to back over a transparent background. A vtkVolumeProperty maps to it as:
+// each opacity node alpha at unit distance d gives tau = -ln(1 - alpha) / d (alpha is clamped below
+// 1 - 1e-9 so tau stays finite); tau and colour are linear in s between the union of the colour and
+// opacity nodes, and constant beyond the first and last node.
+#ifndef uvOpticalModel_h
+#define uvOpticalModel_h
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace uv
+{
+
+/// Extinction coefficient of an opacity `alpha` reached over `unitDistance`.
+inline double ExtinctionFromOpacity(double alpha, double unitDistance)
+{
+  const double clamped = std::min(std::max(alpha, 0.0), 1.0 - 1e-9);
+  return -std::log1p(-clamped) / unitDistance;
+}
+
+/// Colour and extinction, linear in the scalar between nodes, constant outside them.
+class TransferFunction
+{
+public:
+  struct Node
+  {
+    double Scalar;
+    glm::dvec3 Color;
+    double Extinction;
+  };
+
+  /// Nodes must be sorted by scalar, with distinct scalars; at least one.
+  explicit TransferFunction(std::vector<Node> nodes)
+    : Nodes(std::move(nodes))
+  {
+  }
+
+  const std::vector<Node>& GetNodes() const { return this->Nodes; }
+
+  /// Index i such that Nodes[i].Scalar <= s < Nodes[i+1].Scalar; -1 below, size-1 above.
+  int Segment(double s) const
+  {
+    const auto above = std::upper_bound(this->Nodes.begin(), this->Nodes.end(), s,
+      [](double value, const Node& node) { return value < node.Scalar; });
+    return static_cast<int>(above - this->Nodes.begin()) - 1;
+  }
+
+  double Extinction(double s) const { return this->Evaluate(s).Extinction; }
+  glm::dvec3 Color(double s) const { return this->Evaluate(s).Color; }
+
+  Node Evaluate(double s) const
+  {
+    const int i = this->Segment(s);
+    if (i < 0)
+    {
+      return { s, this->Nodes.front().Color, this->Nodes.front().Extinction };
+    }
+    if (i >= static_cast<int>(this->Nodes.size()) - 1)
+    {
+      return { s, this->Nodes.back().Color, this->Nodes.back().Extinction };
+    }
+    const Node& a = this->Nodes[i];
+    const Node& b = this->Nodes[i + 1];
+    const double w = (s - a.Scalar) / (b.Scalar - a.Scalar);
+    return { s, a.Color + w * (b.Color - a.Color), a.Extinction + w * (b.Extinction - a.Extinction) };
+  }
+
+  /// True when every node's extinction is zero: nothing to see at all.
+  bool IsInvisible() const
+  {
+    return std::all_of(this->Nodes.begin(), this->Nodes.end(), [](const Node& n) { return n.Extinction <= 0.0; });
+  }
+
+private:
+  std::vector<Node> Nodes;
+};
+
+/// Front-to-back compositing of premultiplied colour and optical depth.
+struct RayAccumulator
+{
+  glm::dvec3 Color{ 0.0 };
+  double Transmittance = 1.0;
+
+  void Composite(const glm::dvec3& premultipliedColor, double opticalDepth)
+  {
+    this->Color += this->Transmittance * premultipliedColor;
+    this->Transmittance *= std::exp(-opticalDepth);
+  }
+  double Opacity() const { return 1.0 - this->Transmittance; }
+};
+
+namespace detail
+{
+// 6-point Gauss-Legendre on [-1, 1]: exact for polynomials up to degree 11.
+constexpr std::array<double, 6> GaussNodes = { -0.9324695142031520278, -0.6612093864662645137,
+  -0.2386191860831969086, 0.2386191860831969086, 0.6612093864662645137, 0.9324695142031520278 };
+constexpr std::array<double, 6> GaussWeights = { 0.1713244923791703450, 0.3607615730481386076,
+  0.4679139345726910474, 0.4679139345726910474, 0.3607615730481386076, 0.1713244923791703450 };
+
+struct PieceIntegral
+{
+  glm::dvec3 Color{ 0.0 };
+  double Depth = 0.0;
+};
+
+/// Optical depth and premultiplied colour of [a, b] by nested Gauss-Legendre, where the scalar
+/// crosses no transfer-function node (the integrand is smooth).
+template <typename ScalarAt>
+PieceIntegral GaussPiece(const TransferFunction& tf, const ScalarAt& scalarAt, double a, double b)
+{
+  PieceIntegral result;
+  const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+  for (std::size_t k = 0; k < GaussNodes.size(); ++k)
+  {
+    const double t = mid + half * GaussNodes[k];
+    const TransferFunction::Node here = tf.Evaluate(scalarAt(t));
+    // Optical depth from a to t, by the same rule on [a, t].
+    double inner = 0.0;
+    const double innerHalf = 0.5 * (t - a), innerMid = 0.5 * (a + t);
+    for (std::size_t j = 0; j < GaussNodes.size(); ++j)
+    {
+      inner += GaussWeights[j] * tf.Extinction(scalarAt(innerMid + innerHalf * GaussNodes[j]));
+    }
+    inner *= innerHalf;
+    result.Depth += GaussWeights[k] * here.Extinction;
+    result.Color += GaussWeights[k] * here.Extinction * std::exp(-inner) * here.Color;
+  }
+  result.Depth *= half;
+  result.Color *= half;
+  return result;
+}
+
+inline double Difference(const PieceIntegral& x, const PieceIntegral& y)
+{
+  const glm::dvec3 d = glm::abs(x.Color - y.Color);
+  return std::max({ std::abs(x.Depth - y.Depth), d.x, d.y, d.z });
+}
+
+/// Adaptive bisection until whole and halves agree within `tolerance`; composited in order.
+template <typename ScalarAt>
+void AdaptivePiece(const TransferFunction& tf, const ScalarAt& scalarAt, double a, double b,
+  const PieceIntegral& whole, double tolerance, int depth, RayAccumulator& accumulator)
+{
+  const double m = 0.5 * (a + b);
+  const PieceIntegral left = GaussPiece(tf, scalarAt, a, m);
+  const PieceIntegral right = GaussPiece(tf, scalarAt, m, b);
+  PieceIntegral halves;
+  halves.Depth = left.Depth + right.Depth;
+  halves.Color = left.Color + std::exp(-left.Depth) * right.Color;
+  if (depth >= 40 || Difference(whole, halves) <= tolerance)
+  {
+    accumulator.Composite(left.Color, left.Depth);
+    accumulator.Composite(right.Color, right.Depth);
+    return;
+  }
+  AdaptivePiece(tf, scalarAt, a, m, left, 0.5 * tolerance, depth + 1, accumulator);
+  AdaptivePiece(tf, scalarAt, m, b, right, 0.5 * tolerance, depth + 1, accumulator);
+}
+} // namespace detail
+
+/// Integrates the optical model along t in [t0, t1] for a smooth scalar s(t) (linear in a tet,
+/// isoparametric in a hexahedron) and composites it into `accumulator`. The segment is first cut
+/// where s crosses a transfer-function node (found between `probes` samples, refined by
+/// bisection), then each piece is integrated adaptively to an absolute error below `tolerance`.
+template <typename ScalarAt>
+void IntegrateSegment(const TransferFunction& tf, const ScalarAt& scalarAt, double t0, double t1,
+  double tolerance, RayAccumulator& accumulator, int probes = 8)
+{
+  if (!(t1 > t0))
+  {
+    return;
+  }
+  std::vector<double> cuts = { t0 };
+  double previousT = t0, previousS = scalarAt(t0);
+  for (int i = 1; i <= probes; ++i)
+  {
+    const double t = t0 + (t1 - t0) * i / probes;
+    const double s = scalarAt(t);
+    const double low = std::min(previousS, s), high = std::max(previousS, s);
+    std::vector<double> crossings;
+    for (const TransferFunction::Node& node : tf.GetNodes())
+    {
+      if (node.Scalar > low && node.Scalar < high)
+      {
+        double a = previousT, b = t;
+        const bool rising = s > previousS;
+        for (int iteration = 0; iteration < 60 && b - a > 1e-15 * (1.0 + std::abs(b)); ++iteration)
+        {
+          const double m = 0.5 * (a + b);
+          ((scalarAt(m) < node.Scalar) == rising ? a : b) = m;
+        }
+        crossings.push_back(0.5 * (a + b));
+      }
+    }
+    std::sort(crossings.begin(), crossings.end());
+    cuts.insert(cuts.end(), crossings.begin(), crossings.end());
+    cuts.push_back(t);
+    previousT = t;
+    previousS = s;
+  }
+  const double pieceTolerance = tolerance / static_cast<double>(cuts.size());
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+  {
+    if (cuts[i + 1] > cuts[i])
+    {
+      const detail::PieceIntegral whole = detail::GaussPiece(tf, scalarAt, cuts[i], cuts[i + 1]);
+      detail::AdaptivePiece(tf, scalarAt, cuts[i], cuts[i + 1], whole, pieceTolerance, 0, accumulator);
+    }
+  }
+}
+
+} // namespace uv
+
+#endif

@@ -1,0 +1,437 @@
+// Rays against linear tetrahedra and trilinear hexahedra, in double precision, free of VTK.
+//
+// Shared faces must give bit-identical hits from both cells, or rays leak through cracks; so every
+// face is built from its vertices in a canonical order (by global id) before any arithmetic.
+#ifndef uvRayCellGeometry_h
+#define uvRayCellGeometry_h
+
+#include "uvLinearCellSplit.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace uv
+{
+
+struct Ray
+{
+  glm::dvec3 Origin;
+  glm::dvec3 Direction; // unit length, so t is a distance
+};
+
+struct Interval
+{
+  double Enter;
+  double Exit;
+};
+
+/// A ray lying exactly in a face's plane belongs to one of the two cells sharing the face: the one
+/// whose outward normal is lexicographically negative. Both cells compute the same plane (canonical
+/// vertex order) with opposite normals, so exactly one claims it and the matter is counted once.
+inline bool ClaimsRayInFacePlane(const glm::dvec3& outwardNormal)
+{
+  if (outwardNormal.x != 0.0)
+  {
+    return outwardNormal.x < 0.0;
+  }
+  if (outwardNormal.y != 0.0)
+  {
+    return outwardNormal.y < 0.0;
+  }
+  return outwardNormal.z < 0.0;
+}
+
+/// The part of the ray inside a tetrahedron, or false. `ids` order the face arithmetic.
+inline bool IntersectTetrahedron(
+  const Ray& ray, const glm::dvec3 p[4], const std::int64_t ids[4], Interval& inside)
+{
+  double enter = -std::numeric_limits<double>::infinity();
+  double exit = std::numeric_limits<double>::infinity();
+  for (int opposite = 0; opposite < 4; ++opposite)
+  {
+    int face[3], n = 0;
+    for (int v = 0; v < 4; ++v)
+    {
+      if (v != opposite)
+      {
+        face[n++] = v;
+      }
+    }
+    std::sort(face, face + 3, [&](int x, int y) { return ids[x] < ids[y]; });
+    const glm::dvec3& a = p[face[0]];
+    glm::dvec3 normal = glm::cross(p[face[1]] - a, p[face[2]] - a);
+    if (glm::dot(normal, p[opposite] - a) > 0.0)
+    {
+      normal = -normal; // outward
+    }
+    const double rate = glm::dot(normal, ray.Direction);
+    const double room = glm::dot(normal, a - ray.Origin);
+    if (rate > 0.0)
+    {
+      exit = std::min(exit, room / rate);
+    }
+    else if (rate < 0.0)
+    {
+      enter = std::max(enter, room / rate);
+    }
+    else if (room < 0.0 || (room == 0.0 && !ClaimsRayInFacePlane(normal)))
+    {
+      return false; // parallel and outside, or in the face's plane and left to the neighbour
+    }
+  }
+  inside = { enter, exit };
+  return exit > enter;
+}
+
+/// Scalar at x in a tetrahedron by barycentric coordinates.
+inline double TetrahedronScalar(const glm::dvec3 p[4], const double f[4], const glm::dvec3& x)
+{
+  const glm::dmat3 edges(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
+  const glm::dvec3 b = glm::inverse(edges) * (x - p[0]);
+  return f[0] + b.x * (f[1] - f[0]) + b.y * (f[2] - f[0]) + b.z * (f[3] - f[0]);
+}
+
+/// Ray parameters where the ray meets the bilinear patch through q0, q1, q2, q3 (in cyclic order).
+/// Appends 0, 1 or 2 values of t to `hits`.
+inline void IntersectBilinearPatch(const Ray& ray, const glm::dvec3& q0, const glm::dvec3& q1,
+  const glm::dvec3& q2, const glm::dvec3& q3, std::vector<double>& hits)
+{
+  // P(u,v) = q0 + u b + v c + u v e.
+  const glm::dvec3 b = q1 - q0, c = q3 - q0, e = q2 - q1 - q3 + q0;
+  // Two planes through the ray: n1, n2 perpendicular to it.
+  const glm::dvec3 d = ray.Direction;
+  const glm::dvec3 helper = std::abs(d.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 n1 = glm::normalize(glm::cross(d, helper));
+  const glm::dvec3 n2 = glm::cross(d, n1);
+  const glm::dvec3 a = q0 - ray.Origin;
+  const double A1 = glm::dot(n1, a), B1 = glm::dot(n1, b), C1 = glm::dot(n1, c), E1 = glm::dot(n1, e);
+  const double A2 = glm::dot(n2, a), B2 = glm::dot(n2, b), C2 = glm::dot(n2, c), E2 = glm::dot(n2, e);
+  // Eliminating u gives a quadratic in v.
+  const double qa = C2 * E1 - C1 * E2;
+  const double qb = A2 * E1 + C2 * B1 - A1 * E2 - C1 * B2;
+  const double qc = A2 * B1 - A1 * B2;
+  double roots[2];
+  int count = 0;
+  const double scale = std::max({ std::abs(qa), std::abs(qb), std::abs(qc) });
+  if (scale == 0.0)
+  {
+    return;
+  }
+  if (std::abs(qa) <= 1e-14 * scale)
+  {
+    if (qb != 0.0)
+    {
+      roots[count++] = -qc / qb;
+    }
+  }
+  else
+  {
+    const double discriminant = qb * qb - 4.0 * qa * qc;
+    if (discriminant < 0.0)
+    {
+      return;
+    }
+    // The stable pair of formulas: no cancellation in either root.
+    const double q = -0.5 * (qb + std::copysign(std::sqrt(discriminant), qb));
+    roots[count++] = q / qa;
+    if (q != 0.0)
+    {
+      roots[count++] = qc / q;
+    }
+  }
+  const double slack = 1e-12;
+  for (int r = 0; r < count; ++r)
+  {
+    const double v = roots[r];
+    if (v < -slack || v > 1.0 + slack)
+    {
+      continue;
+    }
+    const double denominator1 = B1 + E1 * v, denominator2 = B2 + E2 * v;
+    double u;
+    if (std::abs(denominator1) >= std::abs(denominator2))
+    {
+      if (denominator1 == 0.0)
+      {
+        continue;
+      }
+      u = -(A1 + C1 * v) / denominator1;
+    }
+    else
+    {
+      u = -(A2 + C2 * v) / denominator2;
+    }
+    if (u < -slack || u > 1.0 + slack)
+    {
+      continue;
+    }
+    const glm::dvec3 point = q0 + u * b + v * c + u * v * e;
+    hits.push_back(glm::dot(point - ray.Origin, d));
+  }
+}
+
+/// Corners of VTK's hexahedron on the unit cube, in VTK order.
+constexpr std::array<std::array<int, 3>, 8> HexahedronCorners = { { { 0, 0, 0 }, { 1, 0, 0 },
+  { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } } };
+
+/// Trilinear map of the unit cube and its Jacobian.
+inline glm::dvec3 TrilinearPoint(const glm::dvec3 p[8], const glm::dvec3& xi, glm::dmat3* jacobian = nullptr)
+{
+  glm::dvec3 x(0.0);
+  if (jacobian)
+  {
+    *jacobian = glm::dmat3(0.0);
+  }
+  for (int k = 0; k < 8; ++k)
+  {
+    const auto& c = HexahedronCorners[k];
+    const double wx = c[0] ? xi.x : 1.0 - xi.x, wy = c[1] ? xi.y : 1.0 - xi.y, wz = c[2] ? xi.z : 1.0 - xi.z;
+    x += wx * wy * wz * p[k];
+    if (jacobian)
+    {
+      (*jacobian)[0] += (c[0] ? 1.0 : -1.0) * wy * wz * p[k];
+      (*jacobian)[1] += (c[1] ? 1.0 : -1.0) * wx * wz * p[k];
+      (*jacobian)[2] += (c[2] ? 1.0 : -1.0) * wx * wy * p[k];
+    }
+  }
+  return x;
+}
+
+inline double TrilinearScalar(const double f[8], const glm::dvec3& xi)
+{
+  double s = 0.0;
+  for (int k = 0; k < 8; ++k)
+  {
+    const auto& c = HexahedronCorners[k];
+    s += (c[0] ? xi.x : 1.0 - xi.x) * (c[1] ? xi.y : 1.0 - xi.y) * (c[2] ? xi.z : 1.0 - xi.z) * f[k];
+  }
+  return s;
+}
+
+/// Parametric coordinates of x in a hexahedron by safeguarded Newton (steps limited to half the
+/// cube, iterates kept near it). Returns false if it does not converge.
+inline bool InverseTrilinear(const glm::dvec3 p[8], const glm::dvec3& x, glm::dvec3& xi)
+{
+  for (int iteration = 0; iteration < 40; ++iteration)
+  {
+    glm::dmat3 jacobian;
+    const glm::dvec3 residual = TrilinearPoint(p, xi, &jacobian) - x;
+    const double det = glm::determinant(jacobian);
+    if (!(std::abs(det) > 0.0))
+    {
+      return false;
+    }
+    glm::dvec3 step = glm::inverse(jacobian) * residual;
+    const double longest = std::max({ std::abs(step.x), std::abs(step.y), std::abs(step.z) });
+    if (longest > 0.5)
+    {
+      step *= 0.5 / longest;
+    }
+    xi = glm::clamp(xi - step, glm::dvec3(-0.5), glm::dvec3(1.5));
+    if (longest < 1e-14)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The parts of the ray inside a trilinear hexahedron (its faces are bilinear patches; a ray may
+/// enter a curved cell twice). `ids` give the canonical face order. Appends to `parts`.
+inline void IntersectHexahedron(const Ray& ray, const glm::dvec3 p[8], const std::int64_t ids[8],
+  std::vector<Interval>& parts, std::vector<double>& scratch)
+{
+  scratch.clear();
+  for (const LocalFace& face : HexahedronFaces)
+  {
+    // Start at the smallest id, go towards its smaller-id neighbour: the same patch arithmetic
+    // from both cells sharing the face.
+    int start = 0;
+    for (int i = 1; i < 4; ++i)
+    {
+      start = ids[face.Vertices[i]] < ids[face.Vertices[start]] ? i : start;
+    }
+    const int next = face.Vertices[(start + 1) % 4], previous = face.Vertices[(start + 3) % 4];
+    const int step = ids[next] < ids[previous] ? 1 : 3;
+    glm::dvec3 q[4];
+    for (int i = 0; i < 4; ++i)
+    {
+      q[i] = p[face.Vertices[(start + step * i) % 4]];
+    }
+    IntersectBilinearPatch(ray, q[0], q[1], q[2], q[3], scratch);
+  }
+  std::sort(scratch.begin(), scratch.end());
+  // Between consecutive hits the ray is inside or outside; test each gap's midpoint.
+  glm::dvec3 xi(0.5);
+  for (std::size_t i = 0; i + 1 < scratch.size(); ++i)
+  {
+    const double a = scratch[i], b = scratch[i + 1];
+    if (!(b - a > 1e-12 * (1.0 + std::abs(a))))
+    {
+      continue;
+    }
+    const glm::dvec3 middle = ray.Origin + 0.5 * (a + b) * ray.Direction;
+    xi = glm::dvec3(0.5);
+    const double margin = 1e-9;
+    if (InverseTrilinear(p, middle, xi) && xi.x >= -margin && xi.y >= -margin && xi.z >= -margin &&
+      xi.x <= 1 + margin && xi.y <= 1 + margin && xi.z <= 1 + margin)
+    {
+      if (!parts.empty() && parts.back().Exit == a)
+      {
+        parts.back().Exit = b; // the gap between two entries was a tangency: merge
+      }
+      else
+      {
+        parts.push_back({ a, b });
+      }
+    }
+  }
+}
+
+/// Axis-aligned boxes of cells in a bounding volume hierarchy (median split, leaves of <= 4).
+class BoundingVolumeHierarchy
+{
+public:
+  struct Box
+  {
+    glm::dvec3 Low{ std::numeric_limits<double>::infinity() };
+    glm::dvec3 High{ -std::numeric_limits<double>::infinity() };
+    void Add(const Box& other)
+    {
+      this->Low = glm::min(this->Low, other.Low);
+      this->High = glm::max(this->High, other.High);
+    }
+  };
+
+  explicit BoundingVolumeHierarchy(std::vector<Box> cellBoxes)
+    : CellBoxes(std::move(cellBoxes))
+  {
+    this->Order.resize(this->CellBoxes.size());
+    for (std::size_t i = 0; i < this->Order.size(); ++i)
+    {
+      this->Order[i] = static_cast<std::int64_t>(i);
+    }
+    if (!this->Order.empty())
+    {
+      this->Build(0, static_cast<std::int64_t>(this->Order.size()));
+    }
+  }
+
+  /// Calls visit(cell) for every cell whose box the ray crosses at t >= 0.
+  template <typename Visit>
+  void Traverse(const Ray& ray, Visit&& visit) const
+  {
+    if (this->Nodes.empty())
+    {
+      return;
+    }
+    const glm::dvec3 inverse = 1.0 / ray.Direction;
+    std::int64_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0)
+    {
+      const Node& node = this->Nodes[stack[--top]];
+      if (!Hits(node.Bounds, ray, inverse))
+      {
+        continue;
+      }
+      if (node.Count > 0)
+      {
+        for (std::int64_t i = node.First; i < node.First + node.Count; ++i)
+        {
+          visit(this->Order[i]);
+        }
+      }
+      else
+      {
+        stack[top++] = node.Left;
+        stack[top++] = node.Right;
+      }
+    }
+  }
+
+private:
+  struct Node
+  {
+    Box Bounds;
+    std::int64_t First = 0; // leaf: first index into Order
+    std::int64_t Count = 0; // leaf: number of cells; 0 for inner nodes
+    std::int64_t Left = 0;  // inner node: children
+    std::int64_t Right = 0;
+  };
+
+  static bool Hits(const Box& box, const Ray& ray, const glm::dvec3& inverse)
+  {
+    double enter = 0.0, exit = std::numeric_limits<double>::infinity();
+    for (int d = 0; d < 3; ++d)
+    {
+      double t0 = (box.Low[d] - ray.Origin[d]) * inverse[d];
+      double t1 = (box.High[d] - ray.Origin[d]) * inverse[d];
+      if (std::isnan(t0) || std::isnan(t1)) // ray in the slab's plane: inside if within it
+      {
+        if (ray.Origin[d] < box.Low[d] || ray.Origin[d] > box.High[d])
+        {
+          return false;
+        }
+        continue;
+      }
+      if (t0 > t1)
+      {
+        std::swap(t0, t1);
+      }
+      enter = std::max(enter, t0);
+      exit = std::min(exit, t1);
+    }
+    return enter <= exit * (1.0 + 1e-12) + 1e-300;
+  }
+
+  std::int64_t Build(std::int64_t first, std::int64_t count)
+  {
+    const std::int64_t index = static_cast<std::int64_t>(this->Nodes.size());
+    this->Nodes.push_back({});
+    Box bounds, centres;
+    for (std::int64_t i = first; i < first + count; ++i)
+    {
+      const Box& box = this->CellBoxes[this->Order[i]];
+      bounds.Add(box);
+      const glm::dvec3 centre = 0.5 * (box.Low + box.High);
+      centres.Add({ centre, centre });
+    }
+    if (count <= 4)
+    {
+      this->Nodes[index].Bounds = bounds;
+      this->Nodes[index].First = first;
+      this->Nodes[index].Count = count;
+      return index;
+    }
+    const glm::dvec3 extent = centres.High - centres.Low;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const std::int64_t half = count / 2;
+    std::nth_element(this->Order.begin() + first, this->Order.begin() + first + half,
+      this->Order.begin() + first + count, [&](std::int64_t a, std::int64_t b) {
+        return this->CellBoxes[a].Low[axis] + this->CellBoxes[a].High[axis] <
+          this->CellBoxes[b].Low[axis] + this->CellBoxes[b].High[axis];
+      });
+    const std::int64_t left = this->Build(first, half);
+    const std::int64_t right = this->Build(first + half, count - half);
+    this->Nodes[index].Bounds = bounds;
+    this->Nodes[index].Left = left;
+    this->Nodes[index].Right = right;
+    return index;
+  }
+
+  std::vector<Box> CellBoxes;
+  std::vector<std::int64_t> Order;
+  std::vector<Node> Nodes;
+};
+
+} // namespace uv
+
+#endif

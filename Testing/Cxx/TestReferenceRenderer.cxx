@@ -1,0 +1,250 @@
+// vtkUnstructuredVolumeReferenceRenderer against closed forms and against itself.
+#include "uvTestMeshChecks.h"
+#include "vtkAnalyticMeshSource.h"
+#include "vtkHexahedraToTetrahedra.h"
+#include "vtkUnstructuredVolumeReferenceRenderer.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolumeProperty.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+vtkSmartPointer<vtkVolumeProperty> Property(
+  const std::vector<std::array<double, 2>>& opacity, double unitDistance = 1.0)
+{
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.1, 0.3, 0.9);
+  color->AddRGBPoint(1.0, 0.9, 0.5, 0.1);
+  vtkNew<vtkPiecewiseFunction> alpha;
+  for (const auto& node : opacity)
+  {
+    alpha->AddPoint(node[0], node[1]);
+  }
+  property->SetColor(color);
+  property->SetScalarOpacity(alpha);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  return property;
+}
+
+/// Hexahedral boxes [x0, x0+1] x [0,1] x [0,1] for each x0, scalar = x / 3 at the points.
+vtkSmartPointer<vtkUnstructuredGrid> Boxes(const std::vector<double>& starts)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> scalar;
+  scalar->SetName("s");
+  for (double x0 : starts)
+  {
+    vtkIdType ids[8];
+    for (int k = 0; k < 8; ++k)
+    {
+      const int cx = (k == 1 || k == 2 || k == 5 || k == 6), cy = (k == 2 || k == 3 || k == 6 || k == 7),
+                cz = k >= 4;
+      ids[k] = points->InsertNextPoint(x0 + cx, cy, cz);
+      scalar->InsertNextValue((x0 + cx) / 3.0);
+    }
+    grid->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+  }
+  grid->SetPoints(points);
+  grid->GetPointData()->SetScalars(scalar);
+  return grid;
+}
+
+vtkSmartPointer<vtkImageData> Render(vtkDataSet* mesh, vtkVolumeProperty* property, vtkCamera* camera,
+  int size, double tolerance = 1e-7, uvtest::EventCounter** events = nullptr)
+{
+  auto renderer = vtkSmartPointer<vtkUnstructuredVolumeReferenceRenderer>::New();
+  static std::unique_ptr<uvtest::EventCounter> counter;
+  counter = std::make_unique<uvtest::EventCounter>(renderer);
+  if (events)
+  {
+    *events = counter.get();
+  }
+  renderer->SetInputData(mesh);
+  renderer->SetVolumeProperty(property);
+  renderer->SetCamera(camera);
+  renderer->SetImageSize(size, size);
+  renderer->SetTolerance(tolerance);
+  renderer->Render();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(renderer->GetOutput());
+  return image;
+}
+
+vtkSmartPointer<vtkCamera> ParallelCamera(const double focal[3], const double direction[3], double scale)
+{
+  auto camera = vtkSmartPointer<vtkCamera>::New();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(focal[0], focal[1], focal[2]);
+  camera->SetPosition(focal[0] - 10 * direction[0], focal[1] - 10 * direction[1], focal[2] - 10 * direction[2]);
+  camera->SetViewUp(direction[2] != 0 ? 0 : 0, direction[2] != 0 ? 1 : 0, direction[2] != 0 ? 0 : 1);
+  camera->SetParallelScale(scale);
+  camera->SetClippingRange(1.0, 30.0);
+  return camera;
+}
+
+double MaxDifference(vtkImageData* a, vtkImageData* b)
+{
+  vtkDataArray* x = a->GetPointData()->GetScalars();
+  vtkDataArray* y = b->GetPointData()->GetScalars();
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      worst = std::max(worst, std::abs(x->GetComponent(i, c) - y->GetComponent(i, c)));
+    }
+  }
+  return worst;
+}
+} // namespace
+
+TEST(ReferenceRenderer, UnitCubeWithConstantOpacityIsClosedForm)
+{
+  // Parallel rays along z through a unit cube: every covered pixel sees length 1.
+  const double alpha = 0.4;
+  vtkSmartPointer<vtkVolumeProperty> property = Property({ { 0.0, alpha }, { 1.0, alpha } });
+  const double focal[3] = { 0.5, 0.5, 0.5 }, along[3] = { 0, 0, 1 };
+  // A scale that puts no pixel centre on the cube's faces (0.8 would, at 40 pixels).
+  const double scale = 0.81;
+  vtkSmartPointer<vtkCamera> camera = ParallelCamera(focal, along, scale);
+  vtkSmartPointer<vtkUnstructuredGrid> cube = Boxes({ 0.0 });
+  vtkSmartPointer<vtkImageData> image = Render(cube, property, camera, 40);
+  vtkDataArray* rgba = image->GetPointData()->GetScalars();
+  int covered = 0;
+  for (vtkIdType i = 0; i < rgba->GetNumberOfTuples(); ++i)
+  {
+    const double a = rgba->GetComponent(i, 3);
+    if (a > 0.0)
+    {
+      ++covered;
+      ASSERT_NEAR(a, alpha, 1e-7) << "pixel " << i; // 1 - exp(-tau * 1) with tau = -ln(1 - alpha)
+    }
+  }
+  // Pixel centres at -scale + (i + 0.5) * 2 scale / 40 inside |c| < 0.5, in both directions.
+  int across = 0;
+  for (int i = 0; i < 40; ++i)
+  {
+    across += std::abs(-scale + (i + 0.5) * 2.0 * scale / 40) < 0.5 ? 1 : 0;
+  }
+  EXPECT_EQ(covered, across * across);
+
+  // Its 6-tet split gives the same image: no cracks along the new faces.
+  vtkNew<vtkHexahedraToTetrahedra> split;
+  split->SetInputData(cube);
+  split->Update();
+  EXPECT_LT(MaxDifference(image, Render(split->GetOutput(), property, camera, 40)), 1e-6);
+}
+
+TEST(ReferenceRenderer, RaysLeaveAndReEnterAcrossAHole)
+{
+  // Two unit boxes along x with a gap: rays along x cross 2 units of matter in two pieces.
+  const double alpha = 0.3;
+  vtkSmartPointer<vtkVolumeProperty> property = Property({ { 0.0, alpha }, { 2.0, alpha } });
+  const double focal[3] = { 1.5, 0.5, 0.5 }, along[3] = { 1, 0, 0 };
+  vtkSmartPointer<vtkImageData> image = Render(Boxes({ 0.0, 2.0 }), property, ParallelCamera(focal, along, 0.8), 20);
+  vtkDataArray* rgba = image->GetPointData()->GetScalars();
+  const double expected = 1.0 - (1.0 - alpha) * (1.0 - alpha);
+  const double centre = rgba->GetComponent(10 * 20 + 10, 3);
+  EXPECT_NEAR(centre, expected, 1e-7);
+}
+
+TEST(ReferenceRenderer, HexahedraAndTheirTetSplitAgreeOnLinearFields)
+{
+  // The trilinear field of a linear function is that linear function; so is the tets' field.
+  vtkSmartPointer<vtkVolumeProperty> property =
+    Property({ { 0.0, 0.0 }, { 0.5, 0.3 }, { 0.6, 0.05 }, { 1.0, 0.8 } }, 0.5);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(3.0, -4.0, 2.5);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 0, 1);
+  camera->SetViewAngle(30);
+  camera->SetClippingRange(1.0, 20.0);
+  for (int distortion : { vtkAnalyticMeshSource::NO_DISTORTION, vtkAnalyticMeshSource::ROTATE_45 })
+  {
+    vtkNew<vtkAnalyticMeshSource> hexahedra;
+    hexahedra->SetResolution(3, 3, 3);
+    hexahedra->SetDistortion(distortion);
+    hexahedra->SetField(vtkAnalyticMeshSource::LINEAR);
+    vtkNew<vtkAnalyticMeshSource> tets;
+    tets->SetResolution(3, 3, 3);
+    tets->SetDistortion(distortion);
+    tets->SetField(vtkAnalyticMeshSource::LINEAR);
+    tets->SetCellKind(vtkAnalyticMeshSource::SIX_TETRAHEDRA);
+    hexahedra->Update();
+    tets->Update();
+    vtkSmartPointer<vtkImageData> a = Render(hexahedra->GetOutput(), property, camera, 32);
+    vtkSmartPointer<vtkImageData> b = Render(tets->GetOutput(), property, camera, 32);
+    EXPECT_LT(MaxDifference(a, b), 1e-6);
+    EXPECT_GT(a->GetPointData()->GetScalars()->GetRange(3)[1], 0.3); // something was drawn
+  }
+}
+
+TEST(ReferenceRenderer, HalvingTheToleranceChangesNoPixelByMoreThan1e6)
+{
+  vtkNew<vtkAnalyticMeshSource> mesh;
+  mesh->SetResolution(4, 4, 4);
+  mesh->SetDistortion(vtkAnalyticMeshSource::TWIST);
+  mesh->Update();
+  vtkSmartPointer<vtkVolumeProperty> property =
+    Property({ { 0.0, 0.0 }, { 0.45, 0.0 }, { 0.5, 0.9 }, { 0.55, 0.0 }, { 1.0, 0.3 } }, 0.3);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(2.5, 3.0, 4.0);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetClippingRange(0.5, 20.0);
+  vtkSmartPointer<vtkImageData> coarse = Render(mesh->GetOutput(), property, camera, 24, 1e-7);
+  vtkSmartPointer<vtkImageData> finer = Render(mesh->GetOutput(), property, camera, 24, 5e-8);
+  EXPECT_LT(MaxDifference(coarse, finer), 1e-6);
+}
+
+TEST(ReferenceRenderer, BadInput)
+{
+  vtkSmartPointer<vtkVolumeProperty> property = Property({ { 0.0, 0.5 }, { 1.0, 0.5 } });
+  vtkNew<vtkCamera> camera;
+  uvtest::EventCounter* events = nullptr;
+  vtkNew<vtkUnstructuredGrid> empty;
+  vtkSmartPointer<vtkImageData> image = Render(empty, property, camera, 8, 1e-7, &events);
+  EXPECT_EQ(events->Errors, 0);
+  EXPECT_EQ(image->GetPointData()->GetScalars()->GetRange(3)[1], 0.0);
+
+  vtkSmartPointer<vtkUnstructuredGrid> cube = Boxes({ 0.0 });
+  cube->GetPointData()->GetScalars()->SetName("other");
+  auto renderer = vtkSmartPointer<vtkUnstructuredVolumeReferenceRenderer>::New();
+  uvtest::EventCounter missing(renderer);
+  renderer->SetInputData(cube);
+  renderer->SetScalarArrayName("s");
+  renderer->SetVolumeProperty(property);
+  renderer->SetCamera(camera);
+  EXPECT_FALSE(renderer->Render());
+  EXPECT_EQ(missing.Errors, 1);
+
+  vtkNew<vtkUnstructuredGrid> wedge;
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 6; ++i)
+  {
+    points->InsertNextPoint(i % 3 == 1, i % 3 == 2, i / 3);
+  }
+  wedge->SetPoints(points);
+  const vtkIdType ids[6] = { 0, 1, 2, 3, 4, 5 };
+  wedge->InsertNextCell(VTK_WEDGE, 6, ids);
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfValues(6);
+  values->Fill(0.5);
+  wedge->GetPointData()->SetScalars(values);
+  Render(wedge, property, camera, 8, 1e-7, &events);
+  EXPECT_EQ(events->Errors, 1);
+  EXPECT_NE(events->LastMessage.find("vtkWedge"), std::string::npos);
+}
