@@ -10,6 +10,7 @@ foreach (class IN LISTS uv_rendering_classes)
 endforeach ()
 # VTK-free math, unit-tested on its own, and the one VTK-reading helper the mappers share.
 set(uv_rendering_private_headers
+  "${CMAKE_CURRENT_LIST_DIR}/uvChebyshevSeries.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvOpticalModel.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvRayCellGeometry.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvTransferFunctionFromVolumeProperty.h")

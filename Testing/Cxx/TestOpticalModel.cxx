@@ -1,4 +1,5 @@
 // The optical model's segment integral and the ray/cell geometry of the reference renderer.
+#include "uvChebyshevSeries.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
 
@@ -216,4 +217,17 @@ TEST(RayCellGeometry, RayInASharedFacePlaneBelongsToOneTet)
     const bool inSecond = uv::IntersectTetrahedron(ray, second, secondIds, b);
     EXPECT_NE(inFirst, inSecond) << "the shared face's matter must be counted exactly once";
   }
+}
+
+TEST(ChebyshevSeries, ResolvesSmoothFunctionsAndRejectsKinks)
+{
+  uv::ChebyshevSeries series;
+  const auto smooth = [](double t) { return std::exp(0.7 * t) * std::sin(2.0 * t); };
+  ASSERT_TRUE(series.Fit(smooth, 0.3, 1.1, 1e-12));
+  for (double t = 0.3; t <= 1.1; t += 0.01)
+  {
+    EXPECT_NEAR(series(t), smooth(t), 1e-12);
+  }
+  const auto kinked = [](double t) { return std::abs(t - 0.5); };
+  EXPECT_FALSE(series.Fit(kinked, 0.0, 1.0, 1e-12));
 }
