@@ -1,7 +1,8 @@
 # Sources of the Rendering half of the UnstructuredVolume module (included by the root CMakeLists.txt).
 # The GLSL the mappers use is embedded from Shaders/ by the root CMakeLists.txt.
 set(uv_rendering_classes
-  vtkUnstructuredVolumeReferenceRenderer)
+  vtkUnstructuredVolumeReferenceRenderer
+  vtkVolumeImageErrorMetrics)
 set(uv_rendering_sources)
 set(uv_rendering_headers)
 foreach (class IN LISTS uv_rendering_classes)
@@ -11,6 +12,7 @@ endforeach ()
 # VTK-free math, unit-tested on its own, and the one VTK-reading helper the mappers share.
 set(uv_rendering_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/uvChebyshevSeries.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvImageErrorMetrics.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvOpticalModel.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvRayCellGeometry.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvTransferFunctionFromVolumeProperty.h")

@@ -1,5 +1,6 @@
 // The optical model's segment integral and the ray/cell geometry of the reference renderer.
 #include "uvChebyshevSeries.h"
+#include "uvImageErrorMetrics.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
 
@@ -230,4 +231,27 @@ TEST(ChebyshevSeries, ResolvesSmoothFunctionsAndRejectsKinks)
   }
   const auto kinked = [](double t) { return std::abs(t - 0.5); };
   EXPECT_FALSE(series.Fit(kinked, 0.0, 1.0, 1e-12));
+}
+
+TEST(ImageErrorMetrics, KnownDifferences)
+{
+  // 4 pixels RGBA: identical, one channel off by 0.1, transparent both, all channels off by 0.2.
+  const float candidate[16] = { 0.5f, 0.5f, 0.5f, 1.0f, 0.6f, 0.0f, 0.0f, 1.0f, 0, 0, 0, 0, 0.2f, 0.2f, 0.2f, 0.2f };
+  const double reference[16] = { 0.5, 0.5, 0.5, 1.0, 0.5, 0.0, 0.0, 1.0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  const uv::ErrorMetrics m = uv::CompareImages(candidate, reference, 4, 4, 4);
+  // Squared errors: 0.01 + 4 * 0.04 = 0.17 over 16 channels.
+  EXPECT_NEAR(m.All.RMSE, std::sqrt(0.17 / 16), 1e-7);
+  EXPECT_NEAR(m.All.PSNR, 20 * std::log10(1 / std::sqrt(0.17 / 16)), 1e-5);
+  EXPECT_NEAR(m.All.Maximum, 0.2, 1e-7);
+  EXPECT_NEAR(m.All.Percentile99, 0.2, 1e-7);
+  EXPECT_EQ(m.Covered.Pixels, 3u); // the transparent pixel is left out
+  EXPECT_NEAR(m.Covered.RMSE, std::sqrt(0.17 / 12), 1e-7);
+  const uv::ErrorMetrics same = uv::CompareImages(reference, reference, 4, 4, 4);
+  EXPECT_EQ(same.All.RMSE, 0.0);
+  EXPECT_TRUE(std::isinf(same.All.PSNR));
+  unsigned char rgb[3];
+  uv::HeatColor(0.0, 0.1, rgb);
+  EXPECT_EQ(rgb[0] + rgb[1] + rgb[2], 0);
+  uv::HeatColor(1.0, 0.1, rgb);
+  EXPECT_EQ(rgb[0] + rgb[1] + rgb[2], 3 * 255);
 }
