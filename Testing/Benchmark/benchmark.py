@@ -1,0 +1,455 @@
+#!/usr/bin/env python3
+"""Run time against error: every mapper, every scene, one process, against the exact reference.
+
+    PYTHONPATH=build/vtk/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
+        Testing/Benchmark/benchmark.py [--quick] [--size 512] [--views 8] [--output out/benchmark]
+
+For each scene (mesh, scalar, transfer function, an orbit of camera positions) and each mapper:
+preparation time (the first frame), then the median and spread of the frame time over the orbit
+(each frame ends with WaitForCompletion, i.e. glFinish), the process's resident memory after the
+first frame, and the error of every frame against vtkUnstructuredVolumeReferenceRenderer at the same
+view. Writes results.csv, results.json, and per scene a log-log plot of time against error with the
+Pareto front (<scene>_time_vs_error.png) and a montage (<scene>_montage.png: top row the reference
+then each mapper's first view, bottom row their error heat maps). Reference images are cached in
+<output>/reference-cache, keyed by everything that determines them.
+
+Mappers register in MAPPERS below: a name, a factory, and whether it needs tetrahedra.
+"""
+import argparse
+import csv
+import hashlib
+import json
+import math
+import os
+import statistics
+import sys
+import time
+
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,
+                                vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
+from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
+from vtkmodules.vtkCommonCore import vtkFloatArray
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkTable
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
+from vtkmodules.vtkImagingCore import vtkImageConstantPad
+from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLImageDataWriter, vtkXMLStructuredGridReader
+from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
+                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingVolume import (vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeRayCastMapper,
+                                           vtkUnstructuredGridVolumeZSweepMapper)
+from vtkmodules.vtkViewsContext2D import vtkContextView
+import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
+import vtkmodules.vtkRenderingFreeType  # noqa: F401
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+SHARED = os.path.abspath(os.path.join(ROOT, "..", "shared", "data"))
+REFERENCE_VERSION = "1"  # bump when the reference renderer's output changes
+
+# ---------------------------------------------------------------------------------------------
+# Mappers: (name, factory, needs tetrahedra). This project's mappers register here as they land.
+MAPPERS = [
+    ("VTK ProjectedTetrahedra", vtkProjectedTetrahedraMapper, True),
+    ("VTK UGVolumeRayCast", vtkUnstructuredGridVolumeRayCastMapper, True),
+    ("VTK UGZSweep", vtkUnstructuredGridVolumeZSweepMapper, True),
+]
+
+
+# ---------------------------------------------------------------------------------------------
+# Scenes
+def analytic(resolution, field, distortion, cells):
+    source = vtkAnalyticMeshSource()
+    source.SetResolution(resolution, resolution, resolution)
+    source.SetField(field)
+    source.SetDistortion(distortion)
+    source.SetCellKind(cells)
+    source.Update()
+    return source.GetOutput()
+
+
+def legacy(path):
+    reader = vtkUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def bluntfin():
+    reader = vtkXMLStructuredGridReader()
+    reader.SetFileName(os.path.join(SHARED, "bluntfin", "bluntfin.vts"))
+    to_grid = vtkAppendFilter()
+    to_grid.SetInputConnection(reader.GetOutputPort())
+    to_grid.Update()
+    return to_grid.GetOutput()
+
+
+def smooth_ramp(low, high):
+    """Opacity ramping up over the range, cool-to-warm colours."""
+    return [(low, 0.0), (low + 0.2 * (high - low), 0.02), (high, 0.6)], \
+        [(low, (0.23, 0.30, 0.75)), (0.5 * (low + high), (0.87, 0.87, 0.87)), (high, (0.71, 0.02, 0.15))]
+
+
+def spikes(low, high):
+    """Three thin opaque spikes: hard for every method that samples or averages."""
+    opacity, colors = [(low, 0.0)], [(low, (0.2, 0.2, 0.9))]
+    for fraction, color in ((0.3, (1.0, 0.6, 0.1)), (0.55, (0.1, 0.9, 0.3)), (0.8, (0.9, 0.1, 0.2))):
+        centre = low + fraction * (high - low)
+        width = 0.02 * (high - low)
+        opacity += [(centre - width, 0.0), (centre, 0.9), (centre + width, 0.0)]
+        colors += [(centre, color)]
+    opacity.append((high, 0.0))
+    colors.append((high, (0.9, 0.9, 0.9)))
+    return opacity, colors
+
+
+def scenes(quick):
+    """(name, loader, scalar, transfer-function maker, unit distance as a fraction of the diagonal)."""
+    ml, steiner = vtkAnalyticMeshSource.MARSCHNER_LOBB, vtkAnalyticMeshSource.STEINER
+    twist, jitter = vtkAnalyticMeshSource.TWIST, vtkAnalyticMeshSource.JITTER
+    hexahedra, tets = vtkAnalyticMeshSource.HEXAHEDRA, vtkAnalyticMeshSource.SIX_TETRAHEDRA
+    resolution = 8 if quick else 24
+    found = [
+        ("ml_tets", lambda: analytic(resolution, ml, 0, tets), "MarschnerLobb", smooth_ramp, 0.05),
+        ("ml_twisted_hex", lambda: analytic(resolution, ml, twist, hexahedra), "MarschnerLobb", smooth_ramp, 0.05),
+        ("steiner_jittered_hex_spikes", lambda: analytic(resolution, steiner, jitter, hexahedra), "Steiner",
+         spikes, 0.02),
+    ]
+    if quick:
+        return found[:2]
+    if os.path.isdir(SHARED):
+        found += [
+            ("bluntfin_hex", bluntfin, "Density", smooth_ramp, 0.03),
+            ("spx_tets", lambda: legacy(os.path.join(SHARED, "spx", "spx.vtk")), None, smooth_ramp, 0.05),
+            ("lox_post_tets", lambda: legacy(os.path.join(SHARED, "lox_post", "post.vtk")), None, smooth_ramp, 0.05),
+        ]
+    return found
+
+
+def volume_property(mesh, scalar, maker, unit_fraction):
+    low, high = (mesh.GetPointData().GetArray(scalar) if scalar else mesh.GetPointData().GetScalars()).GetRange()
+    opacity_nodes, color_nodes = maker(low, high)
+    opacity = vtkPiecewiseFunction()
+    for s, a in opacity_nodes:
+        opacity.AddPoint(s, a)
+    colors = vtkColorTransferFunction()
+    colors.SetColorSpaceToRGB()
+    for s, rgb in color_nodes:
+        colors.AddRGBPoint(s, *rgb)
+    prop = vtkVolumeProperty()
+    prop.SetColor(colors)
+    prop.SetScalarOpacity(opacity)
+    prop.SetInterpolationTypeToLinear()
+    prop.ShadeOff()
+    prop.SetScalarOpacityUnitDistance(unit_fraction * mesh.GetLength())
+    return prop, opacity_nodes, color_nodes
+
+
+def orbit(mesh, views):
+    """Cameras around the mesh at 20 degrees elevation, 8 by default; a perspective orbit."""
+    bounds = mesh.GetBounds()
+    centre = [(bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3)]
+    radius = 1.9 * mesh.GetLength()
+    cameras = []
+    for k in range(views):
+        azimuth = 2 * math.pi * k / views
+        camera = vtkCamera()
+        camera.SetFocalPoint(*centre)
+        camera.SetPosition(centre[0] + radius * math.cos(azimuth) * math.cos(0.35),
+                           centre[1] + radius * math.sin(azimuth) * math.cos(0.35),
+                           centre[2] + radius * math.sin(0.35))
+        camera.SetViewUp(0, 0, 1)
+        camera.SetViewAngle(30)
+        camera.SetClippingRange(radius - mesh.GetLength(), radius + mesh.GetLength())
+        cameras.append(camera)
+    return cameras
+
+
+# ---------------------------------------------------------------------------------------------
+def reference_image(cache, key_parts, mesh, scalar, prop, camera, size):
+    """The reference at this view, from the cache when it was computed before."""
+    key = hashlib.sha1(json.dumps(key_parts, sort_keys=True).encode()).hexdigest()[:20]
+    path = os.path.join(cache, key + ".vti")
+    if os.path.exists(path):
+        reader = vtkXMLImageDataReader()
+        reader.SetFileName(path)
+        reader.Update()
+        return reader.GetOutput(), 0.0
+    renderer = vtkUnstructuredVolumeReferenceRenderer()
+    renderer.SetInputData(mesh)
+    if scalar:
+        renderer.SetScalarArrayName(scalar)
+    renderer.SetVolumeProperty(prop)
+    renderer.SetCamera(camera)
+    renderer.SetImageSize(size, size)
+    start = time.perf_counter()
+    if not renderer.Render():
+        raise RuntimeError("reference renderer failed")
+    seconds = time.perf_counter() - start
+    image = vtkImageData()
+    image.DeepCopy(renderer.GetOutput())
+    writer = vtkXMLImageDataWriter()
+    writer.SetInputData(image)
+    writer.SetFileName(path)
+    writer.Write()
+    return image, seconds
+
+
+def resident_megabytes():
+    with open("/proc/self/status") as status:
+        for line in status:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024.0
+    return float("nan")
+
+
+def grab_rgba(window):
+    """The window's pixels as float premultiplied RGBA in [0, 1] (black, transparent background)."""
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGBA()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    image = vtkImageData()
+    image.DeepCopy(grab.GetOutput())
+    return image
+
+
+def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
+    renderer = vtkRenderer()
+    renderer.SetBackground(0, 0, 0)
+    renderer.SetBackgroundAlpha(0.0)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetAlphaBitPlanes(1)
+    window.SetMultiSamples(0)
+    window.SetSize(size, size)
+    window.AddRenderer(renderer)
+    mapper = factory()
+    mapper.SetInputData(mesh)
+    if scalar:
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectScalarArray(scalar)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    renderer.AddVolume(volume)
+
+    before = resident_megabytes()
+    renderer.SetActiveCamera(cameras[0])
+    start = time.perf_counter()
+    window.Render()
+    window.WaitForCompletion()
+    preparation = time.perf_counter() - start
+    memory = resident_megabytes() - before
+    frames, images = [], []
+    for camera in cameras:
+        renderer.SetActiveCamera(camera)
+        start = time.perf_counter()
+        window.Render()
+        window.WaitForCompletion()
+        frames.append(time.perf_counter() - start)
+        images.append(grab_rgba(window))
+    window.Finalize()
+    return preparation, frames, memory, images
+
+
+def pareto(points):
+    """Indices of the points no other point beats in both time and error (lower is better)."""
+    front = []
+    for i, (t, e) in enumerate(points):
+        if not any((t2 <= t and e2 <= e) and (t2 < t or e2 < e) for t2, e2 in points):
+            front.append(i)
+    return front
+
+
+def plot_scene(scene, rows, path):
+    """Log-log frame time against covered RMSE, one point per mapper, Pareto front as a line."""
+    view = vtkContextView()
+    view.GetRenderWindow().SetOffScreenRendering(1)
+    view.GetRenderWindow().SetSize(640, 480)
+    chart = vtkChartXY()
+    chart.SetTitle(f"{scene}: median frame time vs RMSE against the reference")
+    chart.SetShowLegend(True)
+    view.GetScene().AddItem(chart)
+    usable = [r for r in rows if r["median_s"] > 0 and r["rmse_covered"] > 0]
+    palette = [(31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189), (140, 86, 75)]
+    for index, row in enumerate(usable):
+        table = vtkTable()
+        for column in ("time", "error"):
+            array = vtkFloatArray()
+            array.SetName(column if column == "time" else row["mapper"])
+            table.AddColumn(array)
+        table.SetNumberOfRows(1)
+        table.SetValue(0, 0, row["median_s"])
+        table.SetValue(0, 1, row["rmse_covered"])
+        plot = chart.AddPlot(vtkChart.POINTS)
+        plot.SetInputData(table, 0, 1)
+        plot.SetMarkerStyle(vtkPlotPoints.CIRCLE)
+        plot.SetMarkerSize(12)
+        plot.SetColor(*palette[index % len(palette)], 255)
+    front = sorted(pareto([(r["median_s"], r["rmse_covered"]) for r in usable]),
+                   key=lambda i: usable[i]["median_s"])
+    if front:
+        # The front: ringed in black, joined by a line when it has more than one point.
+        table = vtkTable()
+        for column in ("time", "Pareto front"):
+            array = vtkFloatArray()
+            array.SetName(column)
+            table.AddColumn(array)
+        table.SetNumberOfRows(len(front))
+        for k, i in enumerate(front):
+            table.SetValue(k, 0, usable[i]["median_s"])
+            table.SetValue(k, 1, usable[i]["rmse_covered"])
+        rings = chart.AddPlot(vtkChart.POINTS)
+        rings.SetInputData(table, 0, 1)
+        rings.SetMarkerStyle(vtkPlotPoints.CROSS)
+        rings.SetMarkerSize(22)
+        rings.SetColor(0, 0, 0, 255)
+        if len(front) > 1:
+            line = chart.AddPlot(vtkChart.LINE)
+            line.SetInputData(table, 0, 1)
+            line.SetColor(0, 0, 0, 255)
+            line.SetWidth(1.5)
+    for axis_id, title in ((vtkAxis.BOTTOM, "median frame time (s)"), (vtkAxis.LEFT, "RMSE, covered pixels")):
+        axis = chart.GetAxis(axis_id)
+        axis.SetTitle(title)
+        axis.SetLogScale(True)
+    view.GetRenderWindow().Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtkPNGWriter()
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.SetFileName(path)
+    writer.Write()
+
+
+def over_background(rgba, background=(0.1, 0.1, 0.12)):
+    """8-bit RGB of a premultiplied RGBA image over a background, for the montage."""
+    out = vtkImageData()
+    out.SetDimensions(rgba.GetDimensions())
+    out.AllocateScalars(3, 3)  # VTK_UNSIGNED_CHAR
+    source = rgba.GetPointData().GetScalars()
+    target = out.GetPointData().GetScalars()
+    scale = 1.0 / 255.0 if source.GetDataType() == 3 else 1.0
+    for i in range(source.GetNumberOfTuples()):
+        r, g, b, a = (scale * v for v in source.GetTuple4(i))
+        a = min(max(a, 0.0), 1.0)
+        target.SetTuple3(i, *(round(255 * min(max(c + (1 - a) * bg, 0.0), 1.0)) for c, bg in zip((r, g, b), background)))
+    return out
+
+
+def montage(top, bottom, path):
+    rows = []
+    for images in (top, bottom):
+        append = vtkImageAppend()
+        append.SetAppendAxis(0)
+        for image in images:
+            append.AddInputData(image)
+        append.Update()
+        rows.append(append.GetOutput())
+    width = max(r.GetDimensions()[0] for r in rows)
+    stack = vtkImageAppend()
+    stack.SetAppendAxis(1)
+    for row in reversed(rows):  # image rows run bottom-up
+        pad = vtkImageConstantPad()
+        pad.SetInputData(row)
+        dims = row.GetDimensions()
+        pad.SetOutputWholeExtent(0, width - 1, 0, dims[1] - 1, 0, 0)
+        pad.Update()
+        stack.AddInputData(pad.GetOutput())
+    stack.Update()
+    writer = vtkPNGWriter()
+    writer.SetInputData(stack.GetOutput())
+    writer.SetFileName(path)
+    writer.Write()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--quick", action="store_true", help="two small scenes, 128 px, 4 views (a smoke test)")
+    parser.add_argument("--size", type=int, default=None)
+    parser.add_argument("--views", type=int, default=None)
+    parser.add_argument("--output", default=os.path.join(ROOT, "out", "benchmark"))
+    args = parser.parse_args()
+    size = args.size or (128 if args.quick else 512)
+    views = args.views or (4 if args.quick else 8)
+    os.makedirs(args.output, exist_ok=True)
+    cache = os.path.join(args.output, "reference-cache")
+    os.makedirs(cache, exist_ok=True)
+
+    rows = []
+    for scene, load, scalar, maker, unit_fraction in scenes(args.quick):
+        mesh = load()
+        prop, opacity_nodes, color_nodes = volume_property(mesh, scalar, maker, unit_fraction)
+        cameras = orbit(mesh, views)
+        split = vtkHexahedraToTetrahedra()
+        split.SetInputData(mesh)
+        split.Update()
+        tets = split.GetOutput()
+        print(f"\n{scene}: {mesh.GetNumberOfCells()} cells ({tets.GetNumberOfCells()} tets), {views} views, {size} px",
+              flush=True)
+        references, reference_seconds = [], 0.0
+        for k, camera in enumerate(cameras):
+            key = [REFERENCE_VERSION, scene, args.quick, scalar, opacity_nodes, color_nodes, unit_fraction,
+                   size, camera.GetPosition(), camera.GetFocalPoint(), mesh.GetNumberOfCells()]
+            image, seconds = reference_image(cache, key, mesh, scalar, prop, camera, size)
+            references.append(image)
+            reference_seconds += seconds
+        print(f"  reference: {reference_seconds:.1f} s (0 when cached)", flush=True)
+
+        scene_rows, first_views, heat_maps = [], [over_background(references[0])], [over_background(references[0])]
+        for name, factory, needs_tets in MAPPERS:
+            preparation, frames, memory, images = run_mapper(
+                name, factory, tets if needs_tets else mesh, scalar, prop, cameras, size)
+            errors = []
+            for k, (image, reference) in enumerate(zip(images, references)):
+                metrics = vtkVolumeImageErrorMetrics()
+                metrics.SetChannels(3)  # RGB over black = premultiplied colour; VTK's alpha varies by mapper
+                if not metrics.Compare(image, reference):
+                    raise RuntimeError("image comparison failed")
+                errors.append((metrics.GetRMSE(), metrics.GetCoveredRMSE(), metrics.GetPSNR(),
+                               metrics.GetMaximumError(), metrics.GetPercentile99Error()))
+                if k == 0:
+                    first_views.append(over_background(image))
+                    heat = vtkImageData()
+                    heat.DeepCopy(metrics.GetErrorImage())
+                    heat_maps.append(heat)
+            quartiles = statistics.quantiles(frames, n=4) if len(frames) > 1 else [frames[0]] * 3
+            row = {
+                "scene": scene, "mapper": name, "cells": mesh.GetNumberOfCells(), "size": size, "views": views,
+                "preparation_s": preparation, "median_s": statistics.median(frames),
+                "p25_s": quartiles[0], "p75_s": quartiles[2], "min_s": min(frames), "max_s": max(frames),
+                "memory_mb": memory,
+                "rmse": statistics.mean(e[0] for e in errors), "rmse_covered": statistics.mean(e[1] for e in errors),
+                "psnr": statistics.mean(min(e[2], 200.0) for e in errors), "max_error": max(e[3] for e in errors),
+                "p99_error": statistics.mean(e[4] for e in errors),
+            }
+            scene_rows.append(row)
+            print(f"  {name:28s} prep {preparation:7.3f} s  frame {row['median_s']:7.3f} s "
+                  f"[{row['min_s']:.3f}-{row['max_s']:.3f}]  RMSE {row['rmse_covered']:.5f} (covered)  "
+                  f"max {row['max_error']:.3f}  mem +{memory:.0f} MB", flush=True)
+        rows += scene_rows
+        plot_scene(scene, scene_rows, os.path.join(args.output, f"{scene}_time_vs_error.png"))
+        heat_maps[0] = over_background(references[0])  # the reference has no error: show it again
+        montage(first_views, heat_maps, os.path.join(args.output, f"{scene}_montage.png"))
+
+    with open(os.path.join(args.output, "results.json"), "w") as out:
+        json.dump(rows, out, indent=1)
+    with open(os.path.join(args.output, "results.csv"), "w", newline="") as out:
+        writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    bad = [r for r in rows if not all(math.isfinite(r[k]) for k in ("median_s", "rmse", "preparation_s"))]
+    print(f"\nwrote {len(rows)} rows to {args.output}/results.csv and results.json")
+    if bad:
+        sys.exit(f"non-finite results: {bad}")
+
+
+if __name__ == "__main__":
+    main()
