@@ -35,7 +35,10 @@ from vtkmodules.vtkImagingCore import vtkImageConstantPad
 from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
-from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLImageDataWriter, vtkXMLStructuredGridReader
+from vtkmodules.vtkFiltersCore import vtkArrayCalculator
+from vtkmodules.vtkIOExodus import vtkExodusIIReader
+from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLImageDataWriter, vtkXMLStructuredGridReader,
+                                 vtkXMLUnstructuredGridReader)
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
                                          vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
 from vtkmodules.vtkRenderingVolume import (vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeRayCastMapper,
@@ -73,6 +76,8 @@ def analytic(resolution, field, distortion, cells):
 
 def legacy(path):
     reader = vtkUnstructuredGridReader()
+    reader.ReadAllScalarsOn()
+    reader.ReadAllFieldsOn()
     reader.SetFileName(path)
     reader.Update()
     return reader.GetOutput()
@@ -85,6 +90,46 @@ def bluntfin():
     to_grid.SetInputConnection(reader.GetOutputPort())
     to_grid.Update()
     return to_grid.GetOutput()
+
+
+def split_tets(load):
+    """The 6-tet split of a mesh: renders the tets' own (piecewise-linear) field."""
+    def loader():
+        split = vtkHexahedraToTetrahedra()
+        split.SetInputData(load())
+        split.Update()
+        return split.GetOutput()
+    return loader
+
+
+def disk_out_ref():
+    reader = vtkExodusIIReader()
+    reader.SetFileName(os.path.join(SHARED, "disk_out_ref", "disk_out_ref.ex2"))
+    reader.UpdateInformation()
+    reader.SetAllArrayStatus(vtkExodusIIReader.NODAL, 1)
+    reader.Update()
+    merge = vtkAppendFilter()
+    merge.MergePointsOn()
+    iterator = reader.GetOutput().NewTreeIterator()
+    iterator.InitTraversal()
+    while not iterator.IsDoneWithTraversal():
+        merge.AddInputData(iterator.GetCurrentDataObject())
+        iterator.GoToNextItem()
+    merge.Update()
+    return merge.GetOutput()
+
+
+def can():
+    """The can's displacement magnitude as a point scalar."""
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(SHARED, "can", "can.vtu"))
+    magnitude = vtkArrayCalculator()
+    magnitude.SetInputConnection(reader.GetOutputPort())
+    magnitude.AddVectorArrayName("DISPL")
+    magnitude.SetFunction("mag(DISPL)")
+    magnitude.SetResultArrayName("DISPL_magnitude")
+    magnitude.Update()
+    return magnitude.GetOutput()
 
 
 def smooth_ramp(low, high):
@@ -123,8 +168,12 @@ def scenes(quick):
     if os.path.isdir(SHARED):
         found += [
             ("bluntfin_hex", bluntfin, "Density", smooth_ramp, 0.03),
+            ("bluntfin_tets", split_tets(bluntfin), "Density", smooth_ramp, 0.03),
+            ("disk_out_ref_hex", disk_out_ref, "Temp", smooth_ramp, 0.05),
+            ("can_hex", can, "DISPL_magnitude", smooth_ramp, 0.05),
             ("spx_tets", lambda: legacy(os.path.join(SHARED, "spx", "spx.vtk")), None, smooth_ramp, 0.05),
-            ("lox_post_tets", lambda: legacy(os.path.join(SHARED, "lox_post", "post.vtk")), None, smooth_ramp, 0.05),
+            ("lox_post_tets", lambda: legacy(os.path.join(SHARED, "lox_post", "post.vtk")), "Pressure", smooth_ramp,
+             0.05),
         ]
     return found
 

@@ -87,5 +87,43 @@ class FilterTests(unittest.TestCase):
         self.assertTrue(math.isfinite(error))
 
 
+class ReferenceTests(unittest.TestCase):
+    def test_reference_and_metrics_from_python(self):
+        from unstructuredvolume import vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics
+        from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+        from vtkmodules.vtkRenderingCore import vtkCamera, vtkColorTransferFunction, vtkVolumeProperty
+        source = vtkAnalyticMeshSource()
+        source.SetResolution(3, 3, 3)
+        source.Update()
+        opacity = vtkPiecewiseFunction()
+        opacity.AddPoint(0.0, 0.1)
+        opacity.AddPoint(1.0, 0.6)
+        colors = vtkColorTransferFunction()
+        colors.AddRGBPoint(0.0, 0, 0, 1)
+        colors.AddRGBPoint(1.0, 1, 0, 0)
+        prop = vtkVolumeProperty()
+        prop.SetScalarOpacity(opacity)
+        prop.SetColor(colors)
+        camera = vtkCamera()
+        camera.SetPosition(4, 3, 2)
+        camera.SetClippingRange(1, 20)
+        images = []
+        for tolerance in (1e-7, 1e-3):
+            renderer = vtkUnstructuredVolumeReferenceRenderer()
+            renderer.SetInputData(source.GetOutput())
+            renderer.SetVolumeProperty(prop)
+            renderer.SetCamera(camera)
+            renderer.SetImageSize(16, 16)
+            renderer.SetTolerance(tolerance)
+            self.assertTrue(renderer.Render())
+            images.append(renderer.GetOutput())
+        self.assertGreater(images[0].GetPointData().GetScalars().GetRange(3)[1], 0.2)
+        metrics = vtkVolumeImageErrorMetrics()
+        self.assertTrue(metrics.Compare(images[0], images[0]))
+        self.assertEqual(metrics.GetRMSE(), 0.0)
+        self.assertTrue(metrics.Compare(images[1], images[0]))
+        self.assertLess(metrics.GetMaximumError(), 1e-2)
+
+
 if __name__ == "__main__":
     unittest.main()
