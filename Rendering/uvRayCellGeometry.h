@@ -180,29 +180,6 @@ inline void IntersectBilinearPatch(const Ray& ray, const glm::dvec3& q0, const g
 constexpr std::array<std::array<int, 3>, 8> HexahedronCorners = { { { 0, 0, 0 }, { 1, 0, 0 },
   { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } } };
 
-/// Trilinear map of the unit cube and its Jacobian.
-inline glm::dvec3 TrilinearPoint(const glm::dvec3 p[8], const glm::dvec3& xi, glm::dmat3* jacobian = nullptr)
-{
-  glm::dvec3 x(0.0);
-  if (jacobian)
-  {
-    *jacobian = glm::dmat3(0.0);
-  }
-  for (int k = 0; k < 8; ++k)
-  {
-    const auto& c = HexahedronCorners[k];
-    const double wx = c[0] ? xi.x : 1.0 - xi.x, wy = c[1] ? xi.y : 1.0 - xi.y, wz = c[2] ? xi.z : 1.0 - xi.z;
-    x += wx * wy * wz * p[k];
-    if (jacobian)
-    {
-      (*jacobian)[0] += (c[0] ? 1.0 : -1.0) * wy * wz * p[k];
-      (*jacobian)[1] += (c[1] ? 1.0 : -1.0) * wx * wz * p[k];
-      (*jacobian)[2] += (c[2] ? 1.0 : -1.0) * wx * wy * p[k];
-    }
-  }
-  return x;
-}
-
 inline double TrilinearScalar(const double f[8], const glm::dvec3& xi)
 {
   double s = 0.0;
@@ -214,14 +191,133 @@ inline double TrilinearScalar(const double f[8], const glm::dvec3& xi)
   return s;
 }
 
-/// Parametric coordinates of x in a hexahedron by safeguarded Newton (steps limited to half the
-/// cube, iterates kept near it). Returns false if it does not converge.
-inline bool InverseTrilinear(const glm::dvec3 p[8], const glm::dvec3& x, glm::dvec3& xi)
+/// An isoparametric linear 3D cell: its map from parametric space (with Jacobian), its scalar, its
+/// parametric domain and its faces (VTK's local numbering, outward; triangles have Size 3).
+struct IsoparametricShape
+{
+  int Corners;
+  const LocalFace* Faces;
+  int NumberOfFaces;
+  // Shape functions and their derivatives at xi.
+  void (*Basis)(const glm::dvec3& xi, double n[8], glm::dvec3 dn[8]);
+  bool (*Contains)(const glm::dvec3& xi, double margin);
+  glm::dvec3 Centre;
+};
+
+inline void HexahedronBasis(const glm::dvec3& xi, double n[8], glm::dvec3 dn[8])
+{
+  for (int k = 0; k < 8; ++k)
+  {
+    const auto& c = HexahedronCorners[k];
+    const double wx = c[0] ? xi.x : 1.0 - xi.x, wy = c[1] ? xi.y : 1.0 - xi.y, wz = c[2] ? xi.z : 1.0 - xi.z;
+    n[k] = wx * wy * wz;
+    dn[k] = glm::dvec3((c[0] ? 1.0 : -1.0) * wy * wz, (c[1] ? 1.0 : -1.0) * wx * wz, (c[2] ? 1.0 : -1.0) * wx * wy);
+  }
+}
+
+/// VTK's wedge: (1 - r - s, r, s) on the triangle, times (1 - t) or t.
+inline void WedgeBasis(const glm::dvec3& xi, double n[8], glm::dvec3 dn[8])
+{
+  const double l[3] = { 1.0 - xi.x - xi.y, xi.x, xi.y };
+  const glm::dvec2 dl[3] = { { -1.0, -1.0 }, { 1.0, 0.0 }, { 0.0, 1.0 } };
+  for (int k = 0; k < 6; ++k)
+  {
+    const int i = k % 3;
+    const double w = k < 3 ? 1.0 - xi.z : xi.z;
+    n[k] = l[i] * w;
+    dn[k] = glm::dvec3(dl[i].x * w, dl[i].y * w, k < 3 ? -l[i] : l[i]);
+  }
+}
+
+/// VTK's pyramid: a hexahedron whose top face collapses onto the apex.
+inline void PyramidBasis(const glm::dvec3& xi, double n[8], glm::dvec3 dn[8])
+{
+  const double r = xi.x, s = xi.y, t = xi.z;
+  n[0] = (1 - r) * (1 - s) * (1 - t);
+  n[1] = r * (1 - s) * (1 - t);
+  n[2] = r * s * (1 - t);
+  n[3] = (1 - r) * s * (1 - t);
+  n[4] = t;
+  dn[0] = { -(1 - s) * (1 - t), -(1 - r) * (1 - t), -(1 - r) * (1 - s) };
+  dn[1] = { (1 - s) * (1 - t), -r * (1 - t), -r * (1 - s) };
+  dn[2] = { s * (1 - t), r * (1 - t), -r * s };
+  dn[3] = { -s * (1 - t), (1 - r) * (1 - t), -(1 - r) * s };
+  dn[4] = { 0, 0, 1 };
+}
+
+inline bool InUnitCube(const glm::dvec3& xi, double m)
+{
+  return xi.x >= -m && xi.y >= -m && xi.z >= -m && xi.x <= 1 + m && xi.y <= 1 + m && xi.z <= 1 + m;
+}
+
+inline bool InPrism(const glm::dvec3& xi, double m)
+{
+  return xi.x >= -m && xi.y >= -m && xi.x + xi.y <= 1 + m && xi.z >= -m && xi.z <= 1 + m;
+}
+
+inline const IsoparametricShape& HexahedronShape()
+{
+  static const IsoparametricShape shape{ 8, HexahedronFaces.data(), 6, HexahedronBasis, InUnitCube,
+    glm::dvec3(0.5) };
+  return shape;
+}
+inline const IsoparametricShape& WedgeShape()
+{
+  static const IsoparametricShape shape{ 6, WedgeFaces.data(), 5, WedgeBasis, InPrism,
+    glm::dvec3(1.0 / 3.0, 1.0 / 3.0, 0.5) };
+  return shape;
+}
+inline const IsoparametricShape& PyramidShape()
+{
+  static const IsoparametricShape shape{ 5, PyramidFaces.data(), 5, PyramidBasis, InUnitCube,
+    glm::dvec3(0.5, 0.5, 0.25) };
+  return shape;
+}
+
+inline glm::dvec3 IsoparametricPoint(
+  const IsoparametricShape& shape, const glm::dvec3 p[8], const glm::dvec3& xi, glm::dmat3* jacobian)
+{
+  double n[8];
+  glm::dvec3 dn[8];
+  shape.Basis(xi, n, dn);
+  glm::dvec3 x(0.0);
+  glm::dmat3 j(0.0);
+  for (int k = 0; k < shape.Corners; ++k)
+  {
+    x += n[k] * p[k];
+    j[0] += dn[k].x * p[k];
+    j[1] += dn[k].y * p[k];
+    j[2] += dn[k].z * p[k];
+  }
+  if (jacobian)
+  {
+    *jacobian = j;
+  }
+  return x;
+}
+
+inline double IsoparametricScalar(const IsoparametricShape& shape, const double f[8], const glm::dvec3& xi)
+{
+  double n[8];
+  glm::dvec3 dn[8];
+  shape.Basis(xi, n, dn);
+  double value = 0.0;
+  for (int k = 0; k < shape.Corners; ++k)
+  {
+    value += n[k] * f[k];
+  }
+  return value;
+}
+
+/// Parametric coordinates of x by safeguarded Newton (steps limited to half the reference cell,
+/// iterates kept near it). Returns false if it does not converge.
+inline bool InverseIsoparametric(
+  const IsoparametricShape& shape, const glm::dvec3 p[8], const glm::dvec3& x, glm::dvec3& xi)
 {
   for (int iteration = 0; iteration < 40; ++iteration)
   {
     glm::dmat3 jacobian;
-    const glm::dvec3 residual = TrilinearPoint(p, xi, &jacobian) - x;
+    const glm::dvec3 residual = IsoparametricPoint(shape, p, xi, &jacobian) - x;
     const double det = glm::determinant(jacobian);
     if (!(std::abs(det) > 0.0))
     {
@@ -242,33 +338,45 @@ inline bool InverseTrilinear(const glm::dvec3 p[8], const glm::dvec3& x, glm::dv
   return false;
 }
 
-/// The parts of the ray inside a trilinear hexahedron (its faces are bilinear patches; a ray may
-/// enter a curved cell twice). `ids` give the canonical face order. Appends to `parts`.
-inline void IntersectHexahedron(const Ray& ray, const glm::dvec3 p[8], const std::int64_t ids[8],
-  std::vector<Interval>& parts, std::vector<double>& scratch)
+/// Hexahedron shorthands (the hexahedral mapper's math tests use them).
+inline bool InverseTrilinear(const glm::dvec3 p[8], const glm::dvec3& x, glm::dvec3& xi)
+{
+  return InverseIsoparametric(HexahedronShape(), p, x, xi);
+}
+
+/// The parts of the ray inside an isoparametric cell: its quadrilateral faces are bilinear patches
+/// (a ray may enter a curved cell twice), triangles are patches with a repeated corner. `ids` give
+/// the canonical face order. Appends to `parts`.
+inline void IntersectIsoparametric(const IsoparametricShape& shape, const Ray& ray, const glm::dvec3 p[8],
+  const std::int64_t ids[8], std::vector<Interval>& parts, std::vector<double>& scratch)
 {
   scratch.clear();
-  for (const LocalFace& face : HexahedronFaces)
+  for (int f = 0; f < shape.NumberOfFaces; ++f)
   {
+    const LocalFace& face = shape.Faces[f];
     // Start at the smallest id, go towards its smaller-id neighbour: the same patch arithmetic
     // from both cells sharing the face.
     int start = 0;
-    for (int i = 1; i < 4; ++i)
+    for (int i = 1; i < face.Size; ++i)
     {
       start = ids[face.Vertices[i]] < ids[face.Vertices[start]] ? i : start;
     }
-    const int next = face.Vertices[(start + 1) % 4], previous = face.Vertices[(start + 3) % 4];
-    const int step = ids[next] < ids[previous] ? 1 : 3;
+    const int size = face.Size;
+    const int next = face.Vertices[(start + 1) % size], previous = face.Vertices[(start + size - 1) % size];
+    const int step = ids[next] < ids[previous] ? 1 : size - 1;
     glm::dvec3 q[4];
-    for (int i = 0; i < 4; ++i)
+    for (int i = 0; i < size; ++i)
     {
-      q[i] = p[face.Vertices[(start + step * i) % 4]];
+      q[i] = p[face.Vertices[(start + step * i) % size]];
+    }
+    if (size == 3)
+    {
+      q[3] = q[2];
     }
     IntersectBilinearPatch(ray, q[0], q[1], q[2], q[3], scratch);
   }
   std::sort(scratch.begin(), scratch.end());
   // Between consecutive hits the ray is inside or outside; test each gap's midpoint.
-  glm::dvec3 xi(0.5);
   for (std::size_t i = 0; i + 1 < scratch.size(); ++i)
   {
     const double a = scratch[i], b = scratch[i + 1];
@@ -276,11 +384,9 @@ inline void IntersectHexahedron(const Ray& ray, const glm::dvec3 p[8], const std
     {
       continue;
     }
-    const glm::dvec3 middle = ray.Origin + 0.5 * (a + b) * ray.Direction;
-    xi = glm::dvec3(0.5);
-    const double margin = 1e-9;
-    if (InverseTrilinear(p, middle, xi) && xi.x >= -margin && xi.y >= -margin && xi.z >= -margin &&
-      xi.x <= 1 + margin && xi.y <= 1 + margin && xi.z <= 1 + margin)
+    glm::dvec3 xi = shape.Centre;
+    if (InverseIsoparametric(shape, p, ray.Origin + 0.5 * (a + b) * ray.Direction, xi) &&
+      shape.Contains(xi, 1e-9))
     {
       if (!parts.empty() && parts.back().Exit == a)
       {
@@ -292,6 +398,12 @@ inline void IntersectHexahedron(const Ray& ray, const glm::dvec3 p[8], const std
       }
     }
   }
+}
+
+inline void IntersectHexahedron(const Ray& ray, const glm::dvec3 p[8], const std::int64_t ids[8],
+  std::vector<Interval>& parts, std::vector<double>& scratch)
+{
+  IntersectIsoparametric(HexahedronShape(), ray, p, ids, parts, scratch);
 }
 
 /// Axis-aligned boxes of cells in a bounding volume hierarchy (median split, leaves of <= 4).

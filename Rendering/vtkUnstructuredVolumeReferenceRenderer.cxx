@@ -37,9 +37,26 @@ namespace
 {
 struct Cell
 {
-  bool Hexahedron;
+  const uv::IsoparametricShape* Shape; // null for a tetrahedron (linear, clipped by planes)
   std::int64_t Ids[8];
+  int Corners() const { return this->Shape ? this->Shape->Corners : 4; }
 };
+
+const uv::IsoparametricShape* ShapeOf(int type)
+{
+  switch (type)
+  {
+    case VTK_HEXAHEDRON:
+    case VTK_VOXEL:
+      return &uv::HexahedronShape();
+    case VTK_WEDGE:
+      return &uv::WedgeShape();
+    case VTK_PYRAMID:
+      return &uv::PyramidShape();
+    default:
+      return nullptr;
+  }
+}
 
 struct Segment
 {
@@ -131,7 +148,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   for (vtkIdType c = 0; c < this->Input->GetNumberOfCells(); ++c)
   {
     const int type = this->Input->GetCellType(c);
-    if (type != VTK_TETRA && type != VTK_HEXAHEDRON && type != VTK_VOXEL)
+    if (type != VTK_TETRA && !ShapeOf(type))
     {
       probe->SetCellType(type);
       if (type == VTK_EMPTY_CELL || probe->GetCellDimension() < 3)
@@ -139,14 +156,14 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
         ++ignored;
         continue;
       }
-      vtkErrorMacro("The reference renderer takes tetrahedra, hexahedra and voxels; cell "
-        << c << " is a " << vtkCellTypes::GetClassNameFromTypeId(type)
-        << " (split wedges and pyramids with vtkHexahedraToTetrahedra).");
+      vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges and "
+                    "pyramids; cell "
+        << c << " is a " << vtkCellTypes::GetClassNameFromTypeId(type) << ".");
       return false;
     }
     this->Input->GetCellPoints(c, ids);
-    Cell cell{ type != VTK_TETRA, {} };
-    const int corners = cell.Hexahedron ? 8 : 4;
+    Cell cell{ ShapeOf(type), {} };
+    const int corners = cell.Corners();
     uv::BoundingVolumeHierarchy::Box box;
     bool finite = true;
     for (int k = 0; k < corners; ++k)
@@ -204,14 +221,14 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
       hierarchy.Traverse(ray, [&](std::int64_t index) {
         const Cell& cell = cells[index];
         glm::dvec3 p[8];
-        for (int k = 0; k < (cell.Hexahedron ? 8 : 4); ++k)
+        for (int k = 0; k < cell.Corners(); ++k)
         {
           p[k] = points[cell.Ids[k]];
         }
         parts.clear();
-        if (cell.Hexahedron)
+        if (cell.Shape)
         {
-          uv::IntersectHexahedron(ray, p, cell.Ids, parts, scratch);
+          uv::IntersectIsoparametric(*cell.Shape, ray, p, cell.Ids, parts, scratch);
         }
         else
         {
@@ -243,13 +260,13 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
         const Cell& cell = cells[segment.Cell];
         glm::dvec3 p[8];
         double f[8];
-        for (int k = 0; k < (cell.Hexahedron ? 8 : 4); ++k)
+        for (int k = 0; k < cell.Corners(); ++k)
         {
           p[k] = points[cell.Ids[k]];
           f[k] = values[cell.Ids[k]];
         }
         const double t0 = segment.Span.Enter, t1 = segment.Span.Exit;
-        if (!cell.Hexahedron)
+        if (!cell.Shape)
         {
           const double s0 = uv::TetrahedronScalar(p, f, ray.Origin + t0 * ray.Direction);
           const double s1 = uv::TetrahedronScalar(p, f, ray.Origin + t1 * ray.Direction);
@@ -257,25 +274,30 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
           uv::IntegrateSegment(transfer, linear, t0, t1, tolerance, accumulator);
           continue;
         }
-        glm::dvec3 xi0(0.5), xi1(0.5);
-        uv::InverseTrilinear(p, ray.Origin + t0 * ray.Direction, xi0);
-        uv::InverseTrilinear(p, ray.Origin + t1 * ray.Direction, xi1);
-        const auto trilinear = [&](double t) {
+        const uv::IsoparametricShape& shape = *cell.Shape;
+        glm::dvec3 xi0 = shape.Centre, xi1 = shape.Centre;
+        uv::InverseIsoparametric(shape, p, ray.Origin + t0 * ray.Direction, xi0);
+        uv::InverseIsoparametric(shape, p, ray.Origin + t1 * ray.Direction, xi1);
+        const auto isoparametric = [&](double t) {
           glm::dvec3 xi = xi0 + (xi1 - xi0) * ((t - t0) / (t1 - t0));
-          uv::InverseTrilinear(p, ray.Origin + t * ray.Direction, xi);
-          return uv::TrilinearScalar(f, xi);
+          uv::InverseIsoparametric(shape, p, ray.Origin + t * ray.Direction, xi);
+          return uv::IsoparametricScalar(shape, f, xi);
         };
         // s(t) is smooth inside the cell: a certified Chebyshev fit (17 inverse solves) stands in
         // for the hundreds of solves the quadrature would make; unresolved fits use s(t) itself.
-        const double magnitude = 1.0 + std::max(std::abs(f[0]), std::abs(f[7]));
+        double magnitude = 1.0;
+        for (int k = 0; k < shape.Corners; ++k)
+        {
+          magnitude = std::max(magnitude, 1.0 + std::abs(f[k]));
+        }
         uv::ChebyshevSeries series;
-        if (series.Fit(trilinear, t0, t1, 1e-12 * magnitude))
+        if (series.Fit(isoparametric, t0, t1, 1e-12 * magnitude))
         {
           uv::IntegrateSegment(transfer, series, t0, t1, tolerance, accumulator);
         }
         else
         {
-          uv::IntegrateSegment(transfer, trilinear, t0, t1, tolerance, accumulator);
+          uv::IntegrateSegment(transfer, isoparametric, t0, t1, tolerance, accumulator);
         }
       }
       float* out = pixels + 4 * pixel;

@@ -2,7 +2,8 @@
  * @class   vtkUnstructuredVolumeReferenceRenderer
  * @brief   Exact CPU volume rendering of unstructured grids in double precision: the ground truth.
  *
- * Renders a point scalar on tetrahedra (linear) and hexahedra/voxels (isoparametric trilinear) with
+ * Renders a point scalar on tetrahedra (linear), hexahedra/voxels (trilinear), wedges and pyramids
+ * (VTK's isoparametric bases) with
  * the project's optical model (see README, "Optical model"): every ray visits every cell it meets in
  * exact order (non-convex meshes, holes and re-entering rays included; a ray may enter a curved
  * hexahedron twice), each segment is cut where the scalar crosses a transfer-function node and
@@ -13,8 +14,7 @@
  * is a float RGBA vtkImageData (array "RGBA", premultiplied, over a transparent background), row 0
  * at the bottom like VTK's windows. Multithreaded over pixels with vtkSMPTools.
  *
- * Wedges and pyramids are not supported yet (an error names them); 2D and 1D cells are ignored with a
- * warning. Cells touching a non-finite scalar are left out (transparent) with a warning.
+ * Other 3D cells (quadratic, polyhedra) are an error; 2D and 1D cells are ignored with a warning. Cells touching a non-finite scalar are left out (transparent) with a warning.
  */
 #ifndef vtkUnstructuredVolumeReferenceRenderer_h
 #define vtkUnstructuredVolumeReferenceRenderer_h

@@ -134,45 +134,6 @@ vtkSmartPointer<vtkUnstructuredGrid> Analytic(int resolution, int distortion, in
   return source->GetOutput();
 }
 
-/// A mesh of every supported linear 3D cell sharing faces: a hexahedron with a wedge, a pyramid and a
-/// tet glued on, plus a quad and a line that must be dropped.
-/// A hexahedron with a pyramid on its top, a wedge on its x = 1 face, a tet on the pyramid.
-vtkSmartPointer<vtkUnstructuredGrid> MixedMesh()
-{
-  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> points;
-  const double xyz[][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
-    { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 }, // hexahedron 0..7
-    { 0.5, 0.5, 2 },                       // 8: pyramid apex above the top face
-    { 2, 0, 0.5 }, { 2, 1, 0.5 },          // 9, 10: wedge ridge beyond x = 1
-    { 0.5, -1, 1.5 } };                    // 11: tet apex beyond the pyramid's y = 0 side
-  for (const auto& p : xyz)
-  {
-    points->InsertNextPoint(p);
-  }
-  grid->SetPoints(points);
-  const vtkIdType hexahedron[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
-  const vtkIdType pyramid[5] = { 4, 5, 6, 7, 8 };
-  // Wedge on the x = 1 face: triangles (1,5,9) and (2,6,10); (1,5,9) must face away from (2,6,10).
-  const vtkIdType wedge[6] = { 1, 9, 5, 2, 10, 6 };
-  const vtkIdType tet[4] = { 4, 5, 8, 11 }; // on the pyramid's face (4,5,8)
-  const vtkIdType quad[4] = { 0, 1, 2, 3 };
-  const vtkIdType line[2] = { 0, 6 };
-  grid->InsertNextCell(VTK_HEXAHEDRON, 8, hexahedron);
-  grid->InsertNextCell(VTK_PYRAMID, 5, pyramid);
-  grid->InsertNextCell(VTK_WEDGE, 6, wedge);
-  grid->InsertNextCell(VTK_TETRA, 4, tet);
-  grid->InsertNextCell(VTK_QUAD, 4, quad);
-  grid->InsertNextCell(VTK_LINE, 2, line);
-  vtkNew<vtkIntArray> label;
-  label->SetName("label");
-  for (int c = 0; c < 6; ++c)
-  {
-    label->InsertNextValue(10 + c);
-  }
-  grid->GetCellData()->AddArray(label);
-  return grid;
-}
 } // namespace
 
 TEST(HexahedraToTetrahedra, ImageDataSixAndFive)
@@ -269,7 +230,7 @@ TEST(HexahedraToTetrahedra, UnstructuredGeneratedMeshes)
 
 TEST(HexahedraToTetrahedra, MixedCellsConformAndLowerDimensionalCellsAreDropped)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> mixed = MixedMesh();
+  vtkSmartPointer<vtkUnstructuredGrid> mixed = uvtest::MixedMesh();
   uvtest::EventCounter* events = nullptr;
   vtkSmartPointer<vtkUnstructuredGrid> tets = Split(mixed, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
   EXPECT_EQ(events->Errors, 0);

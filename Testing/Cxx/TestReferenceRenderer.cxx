@@ -193,6 +193,37 @@ TEST(ReferenceRenderer, HexahedraAndTheirTetSplitAgreeOnLinearFields)
   }
 }
 
+TEST(ReferenceRenderer, WedgesAndPyramidsMatchTheirTetSplitOnLinearFields)
+{
+  // A hexahedron with a pyramid, a wedge and a tet glued on; planar faces, a linear field: the
+  // isoparametric cells and the tets of their split describe the same field on the same volume.
+  vtkSmartPointer<vtkUnstructuredGrid> mixed = uvtest::MixedMesh();
+  vtkNew<vtkDoubleArray> linear;
+  linear->SetName("linear");
+  for (vtkIdType i = 0; i < mixed->GetNumberOfPoints(); ++i)
+  {
+    const double* x = mixed->GetPoint(i);
+    linear->InsertNextValue(0.2 + 0.25 * x[0] + 0.1 * x[1] + 0.15 * x[2]);
+  }
+  mixed->GetPointData()->SetScalars(linear);
+  vtkNew<vtkHexahedraToTetrahedra> split;
+  split->SetInputData(mixed);
+  split->Update();
+  vtkSmartPointer<vtkVolumeProperty> property =
+    Property({ { 0.0, 0.0 }, { 0.4, 0.5 }, { 0.5, 0.1 }, { 1.0, 0.7 } }, 0.5);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(4.0, -3.0, 3.5);
+  camera->SetFocalPoint(0.8, 0.3, 0.8);
+  camera->SetViewUp(0, 0, 1);
+  camera->SetClippingRange(1.0, 20.0);
+  uvtest::EventCounter* events = nullptr;
+  vtkSmartPointer<vtkImageData> isoparametric = Render(mixed, property, camera, 32, 1e-7, &events);
+  EXPECT_EQ(events->Errors, 0);
+  vtkSmartPointer<vtkImageData> tets = Render(split->GetOutput(), property, camera, 32);
+  EXPECT_LT(MaxDifference(isoparametric, tets), 1e-6);
+  EXPECT_GT(isoparametric->GetPointData()->GetScalars()->GetRange(3)[1], 0.3);
+}
+
 TEST(ReferenceRenderer, HalvingTheToleranceChangesNoPixelByMoreThan1e6)
 {
   vtkNew<vtkAnalyticMeshSource> mesh;
@@ -231,20 +262,20 @@ TEST(ReferenceRenderer, BadInput)
   EXPECT_FALSE(renderer->Render());
   EXPECT_EQ(missing.Errors, 1);
 
-  vtkNew<vtkUnstructuredGrid> wedge;
+  vtkNew<vtkUnstructuredGrid> quadratic;
   vtkNew<vtkPoints> points;
-  for (int i = 0; i < 6; ++i)
+  for (int i = 0; i < 10; ++i)
   {
-    points->InsertNextPoint(i % 3 == 1, i % 3 == 2, i / 3);
+    points->InsertNextPoint(i % 2, (i / 2) % 2, i / 4);
   }
-  wedge->SetPoints(points);
-  const vtkIdType ids[6] = { 0, 1, 2, 3, 4, 5 };
-  wedge->InsertNextCell(VTK_WEDGE, 6, ids);
+  quadratic->SetPoints(points);
+  const vtkIdType ids[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
+  quadratic->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ids);
   vtkNew<vtkDoubleArray> values;
-  values->SetNumberOfValues(6);
+  values->SetNumberOfValues(10);
   values->Fill(0.5);
-  wedge->GetPointData()->SetScalars(values);
-  Render(wedge, property, camera, 8, 1e-7, &events);
+  quadratic->GetPointData()->SetScalars(values);
+  Render(quadratic, property, camera, 8, 1e-7, &events);
   EXPECT_EQ(events->Errors, 1);
-  EXPECT_NE(events->LastMessage.find("vtkWedge"), std::string::npos);
+  EXPECT_NE(events->LastMessage.find("vtkQuadraticTetra"), std::string::npos);
 }
