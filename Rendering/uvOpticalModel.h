@@ -147,9 +147,11 @@ inline double Difference(const PieceIntegral& x, const PieceIntegral& y)
 }
 
 /// Adaptive bisection until whole and halves agree within `tolerance`; composited in order.
+/// `budget` bounds the bisections of one segment: a scalar that never resolves (a cell so distorted
+/// its inverse map fails) costs at most that many, not 2^depth.
 template <typename ScalarAt>
 void AdaptivePiece(const TransferFunction& tf, const ScalarAt& scalarAt, double a, double b,
-  const PieceIntegral& whole, double tolerance, int depth, RayAccumulator& accumulator)
+  const PieceIntegral& whole, double tolerance, int depth, int& budget, RayAccumulator& accumulator)
 {
   const double m = 0.5 * (a + b);
   const PieceIntegral left = GaussPiece(tf, scalarAt, a, m);
@@ -157,14 +159,14 @@ void AdaptivePiece(const TransferFunction& tf, const ScalarAt& scalarAt, double 
   PieceIntegral halves;
   halves.Depth = left.Depth + right.Depth;
   halves.Color = left.Color + std::exp(-left.Depth) * right.Color;
-  if (depth >= 40 || Difference(whole, halves) <= tolerance)
+  if (depth >= 40 || --budget <= 0 || Difference(whole, halves) <= tolerance)
   {
     accumulator.Composite(left.Color, left.Depth);
     accumulator.Composite(right.Color, right.Depth);
     return;
   }
-  AdaptivePiece(tf, scalarAt, a, m, left, 0.5 * tolerance, depth + 1, accumulator);
-  AdaptivePiece(tf, scalarAt, m, b, right, 0.5 * tolerance, depth + 1, accumulator);
+  AdaptivePiece(tf, scalarAt, a, m, left, 0.5 * tolerance, depth + 1, budget, accumulator);
+  AdaptivePiece(tf, scalarAt, m, b, right, 0.5 * tolerance, depth + 1, budget, accumulator);
 }
 } // namespace detail
 
@@ -209,12 +211,13 @@ void IntegrateSegment(const TransferFunction& tf, const ScalarAt& scalarAt, doub
     previousS = s;
   }
   const double pieceTolerance = tolerance / static_cast<double>(cuts.size());
+  int budget = 4096; // bisections for the whole segment; far above what smooth integrands need
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
   {
     if (cuts[i + 1] > cuts[i])
     {
       const detail::PieceIntegral whole = detail::GaussPiece(tf, scalarAt, cuts[i], cuts[i + 1]);
-      detail::AdaptivePiece(tf, scalarAt, cuts[i], cuts[i + 1], whole, pieceTolerance, 0, accumulator);
+      detail::AdaptivePiece(tf, scalarAt, cuts[i], cuts[i + 1], whole, pieceTolerance, 0, budget, accumulator);
     }
   }
 }
