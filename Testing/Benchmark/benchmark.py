@@ -50,6 +50,8 @@ import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
+import uvrender  # noqa: E402
 SHARED = os.path.abspath(os.path.join(ROOT, "..", "shared", "data"))
 REFERENCE_VERSION = "1"  # bump when the reference renderer's output changes
 
@@ -368,14 +370,7 @@ def plot_scene(scene, rows, path):
         axis.SetTitle(title)
         axis.SetLogScale(True)
     view.GetRenderWindow().Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(view.GetRenderWindow())
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.SetFileName(path)
-    writer.Write()
+    uvrender.write_png(view.GetRenderWindow(), path)
 
 
 def over_background(rgba, background=(0.1, 0.1, 0.12)):

@@ -33,11 +33,10 @@ vtkSmartPointer<vtkUnstructuredGrid> Split(vtkDataSet* input, int mode = vtkHexa
   uvtest::EventCounter** counter = nullptr)
 {
   auto filter = vtkSmartPointer<vtkHexahedraToTetrahedra>::New();
-  static std::unique_ptr<uvtest::EventCounter> lastCounter;
-  lastCounter = std::make_unique<uvtest::EventCounter>(filter);
+  uvtest::EventCounter* watched = uvtest::WatchEvents(filter);
   if (counter)
   {
-    *counter = lastCounter.get();
+    *counter = watched;
   }
   filter->SetSplitMode(mode);
   filter->SetInputData(input);

@@ -67,11 +67,10 @@ vtkSmartPointer<vtkImageData> Render(vtkDataSet* mesh, vtkVolumeProperty* proper
   int size, double tolerance = 1e-7, uvtest::EventCounter** events = nullptr)
 {
   auto renderer = vtkSmartPointer<vtkUnstructuredVolumeReferenceRenderer>::New();
-  static std::unique_ptr<uvtest::EventCounter> counter;
-  counter = std::make_unique<uvtest::EventCounter>(renderer);
+  uvtest::EventCounter* watched = uvtest::WatchEvents(renderer);
   if (events)
   {
-    *events = counter.get();
+    *events = watched;
   }
   renderer->SetInputData(mesh);
   renderer->SetVolumeProperty(property);

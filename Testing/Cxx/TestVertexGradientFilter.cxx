@@ -38,11 +38,10 @@ vtkDataArray* Gradients(vtkDataSet* input, const char* arrayName, vtkSmartPointe
   uvtest::EventCounter** counter = nullptr)
 {
   auto filter = vtkSmartPointer<vtkVertexGradientFilter>::New();
-  static std::unique_ptr<uvtest::EventCounter> lastCounter;
-  lastCounter = std::make_unique<uvtest::EventCounter>(filter);
+  uvtest::EventCounter* watched = uvtest::WatchEvents(filter);
   if (counter)
   {
-    *counter = lastCounter.get();
+    *counter = watched;
   }
   filter->SetInputData(input);
   if (arrayName)

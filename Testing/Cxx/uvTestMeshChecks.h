@@ -19,6 +19,7 @@
 #include <array>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -139,6 +140,14 @@ public:
 private:
   vtkNew<vtkCallbackCommand> Callback;
 };
+
+/// Watches `object` with a counter that outlives the helper that ran it (until the next call).
+inline EventCounter* WatchEvents(vtkObject* object)
+{
+  static std::unique_ptr<EventCounter> last;
+  last = std::make_unique<EventCounter>(object);
+  return last.get();
+}
 
 /// A mesh of every supported linear 3D cell sharing faces: a hexahedron with a wedge, a pyramid and a
 /// tet glued on, plus a quad and a line that must be dropped.
