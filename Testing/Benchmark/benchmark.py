@@ -8,7 +8,7 @@ For each scene (mesh, scalar, transfer function, an orbit of camera positions) a
 preparation time (the first frame), then the median and spread of the frame time over the orbit
 (each frame ends with WaitForCompletion, i.e. glFinish), the process's resident memory after the
 first frame, and the error of every frame against vtkUnstructuredVolumeReferenceRenderer at the same
-view. Writes results.csv, results.json, and per scene a log-log plot of time against error with the
+view. Writes results.csv, results.json, results.md (a table), and per scene a log-log plot of time against error with the
 Pareto front (<scene>_time_vs_error.png) and a montage (<scene>_montage.png: top row the reference
 then each mapper's first view, bottom row their error heat maps). Reference images are cached in
 <output>/reference-cache, keyed by everything that determines them.
@@ -414,6 +414,17 @@ def montage(top, bottom, path):
     writer.Write()
 
 
+def markdown_table(rows):
+    """The results as a Markdown table (for the README and issue notes)."""
+    lines = ["| scene | mapper | prep (s) | median frame (s) [min-max] | RMSE covered | max error | memory (MB) |",
+             "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r['scene']} | {r['mapper']} | {float(r['preparation_s']):.3f} | "
+                     f"{float(r['median_s']):.3f} [{float(r['min_s']):.3f}-{float(r['max_s']):.3f}] | "
+                     f"{float(r['rmse_covered']):.4f} | {float(r['max_error']):.3f} | {float(r['memory_mb']):.0f} |")
+    return "\n".join(lines) + "\n"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true", help="two small scenes, 128 px, 4 views (a smoke test)")
@@ -489,6 +500,8 @@ def main():
         writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
         writer.writeheader()
         writer.writerows(rows)
+    with open(os.path.join(args.output, "results.md"), "w") as out:
+        out.write(markdown_table(rows))
     bad = [r for r in rows if not all(math.isfinite(r[k]) for k in ("median_s", "rmse", "preparation_s"))]
     print(f"\nwrote {len(rows)} rows to {args.output}/results.csv and results.json")
     if bad:
