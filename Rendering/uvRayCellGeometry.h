@@ -180,17 +180,6 @@ inline void IntersectBilinearPatch(const Ray& ray, const glm::dvec3& q0, const g
 constexpr std::array<std::array<int, 3>, 8> HexahedronCorners = { { { 0, 0, 0 }, { 1, 0, 0 },
   { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } } };
 
-inline double TrilinearScalar(const double f[8], const glm::dvec3& xi)
-{
-  double s = 0.0;
-  for (int k = 0; k < 8; ++k)
-  {
-    const auto& c = HexahedronCorners[k];
-    s += (c[0] ? xi.x : 1.0 - xi.x) * (c[1] ? xi.y : 1.0 - xi.y) * (c[2] ? xi.z : 1.0 - xi.z) * f[k];
-  }
-  return s;
-}
-
 /// An isoparametric linear 3D cell: its map from parametric space (with Jacobian), its scalar, its
 /// parametric domain and its faces (VTK's local numbering, outward; triangles have Size 3).
 struct IsoparametricShape

@@ -260,15 +260,7 @@ TEST(HexahedraToTetrahedra, EmptyAndUnsupportedInput)
   EXPECT_EQ(out->GetNumberOfCells(), 0);
   EXPECT_EQ(events->Errors + events->Warnings, 0);
 
-  vtkNew<vtkUnstructuredGrid> quadratic;
-  vtkNew<vtkPoints> points;
-  for (int i = 0; i < 10; ++i)
-  {
-    points->InsertNextPoint(i % 2, (i / 2) % 2, i / 4);
-  }
-  quadratic->SetPoints(points);
-  const vtkIdType ids[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
-  quadratic->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ids);
+  vtkSmartPointer<vtkUnstructuredGrid> quadratic = uvtest::QuadraticTetraMesh();
   out = Split(quadratic, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
   EXPECT_EQ(events->Errors, 1);
   EXPECT_NE(events->LastMessage.find("vtkQuadraticTetra"), std::string::npos) << events->LastMessage;

@@ -261,20 +261,7 @@ TEST(ReferenceRenderer, BadInput)
   EXPECT_FALSE(renderer->Render());
   EXPECT_EQ(missing.Errors, 1);
 
-  vtkNew<vtkUnstructuredGrid> quadratic;
-  vtkNew<vtkPoints> points;
-  for (int i = 0; i < 10; ++i)
-  {
-    points->InsertNextPoint(i % 2, (i / 2) % 2, i / 4);
-  }
-  quadratic->SetPoints(points);
-  const vtkIdType ids[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
-  quadratic->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ids);
-  vtkNew<vtkDoubleArray> values;
-  values->SetNumberOfValues(10);
-  values->Fill(0.5);
-  quadratic->GetPointData()->SetScalars(values);
-  Render(quadratic, property, camera, 8, 1e-7, &events);
+  Render(uvtest::QuadraticTetraMesh(), property, camera, 8, 1e-7, &events);
   EXPECT_EQ(events->Errors, 1);
   EXPECT_NE(events->LastMessage.find("vtkQuadraticTetra"), std::string::npos);
 }

@@ -11,6 +11,8 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkPointData.h"
 #include "vtkIntArray.h"
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
@@ -188,6 +190,24 @@ inline vtkSmartPointer<vtkUnstructuredGrid> MixedMesh()
   grid->GetCellData()->AddArray(label);
   return grid;
 }
+/// One quadratic tetrahedron (a cell type the project rejects), with a constant point scalar.
+inline vtkSmartPointer<vtkUnstructuredGrid> QuadraticTetraMesh()
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> values;
+  for (int i = 0; i < 10; ++i)
+  {
+    points->InsertNextPoint(i % 2, (i / 2) % 2, i / 4);
+    values->InsertNextValue(0.5);
+  }
+  grid->SetPoints(points);
+  const vtkIdType ids[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
+  grid->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ids);
+  grid->GetPointData()->SetScalars(values);
+  return grid;
+}
+
 } // namespace uvtest
 
 #endif
