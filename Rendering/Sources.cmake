@@ -14,5 +14,8 @@ set(uv_rendering_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/uvChebyshevSeries.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvImageErrorMetrics.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvOpticalModel.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvPreIntegration.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvProjectedTetrahedron.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvRayCellGeometry.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvTransferFunctionFromVolumeProperty.h")
+  "${CMAKE_CURRENT_LIST_DIR}/uvTransferFunctionFromVolumeProperty.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvVisibilitySort.h")
