@@ -1,0 +1,889 @@
+#include "vtkPreIntegratedTetrahedraMapper.h"
+
+#include "uvPreIntegratedTetrahedraFS.h"
+#include "uvPreIntegratedTetrahedraGS.h"
+#include "uvPreIntegratedTetrahedraVS.h"
+#include "uvCompositePremultipliedFS.h"
+#include "uvFullScreenTriangleVS.h"
+#include "uvPreIntegration.h"
+#include "uvTransferFunctionFromVolumeProperty.h"
+#include "uvVisibilitySort.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkHexahedraToTetrahedra.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVertexGradientFilter.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkPreIntegratedTetrahedraMapper);
+
+namespace
+{
+glm::dmat4 ToGlm(vtkMatrix4x4* m)
+{
+  glm::dmat4 result;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column)
+      result[column][row] = m->GetElement(row, column);
+  return result;
+}
+
+/// Closed intervals of normalised scalar where the extinction is zero: the set that decides which
+/// tetrahedra are invisible.
+std::vector<std::pair<double, double>> ZeroExtinctionIntervals(const std::vector<uv::TransferFunction::Node>& nodes)
+{
+  std::vector<std::pair<double, double>> intervals;
+  const double infinity = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if (nodes[i].Extinction > 0.0)
+      continue;
+    const double begin = i == 0 ? -infinity : nodes[i].Scalar;
+    std::size_t j = i;
+    while (j + 1 < nodes.size() && nodes[j + 1].Extinction <= 0.0)
+      ++j;
+    const double end = j + 1 == nodes.size() ? infinity : nodes[j].Scalar;
+    intervals.emplace_back(begin, end);
+    i = j;
+  }
+  return intervals;
+}
+
+struct Isosurface
+{
+  double Value;
+  double Color[3];
+  double Opacity;
+};
+} // namespace
+
+class vtkPreIntegratedTetrahedraMapper::Internals
+{
+public:
+  // The mesh as the GPU takes it, rebuilt when the input or its scalar changes.
+  std::string MeshKey;
+  vtkSmartPointer<vtkUnstructuredGrid> Tetrahedra; // the input, or its split
+  vtkSmartPointer<vtkDataArray> Scalars;
+  std::vector<std::uint32_t> TetrahedronPoints; // 4 point ids per drawable tetrahedron
+  std::vector<float> PointData;                 // recentred position and normalised scalar
+  std::vector<float> ScalarLow, ScalarHigh;     // per tetrahedron, normalised
+  std::vector<float> Centroids;                 // per tetrahedron, recentred
+  glm::dvec3 Center{ 0.0 };
+  double ScalarOffset = 0.0, ScalarScale = 1.0;
+
+  std::string GradientKey;
+  std::vector<float> Gradients; // 4 floats per point
+
+  vtkMTimeType TransferFunctionTime = 0;
+  std::string TransferFunctionMeshKey;
+  std::vector<uv::TransferFunction::Node> Nodes; // normalised scalars
+  std::vector<Isosurface> Isosurfaces;
+  vtkMTimeType IsosurfaceTime = 0, UploadedIsosurfaceTime = 0;
+
+  std::vector<std::pair<double, double>> VisibleListZeroSet;
+  std::vector<double> VisibleListIsovalues;
+  bool VisibleListValid = false;
+  bool VisibleListSkipped = false;
+  std::vector<std::uint32_t> Visible;
+
+  std::vector<std::uint32_t> SortKeys, Order, ScratchKeys, ScratchOrder;
+  glm::dvec3 SortedEye{ 0.0 }, SortedDirection{ 0.0 };
+  bool SortedParallel = false;
+  bool OrderValid = false;
+
+  // GPU state, for one context.
+  vtkOpenGLRenderWindow* Context = nullptr;
+  vtkNew<vtkOpenGLBufferObject> TetrahedronBuffer, PointBuffer, GradientBuffer, OrderBuffer;
+  vtkNew<vtkTextureObject> TetrahedronTexture, PointTexture, GradientTexture, TransferTexture, IsosurfaceTexture,
+    PsiTexture, DepthTexture, ColorTexture;
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
+  bool MeshOnGpu = false, GradientsOnGpu = false, TransferFunctionOnGpu = false, OrderOnGpu = false;
+  int ImageSize[2] = { 0, 0 };
+
+  vtkSmartPointer<vtkImageData> FloatImage;
+  vtkIdType DrawnTetrahedra = 0;
+  int Sorts = 0, GradientComputations = 0, MeshUploads = 0, TransferFunctionUploads = 0, VisibleListBuilds = 0;
+  bool WarnedSplit = false, WarnedNaN = false, WarnedMultisample = false;
+
+  void ReleaseGraphics()
+  {
+    if (this->Context)
+    {
+      for (vtkTextureObject* texture : { this->TetrahedronTexture.Get(), this->PointTexture.Get(),
+             this->GradientTexture.Get(), this->TransferTexture.Get(), this->IsosurfaceTexture.Get(),
+             this->PsiTexture.Get(), this->DepthTexture.Get(), this->ColorTexture.Get() })
+      {
+        texture->ReleaseGraphicsResources(this->Context);
+      }
+      for (vtkOpenGLBufferObject* buffer : { this->TetrahedronBuffer.Get(), this->PointBuffer.Get(),
+             this->GradientBuffer.Get(), this->OrderBuffer.Get() })
+      {
+        buffer->ReleaseGraphicsResources();
+      }
+      this->Framebuffer->ReleaseGraphicsResources(this->Context);
+      this->NoAttributes->ReleaseGraphicsResources();
+    }
+    this->Context = nullptr;
+    this->MeshOnGpu = this->GradientsOnGpu = this->TransferFunctionOnGpu = this->OrderOnGpu = false;
+    this->UploadedIsosurfaceTime = 0;
+    this->ImageSize[0] = this->ImageSize[1] = 0;
+  }
+};
+
+vtkPreIntegratedTetrahedraMapper::vtkPreIntegratedTetrahedraMapper()
+  : Impl(new Internals)
+{
+  this->SetGradientArrayName("Gradients");
+}
+
+vtkPreIntegratedTetrahedraMapper::~vtkPreIntegratedTetrahedraMapper()
+{
+  this->SetGradientArrayName(nullptr);
+}
+
+void vtkPreIntegratedTetrahedraMapper::AddIsosurface(double value, double red, double green, double blue, double opacity)
+{
+  Isosurface surface{ value, { red, green, blue }, std::min(std::max(opacity, 0.0), 1.0) };
+  auto& list = this->Impl->Isosurfaces;
+  list.insert(std::upper_bound(list.begin(), list.end(), value,
+                [](double v, const Isosurface& s) { return v < s.Value; }),
+    surface);
+  this->Modified();
+  this->Impl->IsosurfaceTime = this->GetMTime();
+}
+
+void vtkPreIntegratedTetrahedraMapper::RemoveAllIsosurfaces()
+{
+  if (!this->Impl->Isosurfaces.empty())
+  {
+    this->Impl->Isosurfaces.clear();
+    this->Modified();
+    this->Impl->IsosurfaceTime = this->GetMTime();
+  }
+}
+
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfIsosurfaces()
+{
+  return static_cast<int>(this->Impl->Isosurfaces.size());
+}
+
+vtkImageData* vtkPreIntegratedTetrahedraMapper::GetFloatImage()
+{
+  return this->Impl->FloatImage;
+}
+
+vtkIdType vtkPreIntegratedTetrahedraMapper::GetNumberOfDrawnTetrahedra()
+{
+  return this->Impl->DrawnTetrahedra;
+}
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfSorts()
+{
+  return this->Impl->Sorts;
+}
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfGradientComputations()
+{
+  return this->Impl->GradientComputations;
+}
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfMeshUploads()
+{
+  return this->Impl->MeshUploads;
+}
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfTransferFunctionUploads()
+{
+  return this->Impl->TransferFunctionUploads;
+}
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfVisibleListBuilds()
+{
+  return this->Impl->VisibleListBuilds;
+}
+
+void vtkPreIntegratedTetrahedraMapper::ReleaseGraphicsResources(vtkWindow*)
+{
+  this->Impl->ReleaseGraphics();
+}
+
+void vtkPreIntegratedTetrahedraMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IntegrationMode: "
+     << (this->IntegrationMode == AVERAGE_SCALAR ? "AverageScalar" : "PartialPreIntegration") << "\n";
+  os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.size() << "\n";
+  os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
+  os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
+  os << indent << "KeepFloatImage: " << this->KeepFloatImage << "\n";
+}
+
+void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+{
+  Internals& impl = *this->Impl;
+  impl.DrawnTetrahedra = 0;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkUnstructuredGridBase* input = this->GetInput();
+  if (!window || !volume || !volume->GetProperty())
+  {
+    vtkErrorMacro("needs an OpenGL render window and a volume with a property");
+    return;
+  }
+  if (!input)
+  {
+    vtkErrorMacro("no input");
+    return;
+  }
+  if (input->GetNumberOfCells() == 0 || input->GetNumberOfPoints() == 0)
+  {
+    return; // an empty grid draws nothing
+  }
+
+  // ---- The mesh, when the input or its scalar changed.
+  int cellFlag = 0;
+  vtkDataArray* inputScalars = vtkAbstractMapper::GetScalars(
+    input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (!inputScalars)
+  {
+    vtkErrorMacro("the input has no point scalar to render (set one, or select an array with SelectScalarArray)");
+    return;
+  }
+  if (cellFlag != 0)
+  {
+    vtkErrorMacro("cell scalars are not supported: convert them to point data (vtkCellDataToPointData)");
+    return;
+  }
+  const std::string meshKey = std::to_string(reinterpret_cast<std::uintptr_t>(input)) + ":" +
+    std::to_string(input->GetMTime()) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(inputScalars)) +
+    ":" + std::to_string(inputScalars->GetMTime());
+  if (meshKey != impl.MeshKey)
+  {
+    impl.MeshKey.clear();
+    impl.MeshOnGpu = impl.GradientsOnGpu = impl.OrderOnGpu = false;
+    impl.OrderValid = impl.VisibleListValid = false;
+    impl.GradientKey.clear();
+    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(input);
+    if (!grid)
+    {
+      grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      grid->DeepCopy(input);
+    }
+    vtkIdType others = 0;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      others += grid->GetCellType(c) != VTK_TETRA ? 1 : 0;
+    }
+    impl.Scalars = inputScalars;
+    if (others > 0)
+    {
+      if (!impl.WarnedSplit)
+      {
+        vtkWarningMacro(<< others << " of " << grid->GetNumberOfCells()
+                        << " cells are not tetrahedra: splitting them with vtkHexahedraToTetrahedra "
+                           "(once per data change; split upstream to skip this)");
+        impl.WarnedSplit = true;
+      }
+      vtkNew<vtkHexahedraToTetrahedra> split;
+      split->SetInputData(grid);
+      split->Update();
+      vtkUnstructuredGrid* tets = vtkUnstructuredGrid::SafeDownCast(split->GetOutputDataObject(0));
+      if (!tets || tets->GetNumberOfCells() == 0)
+      {
+        vtkErrorMacro("the input's cells cannot be split into tetrahedra (quadratic or other non-linear cells?)");
+        return;
+      }
+      grid = tets;
+      int flag = 0;
+      impl.Scalars = vtkAbstractMapper::GetScalars(
+        grid, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, flag);
+      if (!impl.Scalars)
+      {
+        // The scalar had no name to find it by after the split: it is the output's scalars.
+        impl.Scalars = grid->GetPointData()->GetScalars();
+      }
+      if (!impl.Scalars)
+      {
+        vtkErrorMacro("lost the scalar array while splitting the cells");
+        return;
+      }
+    }
+    impl.Tetrahedra = grid;
+
+    // Normalised scalar (first component) and recentred positions, in double then float.
+    const vtkIdType pointCount = grid->GetNumberOfPoints();
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (vtkIdType p = 0; p < pointCount; ++p)
+    {
+      const double s = impl.Scalars->GetComponent(p, 0);
+      if (std::isfinite(s))
+      {
+        low = std::min(low, s);
+        high = std::max(high, s);
+      }
+    }
+    if (!(low <= high))
+    {
+      low = high = 0.0; // every scalar is NaN: nothing will be drawn
+    }
+    impl.ScalarOffset = low;
+    impl.ScalarScale = high > low ? 1.0 / (high - low) : 1.0;
+    double bounds[6];
+    grid->GetBounds(bounds);
+    impl.Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
+    impl.PointData.assign(4 * pointCount, 0.0f);
+    vtkPoints* points = grid->GetPoints();
+    const glm::dvec3 center = impl.Center;
+    const double offset = impl.ScalarOffset, scale = impl.ScalarScale;
+    vtkDataArray* scalars = impl.Scalars;
+    vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
+      double x[3];
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        points->GetPoint(p, x);
+        impl.PointData[4 * p + 0] = static_cast<float>(x[0] - center.x);
+        impl.PointData[4 * p + 1] = static_cast<float>(x[1] - center.y);
+        impl.PointData[4 * p + 2] = static_cast<float>(x[2] - center.z);
+        impl.PointData[4 * p + 3] = static_cast<float>((scalars->GetComponent(p, 0) - offset) * scale);
+      }
+    });
+
+    // Tetrahedra: those with a NaN scalar are left out.
+    impl.TetrahedronPoints.clear();
+    impl.TetrahedronPoints.reserve(4 * grid->GetNumberOfCells());
+    vtkIdType withNaN = 0;
+    vtkIdType npts;
+    const vtkIdType* ids;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      if (grid->GetCellType(c) != VTK_TETRA)
+        continue;
+      grid->GetCellPoints(c, npts, ids);
+      bool finite = true;
+      for (int k = 0; k < 4; ++k)
+        finite = finite && std::isfinite(impl.PointData[4 * ids[k] + 3]);
+      if (!finite)
+      {
+        ++withNaN;
+        continue;
+      }
+      for (int k = 0; k < 4; ++k)
+        impl.TetrahedronPoints.push_back(static_cast<std::uint32_t>(ids[k]));
+    }
+    if (withNaN > 0 && !impl.WarnedNaN)
+    {
+      vtkWarningMacro(<< withNaN << " tetrahedra touch a NaN scalar and are not drawn");
+      impl.WarnedNaN = true;
+    }
+    const std::size_t tetCount = impl.TetrahedronPoints.size() / 4;
+    impl.ScalarLow.resize(tetCount);
+    impl.ScalarHigh.resize(tetCount);
+    impl.Centroids.resize(3 * tetCount);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(tetCount), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        float centroid[3] = { 0, 0, 0 };
+        for (int k = 0; k < 4; ++k)
+        {
+          const float* p = &impl.PointData[4 * impl.TetrahedronPoints[4 * t + k]];
+          lo = std::min(lo, p[3]);
+          hi = std::max(hi, p[3]);
+          for (int d = 0; d < 3; ++d)
+            centroid[d] += 0.25f * p[d];
+        }
+        impl.ScalarLow[t] = lo;
+        impl.ScalarHigh[t] = hi;
+        for (int d = 0; d < 3; ++d)
+          impl.Centroids[3 * t + d] = centroid[d];
+      }
+    });
+    impl.MeshKey = meshKey;
+  }
+  const std::size_t tetCount = impl.TetrahedronPoints.size() / 4;
+  if (tetCount == 0)
+  {
+    return;
+  }
+
+  // ---- Transfer function and isosurfaces, normalised like the scalar.
+  vtkVolumeProperty* property = volume->GetProperty();
+  if (property->GetMTime() != impl.TransferFunctionTime || impl.TransferFunctionMeshKey != impl.MeshKey)
+  {
+    impl.Nodes = uv::TransferFunctionNodes(property);
+    if (impl.Nodes.empty())
+    {
+      vtkErrorMacro("the volume property has no scalar opacity function");
+      return;
+    }
+    for (auto& node : impl.Nodes)
+    {
+      node.Scalar = (node.Scalar - impl.ScalarOffset) * impl.ScalarScale;
+    }
+    impl.TransferFunctionTime = property->GetMTime();
+    impl.TransferFunctionMeshKey = impl.MeshKey;
+    impl.TransferFunctionOnGpu = false;
+  }
+  std::vector<double> isovalues;
+  for (const Isosurface& s : impl.Isosurfaces)
+  {
+    if (s.Opacity > 0.0)
+      isovalues.push_back((s.Value - impl.ScalarOffset) * impl.ScalarScale);
+  }
+
+  // ---- Visible tetrahedra: rebuilt only when the zero-opacity set (or the isovalues) moved.
+  const auto zeroSet = this->SkipInvisibleCells ? ZeroExtinctionIntervals(impl.Nodes)
+                                                : std::vector<std::pair<double, double>>();
+  if (!impl.VisibleListValid || zeroSet != impl.VisibleListZeroSet || isovalues != impl.VisibleListIsovalues ||
+    impl.VisibleListSkipped != this->SkipInvisibleCells)
+  {
+    std::vector<unsigned char> keep(tetCount, 1);
+    if (this->SkipInvisibleCells)
+    {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(tetCount), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType t = begin; t < end; ++t)
+        {
+          const double lo = impl.ScalarLow[t], hi = impl.ScalarHigh[t];
+          // Invisible when one zero interval holds the whole range, and no isovalue lies in it.
+          auto after = std::upper_bound(zeroSet.begin(), zeroSet.end(), lo,
+            [](double v, const std::pair<double, double>& z) { return v < z.first; });
+          bool invisible = after != zeroSet.begin() && std::prev(after)->second >= hi;
+          if (invisible)
+          {
+            auto iso = std::lower_bound(isovalues.begin(), isovalues.end(), lo);
+            invisible = iso == isovalues.end() || *iso > hi;
+          }
+          keep[t] = invisible ? 0 : 1;
+        }
+      });
+    }
+    impl.Visible.clear();
+    for (std::size_t t = 0; t < tetCount; ++t)
+    {
+      if (keep[t])
+        impl.Visible.push_back(static_cast<std::uint32_t>(t));
+    }
+    impl.VisibleListZeroSet = zeroSet;
+    impl.VisibleListIsovalues = isovalues;
+    impl.VisibleListSkipped = this->SkipInvisibleCells;
+    impl.VisibleListValid = true;
+    impl.OrderValid = false;
+    ++impl.VisibleListBuilds;
+  }
+  if (impl.Visible.empty())
+  {
+    return;
+  }
+
+  // ---- Camera, in the recentred model frame.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  int width, height, originX, originY;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
+  if (width < 1 || height < 1)
+  {
+    return;
+  }
+  const double aspect = static_cast<double>(width) / height;
+  const glm::dmat4 modelToWorld = ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
+  const glm::dmat4 worldToEye = ToGlm(camera->GetModelViewTransformMatrix());
+  const glm::dmat4 eyeToClip = ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  const glm::dmat4 modelToEye = worldToEye * modelToWorld;
+  const glm::dmat4 eyeToModel = glm::inverse(modelToEye);
+  const bool parallel = camera->GetParallelProjection() != 0;
+  const glm::dvec3 eyeInModel = glm::dvec3(eyeToModel * glm::dvec4(0, 0, 0, 1));
+  const glm::dvec3 viewInModel = glm::normalize(glm::dvec3(eyeToModel * glm::dvec4(0, 0, -1, 0)));
+
+  // ---- Gradients, only when something is lit.
+  const bool shade = property->GetShade() != 0;
+  const bool needGradients = shade || !isovalues.empty();
+  if (needGradients)
+  {
+    vtkDataArray* given = this->GradientArrayName
+      ? impl.Tetrahedra->GetPointData()->GetArray(this->GradientArrayName)
+      : nullptr;
+    const std::string gradientKey = impl.MeshKey + (given ? ":given" : ":computed");
+    if (given && given->GetNumberOfComponents() != 3)
+    {
+      vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
+      given = nullptr;
+    }
+    if (gradientKey != impl.GradientKey)
+    {
+      vtkSmartPointer<vtkDataArray> gradients = given;
+      if (!given)
+      {
+        vtkNew<vtkUnstructuredGrid> scalarOnly;
+        scalarOnly->CopyStructure(impl.Tetrahedra);
+        vtkSmartPointer<vtkDataArray> named = vtk::TakeSmartPointer(impl.Scalars->NewInstance());
+        named->ShallowCopy(impl.Scalars);
+        named->SetName("uvScalar");
+        scalarOnly->GetPointData()->AddArray(named);
+        vtkNew<vtkVertexGradientFilter> filter;
+        filter->SetInputData(scalarOnly);
+        filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "uvScalar");
+        filter->SetResultArrayName("uvGradient");
+        filter->Update();
+        gradients = vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0))->GetPointData()->GetArray("uvGradient");
+        ++impl.GradientComputations;
+      }
+      const vtkIdType pointCount = impl.Tetrahedra->GetNumberOfPoints();
+      impl.Gradients.assign(4 * pointCount, 0.0f);
+      if (gradients)
+      {
+        vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
+          double g[3];
+          for (vtkIdType p = begin; p < end; ++p)
+          {
+            gradients->GetTuple(p, g);
+            for (int d = 0; d < 3; ++d)
+              impl.Gradients[4 * p + d] = std::isfinite(g[d]) ? static_cast<float>(g[d]) : 0.0f;
+          }
+        });
+      }
+      impl.GradientKey = gradientKey;
+      impl.GradientsOnGpu = false;
+    }
+  }
+
+  // ---- Visibility order: back to front by centroid distance, when the view or the list changed.
+  if (!impl.OrderValid || eyeInModel != impl.SortedEye || viewInModel != impl.SortedDirection ||
+    parallel != impl.SortedParallel)
+  {
+    const std::size_t n = impl.Visible.size();
+    impl.SortKeys.resize(n);
+    impl.Order = impl.Visible;
+    const glm::vec3 eye(eyeInModel), direction(viewInModel);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const float* c = &impl.Centroids[3 * impl.Order[i]];
+        const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eye;
+        const float distance = parallel ? glm::dot(offset, direction) : glm::dot(offset, offset);
+        impl.SortKeys[i] = uv::OrderedKey(-distance); // farthest first
+      }
+    });
+    auto parallelChunks = [](int count, const auto& function) {
+      vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType chunk = begin; chunk < end; ++chunk)
+          function(static_cast<int>(chunk));
+      });
+    };
+    uv::RadixSortPairs(impl.SortKeys, impl.Order, impl.ScratchKeys, impl.ScratchOrder, parallelChunks);
+    impl.SortedEye = eyeInModel;
+    impl.SortedDirection = viewInModel;
+    impl.SortedParallel = parallel;
+    impl.OrderValid = true;
+    impl.OrderOnGpu = false;
+    ++impl.Sorts;
+  }
+
+  // ---- GPU resources.
+  if (impl.Context != window)
+  {
+    impl.ReleaseGraphics();
+    impl.Context = window;
+  }
+  window->MakeCurrent();
+  vtkOpenGLClearErrorMacro();
+  vtkOpenGLState* state = window->GetState();
+  if (!impl.MeshOnGpu)
+  {
+    impl.TetrahedronBuffer->Upload(impl.TetrahedronPoints, vtkOpenGLBufferObject::TextureBuffer);
+    impl.TetrahedronTexture->SetContext(window);
+    impl.TetrahedronTexture->SetInternalFormat(GL_RGBA32UI);
+    impl.TetrahedronTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(tetCount), 4, VTK_UNSIGNED_INT, impl.TetrahedronBuffer);
+    impl.PointBuffer->Upload(impl.PointData, vtkOpenGLBufferObject::TextureBuffer);
+    impl.PointTexture->SetContext(window);
+    impl.PointTexture->SetInternalFormat(GL_RGBA32F);
+    impl.PointTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(impl.PointData.size() / 4), 4, VTK_FLOAT, impl.PointBuffer);
+    impl.MeshOnGpu = true;
+    ++impl.MeshUploads;
+  }
+  if (needGradients && !impl.GradientsOnGpu)
+  {
+    impl.GradientBuffer->Upload(impl.Gradients, vtkOpenGLBufferObject::TextureBuffer);
+    impl.GradientTexture->SetContext(window);
+    impl.GradientTexture->SetInternalFormat(GL_RGBA32F);
+    impl.GradientTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(impl.Gradients.size() / 4), 4, VTK_FLOAT, impl.GradientBuffer);
+    impl.GradientsOnGpu = true;
+  }
+  if (!impl.TransferFunctionOnGpu)
+  {
+    const int count = static_cast<int>(impl.Nodes.size());
+    std::vector<float> texels(8 * count);
+    for (int k = 0; k < count; ++k)
+    {
+      const auto& node = impl.Nodes[k];
+      texels[4 * k + 0] = static_cast<float>(node.Color.r);
+      texels[4 * k + 1] = static_cast<float>(node.Color.g);
+      texels[4 * k + 2] = static_cast<float>(node.Color.b);
+      texels[4 * k + 3] = static_cast<float>(node.Extinction);
+      texels[4 * (count + k)] = static_cast<float>(node.Scalar);
+    }
+    impl.TransferTexture->SetContext(window);
+    impl.TransferTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.TransferTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.TransferTexture->Create2DFromRaw(count, 2, 4, VTK_FLOAT, texels.data());
+    impl.TransferFunctionOnGpu = true;
+    ++impl.TransferFunctionUploads;
+  }
+  if (impl.UploadedIsosurfaceTime != impl.IsosurfaceTime || !impl.IsosurfaceTexture->GetHandle() ||
+    impl.TransferFunctionMeshKey != impl.MeshKey)
+  {
+    std::vector<const Isosurface*> drawn;
+    for (const Isosurface& s : impl.Isosurfaces)
+      if (s.Opacity > 0.0)
+        drawn.push_back(&s);
+    const int count = std::max<int>(1, static_cast<int>(drawn.size()));
+    std::vector<float> texels(8 * count, 0.0f);
+    for (std::size_t k = 0; k < drawn.size(); ++k)
+    {
+      for (int d = 0; d < 3; ++d)
+        texels[4 * k + d] = static_cast<float>(drawn[k]->Color[d]);
+      texels[4 * k + 3] = static_cast<float>(drawn[k]->Opacity);
+      texels[4 * (count + k)] = static_cast<float>(isovalues[k]);
+    }
+    impl.IsosurfaceTexture->SetContext(window);
+    impl.IsosurfaceTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.IsosurfaceTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.IsosurfaceTexture->Create2DFromRaw(count, 2, 4, VTK_FLOAT, texels.data());
+    impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
+  }
+  if (!impl.PsiTexture->GetHandle())
+  {
+    static const uv::PsiTable table; // computed once per process (about 0.4 s)
+    impl.PsiTexture->SetContext(window);
+    impl.PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+    impl.PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.PsiTexture->Create2DFromRaw(table.GetSize(), table.GetSize(), 1, VTK_FLOAT,
+      const_cast<float*>(table.GetValues().data()));
+  }
+  if (!impl.OrderOnGpu)
+  {
+    impl.OrderBuffer->Upload(impl.Order, vtkOpenGLBufferObject::ElementArrayBuffer);
+    impl.OrderOnGpu = true;
+  }
+  if (impl.ImageSize[0] != width || impl.ImageSize[1] != height)
+  {
+    impl.DepthTexture->SetContext(window);
+    impl.DepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
+    impl.ColorTexture->SetContext(window);
+    impl.ColorTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.ColorTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.ColorTexture->Allocate2D(width, height, 4, VTK_FLOAT);
+    impl.Framebuffer->SetContext(window);
+    impl.Framebuffer->SaveCurrentBindingsAndBuffers();
+    impl.Framebuffer->Bind();
+    impl.Framebuffer->AddColorAttachment(0, impl.ColorTexture);
+    impl.Framebuffer->ActivateDrawBuffers(1);
+    impl.Framebuffer->RestorePreviousBindingsAndBuffers();
+    impl.ImageSize[0] = width;
+    impl.ImageSize[1] = height;
+  }
+
+  // ---- The depth of what VTK drew so far (opaque geometry), from the current framebuffer.
+  GLint sampleBuffers = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+  if (sampleBuffers == 0)
+  {
+    impl.DepthTexture->CopyFromFrameBuffer(originX, originY, 0, 0, width, height);
+  }
+  else
+  {
+    // A multisampled framebuffer cannot be copied from directly; draw as if nothing were opaque.
+    if (!impl.WarnedMultisample)
+    {
+      vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
+      impl.WarnedMultisample = true;
+    }
+    std::vector<float> far(static_cast<std::size_t>(width) * height, 1.0f);
+    impl.DepthTexture->CreateDepthFromRaw(width, height, vtkTextureObject::Float32, VTK_FLOAT, far.data());
+  }
+
+  // ---- Project the tetrahedra into the float image, back to front.
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunctionSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+
+  impl.Framebuffer->SaveCurrentBindingsAndBuffers();
+  impl.Framebuffer->Bind();
+  impl.Framebuffer->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+
+  std::string defines = "//VTK::System::Dec\n";
+  if (needGradients)
+    defines += "#define UV_GRADIENTS\n";
+  auto withDefines = [&defines](const char* source) {
+    std::string text(source);
+    const std::string marker = "//VTK::System::Dec\n";
+    const auto at = text.find(marker);
+    if (at != std::string::npos)
+      text.replace(at, marker.size(), defines);
+    return text;
+  };
+  const std::string vertexSource = withDefines(uvPreIntegratedTetrahedraVS);
+  const std::string geometrySource = withDefines(uvPreIntegratedTetrahedraGS);
+  const std::string fragmentSource = withDefines(uvPreIntegratedTetrahedraFS);
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    vertexSource.c_str(), fragmentSource.c_str(), geometrySource.c_str());
+  if (!program)
+  {
+    impl.Framebuffer->RestorePreviousBindingsAndBuffers();
+    vtkErrorMacro("the projected-tetrahedra shaders failed to compile or link");
+    return;
+  }
+  auto setMatrix = [program](const char* name, const glm::dmat4& m) {
+    glm::mat4 single(m);
+    program->SetUniformMatrix4x4(name, glm::value_ptr(single));
+  };
+  setMatrix("modelToEye", modelToEye);
+  setMatrix("eyeToClip", eyeToClip);
+  setMatrix("clipToEye", glm::inverse(eyeToClip));
+  if (needGradients)
+  {
+    glm::mat3 normals(glm::transpose(glm::inverse(glm::dmat3(modelToEye))));
+    program->SetUniformMatrix3x3("modelToEyeNormals", glm::value_ptr(normals));
+  }
+  double clippingRange[2];
+  camera->GetClippingRange(clippingRange);
+  // A vertex nearer than half the near distance is too close to project safely.
+  program->SetUniformf("minimumClipW", parallel ? -1e30f : static_cast<float>(0.5 * clippingRange[0]));
+  program->SetUniformf("zeroTolerance", 1e-6f);
+  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
+  program->SetUniform2f("viewportSize", viewport);
+  program->SetUniformi("parallelProjection", parallel ? 1 : 0);
+  program->SetUniformi("averageScalar", this->IntegrationMode == AVERAGE_SCALAR ? 1 : 0);
+  program->SetUniformi("shadeVolume", shade ? 1 : 0);
+  program->SetUniformi("nodeCount", static_cast<int>(impl.Nodes.size()));
+  program->SetUniformi("isosurfaceCount", static_cast<int>(isovalues.size()));
+  program->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
+  program->SetUniformf("ambient", static_cast<float>(property->GetAmbient()));
+  program->SetUniformf("diffuse", static_cast<float>(property->GetDiffuse()));
+  program->SetUniformf("specular", static_cast<float>(property->GetSpecular()));
+  program->SetUniformf("specularPower", static_cast<float>(property->GetSpecularPower()));
+  // The first switched-on light, as a direction (towards it) in eye space; a headlight otherwise.
+  glm::dvec3 towardsLight(0.0, 0.0, 1.0), lightColor(1.0);
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  while (vtkLight* light = lights->GetNextItem())
+  {
+    if (!light->GetSwitch())
+      continue;
+    double position[3], focal[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    const glm::dvec3 world(position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]);
+    if (glm::length(world) > 0.0)
+      towardsLight = glm::normalize(glm::dmat3(worldToEye) * world);
+    lightColor = glm::dvec3(light->GetDiffuseColor()[0], light->GetDiffuseColor()[1], light->GetDiffuseColor()[2]) *
+      light->GetIntensity();
+    break;
+  }
+  const float lightDirection[3] = { static_cast<float>(towardsLight.x), static_cast<float>(towardsLight.y),
+    static_cast<float>(towardsLight.z) };
+  const float lightRgb[3] = { static_cast<float>(lightColor.r), static_cast<float>(lightColor.g),
+    static_cast<float>(lightColor.b) };
+  program->SetUniform3f("lightDirection", lightDirection);
+  program->SetUniform3f("lightColor", lightRgb);
+
+  std::vector<vtkTextureObject*> active = { impl.TetrahedronTexture, impl.PointTexture, impl.TransferTexture,
+    impl.IsosurfaceTexture, impl.PsiTexture, impl.DepthTexture };
+  if (needGradients)
+    active.push_back(impl.GradientTexture);
+  for (vtkTextureObject* texture : active)
+    texture->Activate();
+  program->SetUniformi("tetrahedronPoints", impl.TetrahedronTexture->GetTextureUnit());
+  program->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
+  program->SetUniformi("transferFunction", impl.TransferTexture->GetTextureUnit());
+  program->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
+  program->SetUniformi("psiTable", impl.PsiTexture->GetTextureUnit());
+  program->SetUniformi("opaqueDepth", impl.DepthTexture->GetTextureUnit());
+  if (needGradients)
+    program->SetUniformi("pointGradients", impl.GradientTexture->GetTextureUnit());
+
+  impl.NoAttributes->Bind();
+  impl.OrderBuffer->Bind();
+  glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.Order.size()), GL_UNSIGNED_INT, nullptr);
+  impl.OrderBuffer->Release();
+  impl.NoAttributes->Release();
+  for (vtkTextureObject* texture : active)
+    texture->Deactivate();
+  impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.size());
+
+  if (this->KeepFloatImage)
+  {
+    if (!impl.FloatImage)
+      impl.FloatImage = vtkSmartPointer<vtkImageData>::New();
+    impl.FloatImage->SetDimensions(width, height, 1);
+    impl.FloatImage->AllocateScalars(VTK_FLOAT, 4);
+    impl.Framebuffer->ActivateReadBuffer(0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, impl.FloatImage->GetScalarPointer());
+    impl.FloatImage->GetPointData()->GetScalars()->Modified();
+  }
+  impl.Framebuffer->RestorePreviousBindingsAndBuffers();
+
+  // ---- Blend the float image into VTK's scene.
+  state->vtkglViewport(originX, originY, width, height);
+  vtkShaderProgram* composite =
+    window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, uvCompositePremultipliedFS, "");
+  if (!composite)
+  {
+    vtkErrorMacro("the composite shaders failed to compile or link");
+    return;
+  }
+  impl.ColorTexture->Activate();
+  composite->SetUniformi("premultipliedImage", impl.ColorTexture->GetTextureUnit());
+  impl.NoAttributes->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  impl.NoAttributes->Release();
+  impl.ColorTexture->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed after rendering the tetrahedra");
+}

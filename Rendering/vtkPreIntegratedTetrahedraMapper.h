@@ -1,0 +1,129 @@
+/**
+ * @class vtkPreIntegratedTetrahedraMapper
+ * @brief GPU projected tetrahedra with partial pre-integration and isosurfaces.
+ *
+ * Renders a vtkUnstructuredGrid of tetrahedra with a point scalar by cell projection on the GPU,
+ * after "Volume and Isosurface Rendering with GPU-Accelerated Cell Projection" (Marroquim, Maximo,
+ * Farias, Esperanca). Each frame the CPU only sorts the visible tetrahedra (parallel radix sort of
+ * centroid distances, redone only when the camera or the data changed) and uploads that order; a
+ * geometry shader fed one point per tetrahedron classifies its projection (all classes, including
+ * the degenerate 3 and 4), finds the thick vertex and emits the triangle fan; the fragment shader
+ * integrates the ray segment and the result is composited back to front into a float image that is
+ * blended into VTK's scene, clipped at the depth of opaque geometry.
+ *
+ * Integration modes:
+ * - PARTIAL_PRE_INTEGRATION (default): the segment is cut where its scalar crosses a transfer-
+ *   function node and each piece is integrated with the Psi table of Moreland and Angel. This is the
+ *   exact integral of the project's optical model (uvOpticalModel.h) for a linear scalar, up to the
+ *   table's interpolation (about 2e-5) and float arithmetic. Editing the transfer function costs a
+ *   texture upload.
+ * - AVERAGE_SCALAR: the transfer function at the segment's mean scalar (the paper's basic mode).
+ *
+ * Isosurfaces (any number, each with a colour and opacity) are drawn on top of either mode, lit
+ * with the vtkVolumeProperty's ambient, diffuse, specular and specular power and the renderer's
+ * first light, the normal interpolated between the vertex gradients at the segment's ends. The
+ * gradients come from the point array named by GradientArrayName when the input has it, otherwise
+ * vtkVertexGradientFilter computes them once per data change. They are not computed at all when
+ * there is no isosurface and shading is off.
+ *
+ * Input: tetrahedra are drawn as they are; other linear 3D cells (hexahedra, voxels, wedges,
+ * pyramids) are split once by vtkHexahedraToTetrahedra, with a warning. Quadratic and other cells
+ * are an error (nothing drawn). The scalar must be a point array (cell scalars are an error: convert
+ * them with vtkCellDataToPointData); its first component is used. Tetrahedra touching a NaN scalar
+ * are not drawn (one warning). An empty grid draws nothing.
+ *
+ * Tetrahedra whose whole scalar range has zero opacity and holds no isovalue are never drawn; the
+ * list of the rest is rebuilt only when a transfer-function edit changes the zero-opacity set.
+ */
+#ifndef vtkPreIntegratedTetrahedraMapper_h
+#define vtkPreIntegratedTetrahedraMapper_h
+
+#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkUnstructuredVolumeModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkImageData;
+
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkPreIntegratedTetrahedraMapper : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  static vtkPreIntegratedTetrahedraMapper* New();
+  vtkTypeMacro(vtkPreIntegratedTetrahedraMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum IntegrationModes
+  {
+    AVERAGE_SCALAR = 0,
+    PARTIAL_PRE_INTEGRATION = 1
+  };
+  ///@{
+  /// How a segment's colour is integrated (see the class description).
+  vtkSetClampMacro(IntegrationMode, int, AVERAGE_SCALAR, PARTIAL_PRE_INTEGRATION);
+  vtkGetMacro(IntegrationMode, int);
+  void SetIntegrationModeToAverageScalar() { this->SetIntegrationMode(AVERAGE_SCALAR); }
+  void SetIntegrationModeToPartialPreIntegration() { this->SetIntegrationMode(PARTIAL_PRE_INTEGRATION); }
+  ///@}
+
+  ///@{
+  /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each.
+  void AddIsosurface(double value, double red, double green, double blue, double opacity);
+  void RemoveAllIsosurfaces();
+  int GetNumberOfIsosurfaces();
+  ///@}
+
+  ///@{
+  /// A point array of scalar gradients to shade with. When the input has no array of this name
+  /// (default "Gradients"), vtkVertexGradientFilter computes one.
+  vtkSetStringMacro(GradientArrayName);
+  vtkGetStringMacro(GradientArrayName);
+  ///@}
+
+  ///@{
+  /// Leave out tetrahedra the transfer function makes invisible (default on). Off draws every
+  /// tetrahedron, for measuring what the skipping saves.
+  vtkSetMacro(SkipInvisibleCells, bool);
+  vtkGetMacro(SkipInvisibleCells, bool);
+  vtkBooleanMacro(SkipInvisibleCells, bool);
+  ///@}
+
+  ///@{
+  /// Keep a copy of the last frame's premultiplied float RGBA image (for accuracy tests and the
+  /// benchmark; costs a read-back per frame). GetFloatImage returns it, or null.
+  vtkSetMacro(KeepFloatImage, bool);
+  vtkGetMacro(KeepFloatImage, bool);
+  vtkImageData* GetFloatImage();
+  ///@}
+
+  ///@{
+  /// What the last frames did, for tests: tetrahedra drawn in the last frame, visibility sorts,
+  /// gradient computations, uploads of the mesh and of the transfer function, visible-list builds.
+  vtkIdType GetNumberOfDrawnTetrahedra();
+  int GetNumberOfSorts();
+  int GetNumberOfGradientComputations();
+  int GetNumberOfMeshUploads();
+  int GetNumberOfTransferFunctionUploads();
+  int GetNumberOfVisibleListBuilds();
+  ///@}
+
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkPreIntegratedTetrahedraMapper();
+  ~vtkPreIntegratedTetrahedraMapper() override;
+
+  int IntegrationMode = PARTIAL_PRE_INTEGRATION;
+  char* GradientArrayName = nullptr;
+  bool SkipInvisibleCells = true;
+  bool KeepFloatImage = false;
+
+private:
+  vtkPreIntegratedTetrahedraMapper(const vtkPreIntegratedTetrahedraMapper&) = delete;
+  void operator=(const vtkPreIntegratedTetrahedraMapper&) = delete;
+
+  class Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif

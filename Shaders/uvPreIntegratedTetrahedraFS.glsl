@@ -1,0 +1,269 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+// vtkPreIntegratedTetrahedraMapper, fragment stage: the ray segment through one tetrahedron, from
+// its front to its back face, integrated and written premultiplied (blended back to front with
+// ONE, ONE_MINUS_SRC_ALPHA into a float image).
+//
+// The scalar is linear along the segment. PartialPreIntegration cuts the segment where the scalar
+// crosses a transfer-function node, so extinction and colour are linear on each piece, and
+// integrates each piece exactly with the Psi table (uvPreIntegration.h is the CPU twin). AverageScalar
+// uses the transfer function at the mean scalar for the whole segment (the paper's basic mode).
+// Isosurfaces are further cuts: at each one the segment composites the surface's colour, lit
+// (Phong) with the gradient interpolated between the front and back points.
+noperspective in vec4 frontOverW;
+noperspective in float frontInverseW;
+noperspective in vec4 backOverW;
+noperspective in float backInverseW;
+#ifdef UV_GRADIENTS
+noperspective in vec3 frontGradientOverW;
+noperspective in vec3 backGradientOverW;
+flat in vec4 gradientRows[3];
+#endif
+flat in int rayCast;
+flat in vec4 facePlanes[4];
+flat in vec4 scalarPlane;
+
+uniform sampler2D transferFunction; // nodes: row 0 (r, g, b, extinction), row 1 (normalised scalar)
+uniform int nodeCount;
+uniform sampler2D isosurfaces;      // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
+uniform int isosurfaceCount;
+uniform sampler2D psiTable;         // Psi over gamma = sqrt(x) / (1 + sqrt(x)), both axes
+uniform float psiTableSize;
+uniform sampler2D opaqueDepth;      // the scene's depth buffer before the volume
+uniform mat4 clipToEye;
+uniform vec2 viewportSize;
+uniform int parallelProjection;
+uniform int averageScalar;          // 1: the paper's basic mode
+uniform int shadeVolume;            // 1: light the volume's colours too (vtkVolumeProperty::Shade)
+uniform vec3 lightDirection;        // eye space, towards the light
+uniform vec3 lightColor;
+uniform float ambient;
+uniform float diffuse;
+uniform float specular;
+uniform float specularPower;
+
+const float psiSeriesLimit = 1e-2; // as uv::PsiSeriesLimit
+
+struct Sample
+{
+  vec3 color;
+  float extinction;
+};
+
+float NodeScalar(int k)
+{
+  return texelFetch(transferFunction, ivec2(k, 1), 0).r;
+}
+
+/// Number of nodes with scalar <= s (binary search).
+int NodesAtOrBelow(float s)
+{
+  int low = 0, high = nodeCount; // answer in [low, high]
+  while (low < high)
+  {
+    int middle = (low + high) / 2;
+    if (NodeScalar(middle) <= s)
+      low = middle + 1;
+    else
+      high = middle;
+  }
+  return low;
+}
+
+/// The transfer function at s: linear between nodes, constant beyond the ends.
+Sample Evaluate(float s)
+{
+  int above = NodesAtOrBelow(s);
+  if (above == 0)
+  {
+    vec4 n = texelFetch(transferFunction, ivec2(0, 0), 0);
+    return Sample(n.rgb, n.a);
+  }
+  if (above >= nodeCount)
+  {
+    vec4 n = texelFetch(transferFunction, ivec2(nodeCount - 1, 0), 0);
+    return Sample(n.rgb, n.a);
+  }
+  float s0 = NodeScalar(above - 1), s1 = NodeScalar(above);
+  vec4 n0 = texelFetch(transferFunction, ivec2(above - 1, 0), 0);
+  vec4 n1 = texelFetch(transferFunction, ivec2(above, 0), 0);
+  vec4 n = mix(n0, n1, s1 > s0 ? (s - s0) / (s1 - s0) : 0.0);
+  return Sample(n.rgb, n.a);
+}
+
+float Psi(float a, float b)
+{
+  if (a + b < psiSeriesLimit)
+  {
+    float k = b - a;
+    return 1.0 - (a / 2.0 + k / 6.0) + 0.5 * (a * a / 3.0 + a * k / 4.0 + k * k / 20.0);
+  }
+  vec2 root = sqrt(vec2(a, b));
+  vec2 gamma = root / (1.0 + root);
+  return texture(psiTable, (gamma * (psiTableSize - 1.0) + 0.5) / psiTableSize).r;
+}
+
+vec3 Light(vec3 color, vec3 gradient, vec3 toEye)
+{
+  float length2 = dot(gradient, gradient);
+  if (!(length2 > 0.0))
+  {
+    return color * (ambient + diffuse); // no direction to light by: as if facing the light
+  }
+  vec3 n = gradient * inversesqrt(length2);
+  n = dot(n, toEye) < 0.0 ? -n : n; // two-sided
+  float lambert = max(dot(n, lightDirection), 0.0);
+  vec3 reflected = reflect(-lightDirection, n);
+  float highlight = lambert > 0.0 ? pow(max(dot(reflected, toEye), 0.0), specularPower) : 0.0;
+  return color * (ambient + diffuse * lambert) * lightColor + specular * highlight * lightColor;
+}
+
+vec4 result = vec4(0.0); // premultiplied colour, front to back within this fragment
+float transmittance = 1.0;
+
+void CompositePiece(Sample front, Sample back, float pieceLength)
+{
+  float a = front.extinction * pieceLength, b = back.extinction * pieceLength;
+  if (!(a + b > 0.0))
+  {
+    return;
+  }
+  float psi = Psi(a, b);
+  float zeta = exp(-0.5 * (a + b));
+  vec3 color = front.color * (1.0 - psi) + back.color * (psi - zeta);
+  result.rgb += transmittance * color;
+  transmittance *= zeta;
+}
+
+void main()
+{
+  vec3 frontPoint, backPoint;
+  float frontScalar, backScalar;
+  vec3 frontGradient = vec3(0.0), backGradient = vec3(0.0);
+  vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
+  if (rayCast == 1)
+  {
+    // The eye ray through this pixel against the four faces.
+    vec4 nearPoint = clipToEye * vec4(ndc, -1.0, 1.0);
+    nearPoint /= nearPoint.w;
+    vec3 origin = parallelProjection == 1 ? vec3(nearPoint.xy, 0.0) : vec3(0.0);
+    vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : normalize(nearPoint.xyz);
+    float enter = 0.0, leave = 3.0e38;
+    for (int k = 0; k < 4; ++k)
+    {
+      float along = dot(facePlanes[k].xyz, direction);
+      float at = dot(facePlanes[k].xyz, origin) + facePlanes[k].w;
+      if (along < 0.0)
+        enter = max(enter, -at / along);
+      else if (along > 0.0)
+        leave = min(leave, -at / along);
+      else if (at > 0.0)
+        discard;
+    }
+    if (!(enter < leave))
+    {
+      discard;
+    }
+    frontPoint = origin + enter * direction;
+    backPoint = origin + leave * direction;
+    frontScalar = dot(scalarPlane.xyz, frontPoint) + scalarPlane.w;
+    backScalar = dot(scalarPlane.xyz, backPoint) + scalarPlane.w;
+#ifdef UV_GRADIENTS
+    for (int row = 0; row < 3; ++row)
+    {
+      frontGradient[row] = dot(gradientRows[row].xyz, frontPoint) + gradientRows[row].w;
+      backGradient[row] = dot(gradientRows[row].xyz, backPoint) + gradientRows[row].w;
+    }
+#endif
+  }
+  else
+  {
+    vec4 front = frontOverW / frontInverseW, back = backOverW / backInverseW;
+    frontPoint = front.xyz;
+    backPoint = back.xyz;
+    frontScalar = front.w;
+    backScalar = back.w;
+#ifdef UV_GRADIENTS
+    frontGradient = frontGradientOverW / frontInverseW;
+    backGradient = backGradientOverW / backInverseW;
+#endif
+  }
+
+  // Opaque geometry: nothing behind it; a segment it cuts ends there.
+  float depth = texelFetch(opaqueDepth, ivec2(gl_FragCoord.xy), 0).r;
+  vec4 opaque = clipToEye * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+  float opaqueZ = opaque.z / opaque.w;
+  if (frontPoint.z <= opaqueZ)
+  {
+    discard;
+  }
+  if (backPoint.z < opaqueZ)
+  {
+    float u = (frontPoint.z - opaqueZ) / (frontPoint.z - backPoint.z);
+    backPoint = mix(frontPoint, backPoint, u);
+    backScalar = mix(frontScalar, backScalar, u);
+    backGradient = mix(frontGradient, backGradient, u);
+  }
+  float segmentLength = distance(frontPoint, backPoint);
+  vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-frontPoint);
+
+  // Walk the cuts from front to back: nodes strictly between the end scalars, isovalues within.
+  float span = backScalar - frontScalar;
+  bool rising = span >= 0.0;
+  int node = rising ? NodesAtOrBelow(frontScalar) : NodesAtOrBelow(frontScalar) - 1;
+  // Skip a node exactly at the front scalar when falling (it is not strictly inside).
+  if (!rising && node >= 0 && NodeScalar(node) >= frontScalar)
+    node--;
+  int iso = rising ? 0 : isosurfaceCount - 1;
+  while (iso >= 0 && iso < isosurfaceCount)
+  {
+    float v = texelFetch(isosurfaces, ivec2(iso, 1), 0).r;
+    if (rising ? v >= frontScalar : v <= frontScalar)
+      break;
+    iso += rising ? 1 : -1;
+  }
+  Sample constant = Evaluate(0.5 * (frontScalar + backScalar));
+  Sample previous = averageScalar == 1 ? constant : Evaluate(frontScalar);
+  if (shadeVolume == 1 && averageScalar == 0)
+    previous.color = Light(previous.color, frontGradient, toEye);
+  float previousFraction = 0.0;
+  for (int guard = 0; guard < nodeCount + isosurfaceCount + 1; ++guard)
+  {
+    float nodeValue = (averageScalar == 0 && node >= 0 && node < nodeCount) ? NodeScalar(node) : backScalar;
+    bool nodeInside = rising ? nodeValue < backScalar : nodeValue > backScalar;
+    float isoValue = (iso >= 0 && iso < isosurfaceCount) ? texelFetch(isosurfaces, ivec2(iso, 1), 0).r : backScalar;
+    bool isoInside = iso >= 0 && iso < isosurfaceCount && (rising ? isoValue <= backScalar : isoValue >= backScalar);
+    bool takeIso = isoInside && (!nodeInside || (rising ? isoValue <= nodeValue : isoValue >= nodeValue));
+    float cut = takeIso ? isoValue : (nodeInside ? nodeValue : backScalar);
+    float fraction = span != 0.0 ? clamp((cut - frontScalar) / span, 0.0, 1.0) : 1.0;
+    Sample next = averageScalar == 1 ? constant : Evaluate(cut);
+    vec3 gradientHere = mix(frontGradient, backGradient, fraction);
+    if (shadeVolume == 1 && averageScalar == 0)
+      next.color = Light(next.color, gradientHere, toEye);
+    CompositePiece(previous, next, segmentLength * (fraction - previousFraction));
+    previous = next;
+    previousFraction = fraction;
+    if (takeIso)
+    {
+      vec4 surface = texelFetch(isosurfaces, ivec2(iso, 0), 0);
+      vec3 lit = Light(surface.rgb, gradientHere, toEye);
+      result.rgb += transmittance * surface.a * lit;
+      transmittance *= 1.0 - surface.a;
+      iso += rising ? 1 : -1;
+    }
+    else if (nodeInside)
+    {
+      node += rising ? 1 : -1;
+    }
+    else
+    {
+      break;
+    }
+  }
+  result.a = 1.0 - transmittance;
+  if (!(result.a > 0.0))
+  {
+    discard;
+  }
+  gl_FragData[0] = result;
+}
