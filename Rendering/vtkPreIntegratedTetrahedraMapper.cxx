@@ -2,7 +2,9 @@
 
 #include "uvPreIntegratedTetrahedraFS.h"
 #include "uvPreIntegratedTetrahedraGS.h"
+#include "uvPreIntegratedTetrahedraPullVS.h"
 #include "uvPreIntegratedTetrahedraVS.h"
+#include "uvProjectedTetrahedronLib.h"
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvPreIntegration.h"
@@ -127,12 +129,15 @@ public:
 
   // GPU state, for one context.
   vtkOpenGLRenderWindow* Context = nullptr;
-  vtkNew<vtkOpenGLBufferObject> TetrahedronBuffer, PointBuffer, GradientBuffer, OrderBuffer;
+  vtkNew<vtkOpenGLBufferObject> TetrahedronBuffer, PointBuffer, GradientBuffer, OrderBuffer, OrderTexelBuffer,
+    FanIndexBuffer;
+  std::size_t FanIndexCount = 0; // tetrahedra the fan index buffer covers
   vtkNew<vtkTextureObject> TetrahedronTexture, PointTexture, GradientTexture, TransferTexture, IsosurfaceTexture,
-    PsiTexture, DepthTexture, ColorTexture;
+    PsiTexture, DepthTexture, ColorTexture, OrderTexture;
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
   bool MeshOnGpu = false, GradientsOnGpu = false, TransferFunctionOnGpu = false, OrderOnGpu = false;
+  int OrderRoute = -1; // the route the uploaded order is for
   int ImageSize[2] = { 0, 0 };
 
   vtkSmartPointer<vtkImageData> FloatImage;
@@ -146,12 +151,12 @@ public:
     {
       for (vtkTextureObject* texture : { this->TetrahedronTexture.Get(), this->PointTexture.Get(),
              this->GradientTexture.Get(), this->TransferTexture.Get(), this->IsosurfaceTexture.Get(),
-             this->PsiTexture.Get(), this->DepthTexture.Get(), this->ColorTexture.Get() })
+             this->PsiTexture.Get(), this->DepthTexture.Get(), this->ColorTexture.Get(), this->OrderTexture.Get() })
       {
         texture->ReleaseGraphicsResources(this->Context);
       }
       for (vtkOpenGLBufferObject* buffer : { this->TetrahedronBuffer.Get(), this->PointBuffer.Get(),
-             this->GradientBuffer.Get(), this->OrderBuffer.Get() })
+             this->GradientBuffer.Get(), this->OrderBuffer.Get(), this->OrderTexelBuffer.Get(), this->FanIndexBuffer.Get() })
       {
         buffer->ReleaseGraphicsResources();
       }
@@ -161,6 +166,7 @@ public:
     this->Context = nullptr;
     this->MeshOnGpu = this->GradientsOnGpu = this->TransferFunctionOnGpu = this->OrderOnGpu = false;
     this->UploadedIsosurfaceTime = 0;
+    this->FanIndexCount = 0;
     this->ImageSize[0] = this->ImageSize[1] = 0;
   }
 };
@@ -692,10 +698,40 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     impl.PsiTexture->Create2DFromRaw(table.GetSize(), table.GetSize(), 1, VTK_FLOAT,
       const_cast<float*>(table.GetValues().data()));
   }
-  if (!impl.OrderOnGpu)
+  const bool pulling = this->ProjectionRoute == VERTEX_PULLING;
+  if (!impl.OrderOnGpu || impl.OrderRoute != this->ProjectionRoute)
   {
-    impl.OrderBuffer->Upload(impl.Order, vtkOpenGLBufferObject::ElementArrayBuffer);
+    if (pulling)
+    {
+      impl.OrderTexelBuffer->Upload(impl.Order, vtkOpenGLBufferObject::TextureBuffer);
+      impl.OrderTexture->SetContext(window);
+      impl.OrderTexture->SetInternalFormat(GL_R32UI);
+      impl.OrderTexture->CreateTextureBuffer(
+        static_cast<unsigned int>(impl.Order.size()), 1, VTK_UNSIGNED_INT, impl.OrderTexelBuffer);
+    }
+    else
+    {
+      impl.OrderBuffer->Upload(impl.Order, vtkOpenGLBufferObject::ElementArrayBuffer);
+    }
     impl.OrderOnGpu = true;
+    impl.OrderRoute = this->ProjectionRoute;
+  }
+  if (pulling && impl.FanIndexCount < impl.Order.size())
+  {
+    // Fixed for a given count: triangle t of the tetrahedron in place q is (5q+4, 5q+t, 5q+(t+1)%4).
+    const std::size_t n = impl.Order.size();
+    std::vector<std::uint32_t> indices(12 * n);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType q = begin; q < end; ++q)
+        for (int t = 0; t < 4; ++t)
+        {
+          indices[12 * q + 3 * t + 0] = static_cast<std::uint32_t>(5 * q + 4);
+          indices[12 * q + 3 * t + 1] = static_cast<std::uint32_t>(5 * q + t);
+          indices[12 * q + 3 * t + 2] = static_cast<std::uint32_t>(5 * q + (t + 1) % 4);
+        }
+    });
+    impl.FanIndexBuffer->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
+    impl.FanIndexCount = n;
   }
   if (impl.ImageSize[0] != width || impl.ImageSize[1] != height)
   {
@@ -768,8 +804,16 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
       text.replace(at, marker.size(), defines);
     return text;
   };
-  const std::string vertexSource = withDefines(uvPreIntegratedTetrahedraVS);
-  const std::string geometrySource = withDefines(uvPreIntegratedTetrahedraGS);
+  auto withProjection = [](std::string text) {
+    const std::string marker = "//UV::ProjectedTetrahedron\n";
+    const auto at = text.find(marker);
+    if (at != std::string::npos)
+      text.replace(at, marker.size(), uvProjectedTetrahedronLib);
+    return text;
+  };
+  const std::string vertexSource =
+    withProjection(withDefines(pulling ? uvPreIntegratedTetrahedraPullVS : uvPreIntegratedTetrahedraVS));
+  const std::string geometrySource = pulling ? std::string() : withProjection(withDefines(uvPreIntegratedTetrahedraGS));
   const std::string fragmentSource = withDefines(uvPreIntegratedTetrahedraFS);
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vertexSource.c_str(), fragmentSource.c_str(), geometrySource.c_str());
@@ -837,6 +881,8 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     impl.IsosurfaceTexture, impl.PsiTexture, impl.DepthTexture };
   if (needGradients)
     active.push_back(impl.GradientTexture);
+  if (pulling)
+    active.push_back(impl.OrderTexture);
   for (vtkTextureObject* texture : active)
     texture->Activate();
   program->SetUniformi("tetrahedronPoints", impl.TetrahedronTexture->GetTextureUnit());
@@ -849,9 +895,19 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     program->SetUniformi("pointGradients", impl.GradientTexture->GetTextureUnit());
 
   impl.NoAttributes->Bind();
-  impl.OrderBuffer->Bind();
-  glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.Order.size()), GL_UNSIGNED_INT, nullptr);
-  impl.OrderBuffer->Release();
+  if (pulling)
+  {
+    program->SetUniformi("drawOrder", impl.OrderTexture->GetTextureUnit());
+    impl.FanIndexBuffer->Bind();
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(12 * impl.Order.size()), GL_UNSIGNED_INT, nullptr);
+    impl.FanIndexBuffer->Release();
+  }
+  else
+  {
+    impl.OrderBuffer->Bind();
+    glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.Order.size()), GL_UNSIGNED_INT, nullptr);
+    impl.OrderBuffer->Release();
+  }
   impl.NoAttributes->Release();
   for (vtkTextureObject* texture : active)
     texture->Deactivate();

@@ -5,9 +5,10 @@
  * Renders a vtkUnstructuredGrid of tetrahedra with a point scalar by cell projection on the GPU,
  * after "Volume and Isosurface Rendering with GPU-Accelerated Cell Projection" (Marroquim, Maximo,
  * Farias, Esperanca). Each frame the CPU only sorts the visible tetrahedra (parallel radix sort of
- * centroid distances, redone only when the camera or the data changed) and uploads that order; a
- * geometry shader fed one point per tetrahedron classifies its projection (all classes, including
- * the degenerate 3 and 4), finds the thick vertex and emits the triangle fan; the fragment shader
+ * centroid distances, redone only when the camera or the data changed) and uploads that order; on
+ * the GPU each tetrahedron's projection is classified (all classes, including the degenerate 3 and
+ * 4), its thick vertex found and its triangle fan emitted (by a vertex shader pulling 12 vertices per
+ * tetrahedron, or by a geometry shader fed one point per tetrahedron); the fragment shader
  * integrates the ray segment and the result is composited back to front into a float image that is
  * blended into VTK's scene, clipped at the depth of opaque geometry.
  *
@@ -65,6 +66,23 @@ public:
   void SetIntegrationModeToPartialPreIntegration() { this->SetIntegrationMode(PARTIAL_PRE_INTEGRATION); }
   ///@}
 
+  enum ProjectionRoutes
+  {
+    VERTEX_PULLING = 0,
+    GEOMETRY_SHADER = 1
+  };
+  ///@{
+  /// How tetrahedra become triangle fans on the GPU. VERTEX_PULLING (default): 5 vertex slots per
+  /// tetrahedron (outline and thick vertex) under a fixed index buffer of 4 triangles each, every
+  /// vertex shader invocation projecting its tetrahedron.
+  /// GEOMETRY_SHADER: one point per tetrahedron, a geometry shader emitting the fan (the paper's
+  /// route). Same image; the benchmark compares their speed (llvmpipe runs geometry shaders slowly).
+  vtkSetClampMacro(ProjectionRoute, int, VERTEX_PULLING, GEOMETRY_SHADER);
+  vtkGetMacro(ProjectionRoute, int);
+  void SetProjectionRouteToVertexPulling() { this->SetProjectionRoute(VERTEX_PULLING); }
+  void SetProjectionRouteToGeometryShader() { this->SetProjectionRoute(GEOMETRY_SHADER); }
+  ///@}
+
   ///@{
   /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each.
   void AddIsosurface(double value, double red, double green, double blue, double opacity);
@@ -114,6 +132,7 @@ protected:
   ~vtkPreIntegratedTetrahedraMapper() override;
 
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
+  int ProjectionRoute = VERTEX_PULLING;
   char* GradientArrayName = nullptr;
   bool SkipInvisibleCells = true;
   bool KeepFloatImage = false;

@@ -10,19 +10,19 @@
 // uses the transfer function at the mean scalar for the whole segment (the paper's basic mode).
 // Isosurfaces are further cuts: at each one the segment composites the surface's colour, lit
 // (Phong) with the gradient interpolated between the front and back points.
-noperspective in vec4 frontOverW;
-noperspective in float frontInverseW;
-noperspective in vec4 backOverW;
-noperspective in float backInverseW;
+noperspective in vec3 frontData; // (scalar, eye z, 1) / w on the front surface
+noperspective in vec3 backData;
 #ifdef UV_GRADIENTS
 noperspective in vec3 frontGradientOverW;
 noperspective in vec3 backGradientOverW;
-flat in vec4 gradientRows[3];
+uniform samplerBuffer pointGradients;
+uniform mat3 modelToEyeNormals;
 #endif
-flat in int rayCast;
-flat in vec4 facePlanes[4];
-flat in vec4 scalarPlane;
+flat in int rayCastTetrahedron;  // >= 0: intersect the eye ray with this tetrahedron here
 
+uniform usamplerBuffer tetrahedronPoints;
+uniform samplerBuffer pointData;
+uniform mat4 modelToEye;
 uniform sampler2D transferFunction; // nodes: row 0 (r, g, b, extinction), row 1 (normalised scalar)
 uniform int nodeCount;
 uniform sampler2D isosurfaces;      // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
@@ -141,18 +141,37 @@ void main()
   float frontScalar, backScalar;
   vec3 frontGradient = vec3(0.0), backGradient = vec3(0.0);
   vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
-  if (rayCast == 1)
+  // This pixel's eye ray: through nearPoint, from the eye (perspective) or along -z (parallel).
+  vec4 nearPoint = clipToEye * vec4(ndc, -1.0, 1.0);
+  nearPoint /= nearPoint.w;
+  vec3 origin = parallelProjection == 1 ? vec3(nearPoint.xy, 0.0) : vec3(0.0);
+  vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : nearPoint.xyz / -nearPoint.z;
+  if (rayCastTetrahedron >= 0)
   {
-    // The eye ray through this pixel against the four faces.
-    vec4 nearPoint = clipToEye * vec4(ndc, -1.0, 1.0);
-    nearPoint /= nearPoint.w;
-    vec3 origin = parallelProjection == 1 ? vec3(nearPoint.xy, 0.0) : vec3(0.0);
-    vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : normalize(nearPoint.xyz);
-    float enter = 0.0, leave = 3.0e38;
+    // A tetrahedron too near to project: intersect the ray with its four faces.
+    uvec4 ids = texelFetch(tetrahedronPoints, rayCastTetrahedron);
+    vec3 p[4];
+    float s[4];
+    vec3 g[4];
     for (int k = 0; k < 4; ++k)
     {
-      float along = dot(facePlanes[k].xyz, direction);
-      float at = dot(facePlanes[k].xyz, origin) + facePlanes[k].w;
+      vec4 data = texelFetch(pointData, int(ids[k]));
+      p[k] = (modelToEye * vec4(data.xyz, 1.0)).xyz;
+      s[k] = data.w;
+#ifdef UV_GRADIENTS
+      g[k] = modelToEyeNormals * texelFetch(pointGradients, int(ids[k])).xyz;
+#else
+      g[k] = vec3(0.0);
+#endif
+    }
+    float enter = 0.0, leave = 3.0e38; // ray parameter: eye z distance (direction.z = -1)
+    for (int k = 0; k < 4; ++k)
+    {
+      vec3 a = p[(k + 1) % 4], b = p[(k + 2) % 4], c = p[(k + 3) % 4];
+      vec3 n = cross(b - a, c - a);
+      n = dot(n, p[k] - a) > 0.0 ? -n : n; // outward
+      float along = dot(n, direction);
+      float at = dot(n, origin - a);
       if (along < 0.0)
         enter = max(enter, -at / along);
       else if (along > 0.0)
@@ -166,26 +185,27 @@ void main()
     }
     frontPoint = origin + enter * direction;
     backPoint = origin + leave * direction;
-    frontScalar = dot(scalarPlane.xyz, frontPoint) + scalarPlane.w;
-    backScalar = dot(scalarPlane.xyz, backPoint) + scalarPlane.w;
-#ifdef UV_GRADIENTS
-    for (int row = 0; row < 3; ++row)
-    {
-      frontGradient[row] = dot(gradientRows[row].xyz, frontPoint) + gradientRows[row].w;
-      backGradient[row] = dot(gradientRows[row].xyz, backPoint) + gradientRows[row].w;
-    }
-#endif
+    // Barycentric weights of both points give scalar and gradient.
+    mat3 edges = mat3(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
+    mat3 toLocal = inverse(edges);
+    vec3 lf = toLocal * (frontPoint - p[0]), lb = toLocal * (backPoint - p[0]);
+    vec4 wf = vec4(1.0 - lf.x - lf.y - lf.z, lf), wb = vec4(1.0 - lb.x - lb.y - lb.z, lb);
+    frontScalar = dot(wf, vec4(s[0], s[1], s[2], s[3]));
+    backScalar = dot(wb, vec4(s[0], s[1], s[2], s[3]));
+    frontGradient = wf.x * g[0] + wf.y * g[1] + wf.z * g[2] + wf.w * g[3];
+    backGradient = wb.x * g[0] + wb.y * g[1] + wb.z * g[2] + wb.w * g[3];
   }
   else
   {
-    vec4 front = frontOverW / frontInverseW, back = backOverW / backInverseW;
-    frontPoint = front.xyz;
-    backPoint = back.xyz;
-    frontScalar = front.w;
-    backScalar = back.w;
+    // Each surface's (scalar, z, 1) / w interpolates linearly on screen: divide back out.
+    frontScalar = frontData.x / frontData.z;
+    backScalar = backData.x / backData.z;
+    float frontZ = frontData.y / frontData.z, backZ = backData.y / backData.z;
+    frontPoint = origin + -frontZ * direction;
+    backPoint = origin + -backZ * direction;
 #ifdef UV_GRADIENTS
-    frontGradient = frontGradientOverW / frontInverseW;
-    backGradient = backGradientOverW / backInverseW;
+    frontGradient = frontGradientOverW / frontData.z;
+    backGradient = backGradientOverW / backData.z;
 #endif
   }
 
