@@ -86,17 +86,44 @@ def camera_for(mesh, azimuth=30.0, elevation=25.0, parallel=False, distance=2.6)
     return camera
 
 
+OPEN_SCENES = []
+SHARED_WINDOW = []
+
+
+def shared_window():
+    """One off-screen window for every scene of this module: creating one per scene aborted inside
+    vtkXOpenGLRenderWindow::CreateAWindow now and then under Xvfb."""
+    if not SHARED_WINDOW:
+        window = vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetAlphaBitPlanes(1)
+        window.SetMultiSamples(0)
+        SHARED_WINDOW.append(window)
+    return SHARED_WINDOW[0]
+
+
+class SceneTestCase(unittest.TestCase):
+    """Frees the GPU resources of the scenes a test made and takes their renderers out."""
+
+    def tearDown(self):
+        while OPEN_SCENES:
+            scene = OPEN_SCENES.pop()
+            scene.mapper.ReleaseGraphicsResources(scene.window)
+            scene.window.RemoveRenderer(scene.renderer)
+
+
 class Scene:
     """One mapper in an off-screen window with a transparent black background."""
 
     def __init__(self, mesh, prop, camera, size=128, props=(), **settings):
+        OPEN_SCENES.append(self)
+        self.size = size
         self.renderer = vtkRenderer()
         self.renderer.SetBackground(0, 0, 0)
         self.renderer.SetBackgroundAlpha(0.0)
-        self.window = vtkRenderWindow()
-        self.window.SetOffScreenRendering(1)
-        self.window.SetAlphaBitPlanes(1)
-        self.window.SetMultiSamples(0)
+        self.window = shared_window()
+        for other in OPEN_SCENES[:-1]:
+            self.window.RemoveRenderer(other.renderer)  # one scene shows at a time
         self.window.SetSize(size, size)
         self.window.AddRenderer(self.renderer)
         self.mapper = vtkPreIntegratedTetrahedraMapper()
@@ -115,6 +142,11 @@ class Scene:
         self.window_events = Events(self.window)
 
     def render(self):
+        renderers = self.window.GetRenderers()
+        if not renderers.IsItemPresent(self.renderer):
+            renderers.RemoveAllItems()
+            self.window.AddRenderer(self.renderer)
+        self.window.SetSize(self.size, self.size)
         self.window.Render()
         return self.mapper.GetFloatImage()
 
@@ -145,7 +177,7 @@ def finite_image(image):
     return True
 
 
-class AccuracyTests(unittest.TestCase):
+class AccuracyTests(SceneTestCase):
     """Against the exact reference, on the float image before it is quantised into the window."""
 
     def check(self, mesh, prop, camera, size, bound, **settings):
@@ -215,7 +247,7 @@ class AccuracyTests(unittest.TestCase):
         self.check(mesh, prop, camera, 96, 5e-3)
 
 
-class BaselineTests(unittest.TestCase):
+class BaselineTests(SceneTestCase):
     def compare(self, window, name):
         baseline = os.path.join(uvrender.BASELINES, name)
         candidate = os.path.join(OUTPUT, name)
@@ -306,7 +338,7 @@ class BaselineTests(unittest.TestCase):
         self.compare(scene.window, "preintegrated_lox_isosurface_parallel.png")
 
 
-class SkippingTests(unittest.TestCase):
+class SkippingTests(SceneTestCase):
     def test_work_is_not_repeated(self):
         mesh = analytic(5)
         low, high = mesh.GetPointData().GetScalars().GetRange()
@@ -355,7 +387,7 @@ def vtkImageDataCopy(image):
     return copy
 
 
-class InputTests(unittest.TestCase):
+class InputTests(SceneTestCase):
     def scene(self, mesh, prop=None):
         prop = prop or uvrender.volume_property((0.0, 1.0))
         return Scene(mesh, prop, camera_for(analytic(2)), 48)
@@ -411,7 +443,7 @@ class InputTests(unittest.TestCase):
         self.assertTrue(finite_image(image))
 
 
-class StressTests(unittest.TestCase):
+class StressTests(SceneTestCase):
     """Degenerate geometry and extreme views: finite output, no error (GL errors are reported as
     errors by the mapper)."""
 
