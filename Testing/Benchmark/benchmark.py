@@ -25,8 +25,9 @@ import statistics
 import sys
 import time
 
-from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra, vtkPreIntegratedTetrahedraMapper,
                                 vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
+from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkTable
@@ -61,7 +62,21 @@ MAPPERS = [
     ("VTK ProjectedTetrahedra", vtkProjectedTetrahedraMapper, True),
     ("VTK UGVolumeRayCast", vtkUnstructuredGridVolumeRayCastMapper, True),
     ("VTK UGZSweep", vtkUnstructuredGridVolumeZSweepMapper, True),
+    ("UV PreIntegratedTetrahedra", vtkPreIntegratedTetrahedraMapper, True),
+    ("UV PreIntegrated (geometry shader)", lambda: configured(vtkPreIntegratedTetrahedraMapper,
+                                                             ProjectionRouteToGeometryShader=None), True),
+    ("UV AverageScalarTetrahedra", lambda: configured(vtkPreIntegratedTetrahedraMapper,
+                                                      IntegrationModeToAverageScalar=None), True),
 ]
+
+
+def configured(factory, **settings):
+    """A mapper with Set<name>(value) applied for each setting (value None: Set<name>())."""
+    mapper = factory()
+    for name, value in settings.items():
+        setter = getattr(mapper, "Set" + name)
+        setter() if value is None else setter(value)
+    return mapper
 
 
 # ---------------------------------------------------------------------------------------------
@@ -92,6 +107,17 @@ def bluntfin():
     to_grid.SetInputConnection(reader.GetOutputPort())
     to_grid.Update()
     return to_grid.GetOutput()
+
+
+def wavelet_tets():
+    """VTK's wavelet on 64^3 points, five tetrahedra per cell: 1.25 M tetrahedra."""
+    wavelet = vtkRTAnalyticSource()
+    wavelet.SetWholeExtent(-32, 31, -32, 31, -32, 31)
+    split = vtkHexahedraToTetrahedra()
+    split.SetInputConnection(wavelet.GetOutputPort())
+    split.SetSplitModeToFiveTetrahedra()
+    split.Update()
+    return split.GetOutput()
 
 
 def split_tets(load):
@@ -167,6 +193,7 @@ def scenes(quick):
     ]
     if quick:
         return found[:2]
+    found.append(("wavelet_tets", wavelet_tets, "RTData", smooth_ramp, 0.05))
     if os.path.isdir(SHARED):
         found += [
             ("bluntfin_hex", bluntfin, "Density", smooth_ramp, 0.03),
@@ -431,7 +458,11 @@ def main():
     parser.add_argument("--size", type=int, default=None)
     parser.add_argument("--views", type=int, default=None)
     parser.add_argument("--output", default=os.path.join(ROOT, "out", "benchmark"))
+    parser.add_argument("--scenes", default=None, help="comma-separated scene names to run (default: all)")
+    parser.add_argument("--mappers", default=None, help="comma-separated substrings of mapper names (default: all)")
     args = parser.parse_args()
+    wanted_scenes = args.scenes.split(",") if args.scenes else None
+    mappers = [m for m in MAPPERS if not args.mappers or any(w in m[0] for w in args.mappers.split(","))]
     size = args.size or (128 if args.quick else 512)
     views = args.views or (4 if args.quick else 8)
     os.makedirs(args.output, exist_ok=True)
@@ -440,6 +471,8 @@ def main():
 
     rows = []
     for scene, load, scalar, maker, unit_fraction in scenes(args.quick):
+        if wanted_scenes and scene not in wanted_scenes:
+            continue
         mesh = load()
         prop, opacity_nodes, color_nodes = volume_property(mesh, scalar, maker, unit_fraction)
         cameras = orbit(mesh, views)
@@ -459,7 +492,7 @@ def main():
         print(f"  reference: {reference_seconds:.1f} s (0 when cached)", flush=True)
 
         scene_rows, first_views, heat_maps = [], [over_background(references[0])], [over_background(references[0])]
-        for name, factory, needs_tets in MAPPERS:
+        for name, factory, needs_tets in mappers:
             preparation, frames, memory, images = run_mapper(
                 name, factory, tets if needs_tets else mesh, scalar, prop, cameras, size)
             errors = []

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """The README's main job: renders the bundled default dataset and names the PNG files it wrote.
 
-For now the pictures come from VTK's own mappers applied to this project's filters' output:
-the default hexahedral mesh split by vtkHexahedraToTetrahedra and volume-rendered with
-vtkProjectedTetrahedraMapper, and the gradient from vtkVertexGradientFilter on a cut plane.
+The default hexahedral mesh split by vtkHexahedraToTetrahedra and volume-rendered with this
+project's vtkPreIntegratedTetrahedraMapper (alone, then with a lit isosurface), beside VTK's own
+vtkProjectedTetrahedraMapper for comparison, and the gradient from vtkVertexGradientFilter on a
+cut plane.
 """
 import argparse
 import os
@@ -45,7 +46,13 @@ def main():
     gradient.Update()
     print("vtkVertexGradientFilter: array 'Gradients' on", gradient.GetOutput().GetNumberOfPoints(), "points")
 
+    low, high = tets.GetPointData().GetArray(args.scalar).GetRange()
     written = [
+        uvrender.render_preintegrated_tetrahedra(
+            tets, args.scalar, os.path.join(args.output, "default_preintegrated_tetrahedra.png"), args.size),
+        uvrender.render_preintegrated_tetrahedra(
+            tets, args.scalar, os.path.join(args.output, "default_preintegrated_isosurface.png"), args.size,
+            isovalue=low + 0.6 * (high - low)),
         uvrender.render_projected_tetrahedra(
             tets, args.scalar, os.path.join(args.output, "default_split_projected_tetrahedra.png"), args.size),
         uvrender.render_gradient_cut(

@@ -107,6 +107,23 @@ def render_projected_tetrahedra(tets, scalar, path, size=512):
     return _render_scene([volume], tets, size, path)
 
 
+def render_preintegrated_tetrahedra(tets, scalar, path, size=512, isovalue=None):
+    """Volume-renders a tetrahedral grid with this project's vtkPreIntegratedTetrahedraMapper, with a
+    lit isosurface when `isovalue` is given."""
+    from unstructuredvolume import vtkPreIntegratedTetrahedraMapper
+    tets.GetPointData().SetActiveScalars(scalar)
+    mapper = vtkPreIntegratedTetrahedraMapper()
+    mapper.SetInputData(tets)
+    if isovalue is not None:
+        mapper.AddIsosurface(isovalue, 0.95, 0.85, 0.4, 0.7)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    prop = volume_property(tets.GetPointData().GetArray(scalar).GetRange())
+    prop.SetSpecular(0.3)
+    volume.SetProperty(prop)
+    return _render_scene([volume], tets, size, path)
+
+
 def render_gradient_cut(grid, gradients, path, size=512):
     """A cut through the grid coloured by |gradient|, over the grid's translucent boundary."""
     plane = vtkPlane()
