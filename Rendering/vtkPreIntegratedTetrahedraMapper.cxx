@@ -793,9 +793,14 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
-  std::string defines = "//VTK::System::Dec\n";
+  // Transfer-function nodes are uniforms when they fit (the common case), a texture otherwise.
+  constexpr int maximumUniformNodes = 64;
+  const bool nodeTexture = impl.Nodes.size() > static_cast<std::size_t>(maximumUniformNodes);
+  std::string defines = "//VTK::System::Dec\n#define UV_MAX_UNIFORM_NODES " + std::to_string(maximumUniformNodes) + "\n";
   if (needGradients)
     defines += "#define UV_GRADIENTS\n";
+  if (nodeTexture)
+    defines += "#define UV_NODE_TEXTURE\n";
   auto withDefines = [&defines](const char* source) {
     std::string text(source);
     const std::string marker = "//VTK::System::Dec\n";
@@ -846,6 +851,20 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   program->SetUniformi("averageScalar", this->IntegrationMode == AVERAGE_SCALAR ? 1 : 0);
   program->SetUniformi("shadeVolume", shade ? 1 : 0);
   program->SetUniformi("nodeCount", static_cast<int>(impl.Nodes.size()));
+  if (!nodeTexture)
+  {
+    std::vector<float> values(4 * maximumUniformNodes, 0.0f), scalars(maximumUniformNodes, 0.0f);
+    for (std::size_t k = 0; k < impl.Nodes.size(); ++k)
+    {
+      values[4 * k + 0] = static_cast<float>(impl.Nodes[k].Color.r);
+      values[4 * k + 1] = static_cast<float>(impl.Nodes[k].Color.g);
+      values[4 * k + 2] = static_cast<float>(impl.Nodes[k].Color.b);
+      values[4 * k + 3] = static_cast<float>(impl.Nodes[k].Extinction);
+      scalars[k] = static_cast<float>(impl.Nodes[k].Scalar);
+    }
+    program->SetUniform4fv("nodeValues", maximumUniformNodes, values.data());
+    program->SetUniform4fv("nodeScalars", maximumUniformNodes / 4, scalars.data());
+  }
   program->SetUniformi("isosurfaceCount", static_cast<int>(isovalues.size()));
   program->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
   program->SetUniformf("ambient", static_cast<float>(property->GetAmbient()));
@@ -887,7 +906,8 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     texture->Activate();
   program->SetUniformi("tetrahedronPoints", impl.TetrahedronTexture->GetTextureUnit());
   program->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
-  program->SetUniformi("transferFunction", impl.TransferTexture->GetTextureUnit());
+  if (nodeTexture)
+    program->SetUniformi("transferFunction", impl.TransferTexture->GetTextureUnit());
   program->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
   program->SetUniformi("psiTable", impl.PsiTexture->GetTextureUnit());
   program->SetUniformi("opaqueDepth", impl.DepthTexture->GetTextureUnit());

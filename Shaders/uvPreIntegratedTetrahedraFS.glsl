@@ -23,7 +23,13 @@ flat in int rayCastTetrahedron;  // >= 0: intersect the eye ray with this tetrah
 uniform usamplerBuffer tetrahedronPoints;
 uniform samplerBuffer pointData;
 uniform mat4 modelToEye;
+#ifdef UV_NODE_TEXTURE
 uniform sampler2D transferFunction; // nodes: row 0 (r, g, b, extinction), row 1 (normalised scalar)
+#else
+// Up to UV_MAX_UNIFORM_NODES nodes as uniforms (cheaper to read than a texture on CPU rasterisers).
+uniform vec4 nodeValues[UV_MAX_UNIFORM_NODES];        // (r, g, b, extinction)
+uniform vec4 nodeScalars[UV_MAX_UNIFORM_NODES / 4];   // normalised scalars, four per vec4
+#endif
 uniform int nodeCount;
 uniform sampler2D isosurfaces;      // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
 uniform int isosurfaceCount;
@@ -52,7 +58,21 @@ struct Sample
 
 float NodeScalar(int k)
 {
+#ifdef UV_NODE_TEXTURE
   return texelFetch(transferFunction, ivec2(k, 1), 0).r;
+#else
+  return nodeScalars[k >> 2][k & 3];
+#endif
+}
+
+Sample NodeSample(int k)
+{
+#ifdef UV_NODE_TEXTURE
+  vec4 n = texelFetch(transferFunction, ivec2(k, 0), 0);
+#else
+  vec4 n = nodeValues[k];
+#endif
+  return Sample(n.rgb, n.a);
 }
 
 /// Number of nodes with scalar <= s (binary search).
@@ -70,25 +90,18 @@ int NodesAtOrBelow(float s)
   return low;
 }
 
-/// The transfer function at s: linear between nodes, constant beyond the ends.
-Sample Evaluate(float s)
+/// The transfer function at s, given `below` = the number of nodes <= s: linear between nodes,
+/// constant beyond the ends.
+Sample EvaluateBetween(float s, int below)
 {
-  int above = NodesAtOrBelow(s);
-  if (above == 0)
-  {
-    vec4 n = texelFetch(transferFunction, ivec2(0, 0), 0);
-    return Sample(n.rgb, n.a);
-  }
-  if (above >= nodeCount)
-  {
-    vec4 n = texelFetch(transferFunction, ivec2(nodeCount - 1, 0), 0);
-    return Sample(n.rgb, n.a);
-  }
-  float s0 = NodeScalar(above - 1), s1 = NodeScalar(above);
-  vec4 n0 = texelFetch(transferFunction, ivec2(above - 1, 0), 0);
-  vec4 n1 = texelFetch(transferFunction, ivec2(above, 0), 0);
-  vec4 n = mix(n0, n1, s1 > s0 ? (s - s0) / (s1 - s0) : 0.0);
-  return Sample(n.rgb, n.a);
+  if (below <= 0)
+    return NodeSample(0);
+  if (below >= nodeCount)
+    return NodeSample(nodeCount - 1);
+  float s0 = NodeScalar(below - 1), s1 = NodeScalar(below);
+  Sample a = NodeSample(below - 1), b = NodeSample(below);
+  float w = s1 > s0 ? clamp((s - s0) / (s1 - s0), 0.0, 1.0) : 0.0;
+  return Sample(mix(a.color, b.color, w), mix(a.extinction, b.extinction, w));
 }
 
 float Psi(float a, float b)
@@ -228,10 +241,12 @@ void main()
   vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-frontPoint);
 
   // Walk the cuts from front to back: nodes strictly between the end scalars, isovalues within.
+  // One search per fragment: afterwards the walk knows which nodes bracket every cut.
   float span = backScalar - frontScalar;
   bool rising = span >= 0.0;
-  int node = rising ? NodesAtOrBelow(frontScalar) : NodesAtOrBelow(frontScalar) - 1;
-  // Skip a node exactly at the front scalar when falling (it is not strictly inside).
+  int frontBelow = NodesAtOrBelow(frontScalar);
+  // The next node along the walk: the first above the front (rising) or the last strictly below.
+  int node = rising ? frontBelow : frontBelow - 1;
   if (!rising && node >= 0 && NodeScalar(node) >= frontScalar)
     node--;
   int iso = rising ? 0 : isosurfaceCount - 1;
@@ -242,21 +257,40 @@ void main()
       break;
     iso += rising ? 1 : -1;
   }
-  Sample constant = Evaluate(0.5 * (frontScalar + backScalar));
-  Sample previous = averageScalar == 1 ? constant : Evaluate(frontScalar);
+  Sample previous;
+  Sample constant;
+  if (averageScalar == 1)
+  {
+    float middle = 0.5 * (frontScalar + backScalar);
+    constant = EvaluateBetween(middle, NodesAtOrBelow(middle));
+    previous = constant;
+  }
+  else
+  {
+    previous = EvaluateBetween(frontScalar, frontBelow);
+  }
   if (shadeVolume == 1 && averageScalar == 0)
     previous.color = Light(previous.color, frontGradient, toEye);
   float previousFraction = 0.0;
   for (int guard = 0; guard < nodeCount + isosurfaceCount + 1; ++guard)
   {
-    float nodeValue = (averageScalar == 0 && node >= 0 && node < nodeCount) ? NodeScalar(node) : backScalar;
-    bool nodeInside = rising ? nodeValue < backScalar : nodeValue > backScalar;
-    float isoValue = (iso >= 0 && iso < isosurfaceCount) ? texelFetch(isosurfaces, ivec2(iso, 1), 0).r : backScalar;
-    bool isoInside = iso >= 0 && iso < isosurfaceCount && (rising ? isoValue <= backScalar : isoValue >= backScalar);
+    bool nodeValid = averageScalar == 0 && node >= 0 && node < nodeCount;
+    float nodeValue = nodeValid ? NodeScalar(node) : backScalar;
+    bool nodeInside = nodeValid && (rising ? nodeValue < backScalar : nodeValue > backScalar);
+    bool isoValid = iso >= 0 && iso < isosurfaceCount;
+    float isoValue = isoValid ? texelFetch(isosurfaces, ivec2(iso, 1), 0).r : backScalar;
+    bool isoInside = isoValid && (rising ? isoValue <= backScalar : isoValue >= backScalar);
     bool takeIso = isoInside && (!nodeInside || (rising ? isoValue <= nodeValue : isoValue >= nodeValue));
     float cut = takeIso ? isoValue : (nodeInside ? nodeValue : backScalar);
     float fraction = span != 0.0 ? clamp((cut - frontScalar) / span, 0.0, 1.0) : 1.0;
-    Sample next = averageScalar == 1 ? constant : Evaluate(cut);
+    // Nodes at or below the cut: before reaching `node` rising, `node` of them; falling, node + 1.
+    Sample next;
+    if (averageScalar == 1)
+      next = constant;
+    else if (!takeIso && nodeInside)
+      next = NodeSample(node);
+    else
+      next = EvaluateBetween(cut, rising ? node : node + 1);
     vec3 gradientHere = mix(frontGradient, backGradient, fraction);
     if (shadeVolume == 1 && averageScalar == 0)
       next.color = Light(next.color, gradientHere, toEye);
