@@ -24,6 +24,7 @@ packages=(
   qtbase5-dev qttools5-dev qtxmlpatterns5-dev-tools libqt5opengl5-dev libqt5svg5-dev
   libglm-dev googletest libgtest-dev
   xvfb xauth
+  x11-apps imagemagick  # xwd and convert: the ParaView GUI test's screenshot
 )
 missing=()
 for package in "${packages[@]}"; do

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Starts the real ParaView GUI under Xvfb with the plugin, lets gui_script.py select the new
+# representation, waits until it has rendered, screenshots the whole screen and checks the GUI
+# listed the new entries. Usage: test_gui.sh <plugin.so> <output dir> <paraview python path>
+set -uo pipefail
+plugin="$1"; output="$2"; pythonpath="$3"
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+mkdir -p "$output"
+rm -f "$output/gui_entries.txt" "$output/paraview_gui.png"
+export UV_PLUGIN="$plugin" UV_GUI_OUTPUT="$output"
+# Runs inside xvfb-run: DISPLAY is the virtual screen.
+inner='
+  PYTHONPATH="$0" paraview --script="$1/gui_script.py" > "$UV_GUI_OUTPUT/paraview_gui.log" 2>&1 &
+  gui=$!
+  for i in $(seq 1 120); do
+    [ -s "$UV_GUI_OUTPUT/gui_entries.txt" ] && break
+    kill -0 $gui 2>/dev/null || break
+    sleep 1
+  done
+  sleep 3  # let the GUI repaint its panels after the render
+  xwd -root -silent | convert xwd:- "$UV_GUI_OUTPUT/paraview_gui.png"
+  kill $gui 2>/dev/null; wait $gui 2>/dev/null
+  true'
+xvfb-run -a -s "-screen 0 1280x800x24" bash -c "$inner" "$pythonpath" "$here"
+if [ ! -s "$output/gui_entries.txt" ]; then
+  echo "the GUI did not get as far as rendering; its log:"; tail -20 "$output/paraview_gui.log"; exit 1
+fi
+cat "$output/gui_entries.txt"
+grep -q "representation: Volume (Pre-integrated Tetrahedra)" "$output/gui_entries.txt" || exit 1
+grep -q "filter: HexahedraToTetrahedra in Unstructured Volume" "$output/gui_entries.txt" || exit 1
+[ -s "$output/paraview_gui.png" ] || { echo "no screenshot"; exit 1; }
+echo "paraview GUI OK: screenshot $output/paraview_gui.png"
