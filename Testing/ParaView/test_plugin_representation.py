@@ -5,7 +5,11 @@ baseline: vtkImageDifference's thresholded error at most <threshold>, and at mos
 pixels more than 2 levels off in some channel (the 2-rank run composites two halves with IceT).
 
     pvbatch test_plugin_representation.py <plugin> <output.png> [<baseline.png> <threshold> <fraction>]
+
+With UV_SERVER=host:port in the environment (pvpython only) it first connects to that pvserver and
+loads the plugin on both sides: the server renders, the client receives the image.
 """
+import os
 import sys
 
 from paraview import servermanager
@@ -15,6 +19,12 @@ plugin, output = sys.argv[1], sys.argv[2]
 baseline = sys.argv[3] if len(sys.argv) > 3 else None
 threshold = float(sys.argv[4]) if len(sys.argv) > 4 else 10.0
 fraction = float(sys.argv[5]) if len(sys.argv) > 5 else 0.0
+server = os.environ.get("UV_SERVER")
+if server:
+    host, port = server.split(":")
+    Connect(host, int(port))  # noqa: F405
+    LoadPlugin(plugin, remote=True, ns=globals())
+    print(f"connected to {server}, server ranks: {servermanager.ActiveConnection.GetNumberOfDataPartitions()}")
 LoadPlugin(plugin, remote=False, ns=globals())
 ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 print(f"ranks: {ranks}")
@@ -85,4 +95,11 @@ if baseline:
           f"{100 * share:.2f}% of pixels more than 2 levels off (at most {100 * fraction:.2f}%), largest {worst:.0f}")
     assert error <= threshold, error
     assert share <= fraction, share
+# The entry is offered on a structured grid (a transformed image) and on multiblock data too (after
+# the image: showing them may rescale the shared colour map).
+for label, source in (("structured grid", Transform(Input=wavelet)),  # noqa: F405
+                      ("multiblock", GroupDatasets(Input=[mesh, mesh]))):  # noqa: F405
+    other = Show(source, view)  # noqa: F405
+    assert ENTRY in other.Representation.Available, (label, other.Representation.Available)
+    Hide(source, view)  # noqa: F405
 print("plugin representation OK")
