@@ -13,6 +13,7 @@ endforeach ()
 # VTK-free math, unit-tested on its own, and the one VTK-reading helper the mappers share.
 set(uv_rendering_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/uvChebyshevSeries.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvHexahedronRay.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvImageErrorMetrics.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvOpticalModel.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvPreIntegration.h"
