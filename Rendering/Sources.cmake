@@ -1,6 +1,7 @@
 # Sources of the Rendering half of the UnstructuredVolume module (included by the root CMakeLists.txt).
 # The GLSL the mappers use is embedded from Shaders/ by the root CMakeLists.txt.
 set(uv_rendering_classes
+  vtkHexahedralRayCastMapper
   vtkPreIntegratedTetrahedraMapper
   vtkUnstructuredVolumeReferenceRenderer
   vtkVolumeImageErrorMetrics)

@@ -1,0 +1,617 @@
+#include "vtkHexahedralRayCastMapper.h"
+
+#include "uvCompositePremultipliedFS.h"
+#include "uvFullScreenTriangleVS.h"
+#include "uvHexahedralEntryFS.h"
+#include "uvHexahedralEntryVS.h"
+#include "uvHexahedralTraverseFS.h"
+#include "uvLinearCellSplit.h"
+#include "uvPreIntegration.h"
+#include "uvTransferFunctionFromVolumeProperty.h"
+
+#include "vtkCamera.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkHexahedralRayCastMapper);
+
+namespace
+{
+constexpr int MaximumUniformNodes = 64; // as UV_MAX_UNIFORM_NODES in the traversal shader
+
+glm::dmat4 ToGlm(vtkMatrix4x4* m)
+{
+  glm::dmat4 result;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column)
+      result[column][row] = m->GetElement(row, column);
+  return result;
+}
+
+/// A face by its sorted point ids, and which cell's local face it is.
+struct FaceRecord
+{
+  std::array<std::uint32_t, 4> Key;
+  std::uint32_t CellFace; // cell * 8 + local face
+  bool operator<(const FaceRecord& other) const
+  {
+    return Key < other.Key || (Key == other.Key && CellFace < other.CellFace);
+  }
+};
+} // namespace
+
+class vtkHexahedralRayCastMapper::Internals
+{
+public:
+  std::string MeshKey;
+  std::vector<std::uint32_t> CellPoints;   // 8 per cell, VTK hexahedron order
+  std::vector<float> PointData;            // recentred position, normalised scalar
+  std::vector<std::int32_t> Neighbours;    // 8 per cell (6 used): neighbour * 8 + face, or -1
+  std::vector<std::int32_t> BoundaryFaces; // 4 per boundary face: cell, local face, 0, 0
+  glm::dvec3 Center{ 0.0 };
+  double ScalarOffset = 0.0, ScalarScale = 1.0;
+  int MeshBuilds = 0, Peels = 0;
+  bool WarnedNaN = false;
+
+  vtkOpenGLRenderWindow* Context = nullptr;
+  vtkNew<vtkOpenGLBufferObject> CellPointBuffer, PointBuffer, NeighbourBuffer, BoundaryBuffer;
+  vtkNew<vtkTextureObject> CellPointTexture, PointTexture, NeighbourTexture, BoundaryTexture, PsiTexture,
+    OpaqueDepthTexture, EntryTexture, EntryDepthTexture, ExitTexture, AccumulationTexture[2];
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
+  bool MeshOnGpu = false;
+  int ImageSize[2] = { 0, 0 };
+  vtkSmartPointer<vtkImageData> FloatImage;
+
+  void ReleaseGraphics()
+  {
+    if (this->Context)
+    {
+      for (vtkTextureObject* texture : { this->CellPointTexture.Get(), this->PointTexture.Get(),
+             this->NeighbourTexture.Get(), this->BoundaryTexture.Get(), this->PsiTexture.Get(),
+             this->OpaqueDepthTexture.Get(), this->EntryTexture.Get(), this->EntryDepthTexture.Get(),
+             this->ExitTexture.Get(), this->AccumulationTexture[0].Get(), this->AccumulationTexture[1].Get() })
+      {
+        texture->ReleaseGraphicsResources(this->Context);
+      }
+      for (vtkOpenGLBufferObject* buffer : { this->CellPointBuffer.Get(), this->PointBuffer.Get(),
+             this->NeighbourBuffer.Get(), this->BoundaryBuffer.Get() })
+      {
+        buffer->ReleaseGraphicsResources();
+      }
+      this->Framebuffer->ReleaseGraphicsResources(this->Context);
+      this->NoAttributes->ReleaseGraphicsResources();
+    }
+    this->Context = nullptr;
+    this->MeshOnGpu = false;
+    this->ImageSize[0] = this->ImageSize[1] = 0;
+  }
+};
+
+vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
+  : Impl(new Internals)
+{
+}
+
+vtkHexahedralRayCastMapper::~vtkHexahedralRayCastMapper() = default;
+
+vtkImageData* vtkHexahedralRayCastMapper::GetFloatImage()
+{
+  return this->Impl->FloatImage;
+}
+vtkIdType vtkHexahedralRayCastMapper::GetNumberOfCells()
+{
+  return static_cast<vtkIdType>(this->Impl->CellPoints.size() / 8);
+}
+vtkIdType vtkHexahedralRayCastMapper::GetNumberOfBoundaryFaces()
+{
+  return static_cast<vtkIdType>(this->Impl->BoundaryFaces.size() / 4);
+}
+int vtkHexahedralRayCastMapper::GetNumberOfPeels()
+{
+  return this->Impl->Peels;
+}
+int vtkHexahedralRayCastMapper::GetNumberOfMeshBuilds()
+{
+  return this->Impl->MeshBuilds;
+}
+
+void vtkHexahedralRayCastMapper::ReleaseGraphicsResources(vtkWindow*)
+{
+  this->Impl->ReleaseGraphics();
+}
+
+void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const char* modes[] = { "Accurate", "Fast", "FixedSteps" };
+  os << indent << "IntegrationMode: " << modes[this->IntegrationMode] << "\n";
+  os << indent << "FixedSteps: " << this->FixedSteps << "\n";
+  os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
+  os << indent << "MaximumPeels: " << this->MaximumPeels << "\n";
+}
+
+void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+{
+  Internals& impl = *this->Impl;
+  impl.Peels = 0;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkUnstructuredGridBase* input = this->GetInput();
+  if (!window || !volume || !volume->GetProperty() || !input)
+  {
+    vtkErrorMacro("needs an input, an OpenGL render window and a volume with a property");
+    return;
+  }
+  if (input->GetNumberOfCells() == 0 || input->GetNumberOfPoints() == 0)
+  {
+    return; // an empty grid draws nothing
+  }
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(
+    input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (!scalars)
+  {
+    vtkErrorMacro("the input has no point scalar to render (set one, or select an array with SelectScalarArray)");
+    return;
+  }
+  if (cellFlag != 0)
+  {
+    vtkErrorMacro("cell scalars are not supported: convert them to point data (vtkCellDataToPointData)");
+    return;
+  }
+
+  // ---- The mesh: cells, recentred points, face adjacency, boundary faces.
+  const std::string meshKey = std::to_string(reinterpret_cast<std::uintptr_t>(input)) + ":" +
+    std::to_string(input->GetMTime()) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(scalars)) + ":" +
+    std::to_string(scalars->GetMTime());
+  if (meshKey != impl.MeshKey)
+  {
+    impl.MeshKey.clear();
+    impl.MeshOnGpu = false;
+    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(input);
+    if (!grid)
+    {
+      grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      grid->DeepCopy(input);
+    }
+    const vtkIdType pointCount = grid->GetNumberOfPoints();
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (vtkIdType p = 0; p < pointCount; ++p)
+    {
+      const double s = scalars->GetComponent(p, 0);
+      if (std::isfinite(s))
+      {
+        low = std::min(low, s);
+        high = std::max(high, s);
+      }
+    }
+    if (!(low <= high))
+      low = high = 0.0;
+    impl.ScalarOffset = low;
+    impl.ScalarScale = high > low ? 1.0 / (high - low) : 1.0;
+    double bounds[6];
+    grid->GetBounds(bounds);
+    impl.Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
+    impl.PointData.assign(4 * pointCount, 0.0f);
+    vtkPoints* points = grid->GetPoints();
+    vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
+      double x[3];
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        points->GetPoint(p, x);
+        for (int d = 0; d < 3; ++d)
+          impl.PointData[4 * p + d] = static_cast<float>(x[d] - impl.Center[d]);
+        impl.PointData[4 * p + 3] =
+          static_cast<float>((scalars->GetComponent(p, 0) - impl.ScalarOffset) * impl.ScalarScale);
+      }
+    });
+
+    impl.CellPoints.clear();
+    vtkIdType others = 0, withNaN = 0;
+    vtkIdType npts;
+    const vtkIdType* ids;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      const int type = grid->GetCellType(c);
+      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL)
+      {
+        ++others;
+        continue;
+      }
+      grid->GetCellPoints(c, npts, ids);
+      std::array<std::uint32_t, 8> corners;
+      for (int k = 0; k < 8; ++k)
+        corners[k] = static_cast<std::uint32_t>(ids[type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k]);
+      bool finite = true;
+      for (std::uint32_t id : corners)
+        finite = finite && std::isfinite(impl.PointData[4 * id + 3]);
+      if (!finite)
+      {
+        ++withNaN;
+        continue;
+      }
+      impl.CellPoints.insert(impl.CellPoints.end(), corners.begin(), corners.end());
+    }
+    if (others > 0)
+    {
+      vtkErrorMacro(<< others << " cells are not hexahedra or voxels: split the mesh with "
+                    << "vtkHexahedraToTetrahedra and render it with vtkPreIntegratedTetrahedraMapper");
+      impl.CellPoints.clear();
+      return;
+    }
+    if (withNaN > 0 && !impl.WarnedNaN)
+    {
+      vtkWarningMacro(<< withNaN << " cells touch a NaN scalar and are left out (holes in the mesh)");
+      impl.WarnedNaN = true;
+    }
+    // Face adjacency by sorting the faces' sorted point ids.
+    const std::size_t cellCount = impl.CellPoints.size() / 8;
+    std::vector<FaceRecord> faces(6 * cellCount);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(cellCount), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType c = begin; c < end; ++c)
+        for (int f = 0; f < 6; ++f)
+        {
+          FaceRecord& record = faces[6 * c + f];
+          for (int k = 0; k < 4; ++k)
+            record.Key[k] = impl.CellPoints[8 * c + uv::HexahedronFaces[f].Vertices[k]];
+          std::sort(record.Key.begin(), record.Key.end());
+          record.CellFace = static_cast<std::uint32_t>(8 * c + f);
+        }
+    });
+    vtkSMPTools::Sort(faces.begin(), faces.end());
+    impl.Neighbours.assign(8 * cellCount, -1);
+    impl.BoundaryFaces.clear();
+    for (std::size_t i = 0; i < faces.size();)
+    {
+      std::size_t j = i + 1;
+      while (j < faces.size() && faces[j].Key == faces[i].Key)
+        ++j;
+      if (j - i == 2)
+      {
+        const std::uint32_t a = faces[i].CellFace, b = faces[i + 1].CellFace;
+        impl.Neighbours[8 * (a / 8) + a % 8] = static_cast<std::int32_t>(b);
+        impl.Neighbours[8 * (b / 8) + b % 8] = static_cast<std::int32_t>(a);
+      }
+      else
+      {
+        // A boundary face (or a non-manifold one: every copy is treated as boundary).
+        for (std::size_t k = i; k < j; ++k)
+        {
+          const std::uint32_t cf = faces[k].CellFace;
+          impl.BoundaryFaces.insert(impl.BoundaryFaces.end(),
+            { static_cast<std::int32_t>(cf / 8), static_cast<std::int32_t>(cf % 8), 0, 0 });
+        }
+      }
+      i = j;
+    }
+    impl.MeshKey = meshKey;
+    ++impl.MeshBuilds;
+  }
+  const std::size_t cellCount = impl.CellPoints.size() / 8;
+  const std::size_t boundaryCount = impl.BoundaryFaces.size() / 4;
+  if (cellCount == 0 || boundaryCount == 0)
+  {
+    return;
+  }
+
+  // ---- Transfer function as at most 64 uniform nodes, normalised like the scalar.
+  vtkVolumeProperty* property = volume->GetProperty();
+  std::vector<uv::TransferFunction::Node> nodes = uv::TransferFunctionNodes(property);
+  if (nodes.empty())
+  {
+    vtkErrorMacro("the volume property has no scalar opacity function");
+    return;
+  }
+  if (nodes.size() > static_cast<std::size_t>(MaximumUniformNodes))
+  {
+    // Fewer subdivisions of curved functions first; resample evenly as a last resort.
+    nodes = uv::TransferFunctionNodes(property, 1);
+    if (nodes.size() > static_cast<std::size_t>(MaximumUniformNodes))
+    {
+      const uv::TransferFunction tf(nodes);
+      const double first = nodes.front().Scalar, last = nodes.back().Scalar;
+      nodes.clear();
+      for (int k = 0; k < MaximumUniformNodes; ++k)
+      {
+        const double s = first + (last - first) * k / (MaximumUniformNodes - 1);
+        const auto n = tf.Evaluate(s);
+        nodes.push_back({ s, n.Color, n.Extinction });
+      }
+      vtkWarningMacro("more than " << MaximumUniformNodes << " transfer-function nodes: resampled to that many");
+    }
+  }
+  std::vector<float> nodeValues(4 * MaximumUniformNodes, 0.0f), nodeScalars(MaximumUniformNodes, 0.0f);
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+  {
+    nodeValues[4 * k + 0] = static_cast<float>(nodes[k].Color.r);
+    nodeValues[4 * k + 1] = static_cast<float>(nodes[k].Color.g);
+    nodeValues[4 * k + 2] = static_cast<float>(nodes[k].Color.b);
+    nodeValues[4 * k + 3] = static_cast<float>(nodes[k].Extinction);
+    nodeScalars[k] = static_cast<float>((nodes[k].Scalar - impl.ScalarOffset) * impl.ScalarScale);
+  }
+
+  // ---- Camera.
+  int width, height, originX, originY;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
+  if (width < 1 || height < 1)
+  {
+    return;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double aspect = static_cast<double>(width) / height;
+  const glm::dmat4 modelToWorld = ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
+  const glm::dmat4 modelToClip = ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) *
+    ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld;
+  const glm::mat4 modelToClipF(modelToClip), clipToModelF(glm::inverse(modelToClip));
+
+  // ---- GPU resources.
+  if (impl.Context != window)
+  {
+    impl.ReleaseGraphics();
+    impl.Context = window;
+  }
+  window->MakeCurrent();
+  vtkOpenGLClearErrorMacro();
+  vtkOpenGLState* state = window->GetState();
+  auto bufferTexture = [window](vtkOpenGLBufferObject* buffer, vtkTextureObject* texture, const auto& values,
+                         int components, int vtkType, unsigned int internalFormat) {
+    buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
+    texture->SetContext(window);
+    texture->SetInternalFormat(internalFormat);
+    texture->CreateTextureBuffer(static_cast<unsigned int>(values.size() / components), components, vtkType, buffer);
+  };
+  if (!impl.MeshOnGpu)
+  {
+    bufferTexture(impl.CellPointBuffer, impl.CellPointTexture, impl.CellPoints, 4, VTK_UNSIGNED_INT, GL_RGBA32UI);
+    bufferTexture(impl.PointBuffer, impl.PointTexture, impl.PointData, 4, VTK_FLOAT, GL_RGBA32F);
+    bufferTexture(impl.NeighbourBuffer, impl.NeighbourTexture, impl.Neighbours, 4, VTK_INT, GL_RGBA32I);
+    bufferTexture(impl.BoundaryBuffer, impl.BoundaryTexture, impl.BoundaryFaces, 4, VTK_INT, GL_RGBA32I);
+    impl.MeshOnGpu = true;
+  }
+  if (!impl.PsiTexture->GetHandle())
+  {
+    static const uv::PsiTable table;
+    impl.PsiTexture->SetContext(window);
+    impl.PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+    impl.PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.PsiTexture->Create2DFromRaw(
+      table.GetSize(), table.GetSize(), 1, VTK_FLOAT, const_cast<float*>(table.GetValues().data()));
+  }
+  if (impl.ImageSize[0] != width || impl.ImageSize[1] != height)
+  {
+    for (vtkTextureObject* texture : { impl.EntryTexture.Get(), impl.ExitTexture.Get(),
+           impl.AccumulationTexture[0].Get(), impl.AccumulationTexture[1].Get() })
+    {
+      texture->SetContext(window);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->Allocate2D(width, height, 4, VTK_FLOAT);
+    }
+    impl.EntryDepthTexture->SetContext(window);
+    impl.EntryDepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
+    impl.OpaqueDepthTexture->SetContext(window);
+    impl.OpaqueDepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
+    impl.Framebuffer->SetContext(window);
+    impl.ImageSize[0] = width;
+    impl.ImageSize[1] = height;
+  }
+  GLint sampleBuffers = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+  if (sampleBuffers == 0)
+  {
+    impl.OpaqueDepthTexture->CopyFromFrameBuffer(originX, originY, 0, 0, width, height);
+  }
+  else
+  {
+    std::vector<float> far(static_cast<std::size_t>(width) * height, 1.0f);
+    impl.OpaqueDepthTexture->CreateDepthFromRaw(width, height, vtkTextureObject::Float32, VTK_FLOAT, far.data());
+  }
+
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunctionSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFunctionSaver(state);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+
+  const std::string defines = "//VTK::System::Dec\n#define UV_MAX_UNIFORM_NODES " + std::to_string(MaximumUniformNodes) + "\n";
+  auto withDefines = [&defines](const char* source) {
+    std::string text(source);
+    const std::string marker = "//VTK::System::Dec\n";
+    const auto at = text.find(marker);
+    if (at != std::string::npos)
+      text.replace(at, marker.size(), defines);
+    return text;
+  };
+  const std::string traverseSource = withDefines(uvHexahedralTraverseFS);
+  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
+
+  impl.Framebuffer->SaveCurrentBindingsAndBuffers();
+  impl.Framebuffer->Bind();
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDisable(GL_BLEND);
+  // Start: nothing accumulated.
+  impl.Framebuffer->AddColorAttachment(0, impl.AccumulationTexture[0]);
+  impl.Framebuffer->ActivateDrawBuffers(1);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  int source = 0;
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  bool failed = false;
+  for (int peel = 0; peel < this->MaximumPeels; ++peel)
+  {
+    // Entry pass: the nearest entering boundary face beyond the previous exit.
+    impl.Framebuffer->AddColorAttachment(0, impl.EntryTexture);
+    impl.Framebuffer->AddDepthAttachment(impl.EntryDepthTexture);
+    impl.Framebuffer->ActivateDrawBuffers(1);
+    state->vtkglClearColor(0.0f, -1.0f, 0.0f, 0.0f);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    vtkShaderProgram* entry = window->GetShaderCache()->ReadyShaderProgram(
+      withDefines(uvHexahedralEntryVS).c_str(), withDefines(uvHexahedralEntryFS).c_str(), "");
+    if (!entry)
+    {
+      failed = true;
+      break;
+    }
+    impl.BoundaryTexture->Activate();
+    impl.CellPointTexture->Activate();
+    impl.PointTexture->Activate();
+    impl.ExitTexture->Activate();
+    entry->SetUniformi("boundaryFaces", impl.BoundaryTexture->GetTextureUnit());
+    entry->SetUniformi("cellPoints", impl.CellPointTexture->GetTextureUnit());
+    entry->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
+    entry->SetUniformi("previousExit", impl.ExitTexture->GetTextureUnit());
+    entry->SetUniformi("firstPeel", peel == 0 ? 1 : 0);
+    entry->SetUniformMatrix4x4("modelToClip", const_cast<float*>(glm::value_ptr(modelToClipF)));
+    entry->SetUniformMatrix4x4("clipToModel", const_cast<float*>(glm::value_ptr(clipToModelF)));
+    entry->SetUniform2f("viewportSize", viewport);
+    impl.NoAttributes->Bind();
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * boundaryCount));
+    glEndQuery(GL_SAMPLES_PASSED);
+    impl.NoAttributes->Release();
+    impl.ExitTexture->Deactivate();
+    GLuint samples = 0;
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+    impl.Framebuffer->RemoveDepthAttachment();
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    if (samples == 0)
+    {
+      impl.BoundaryTexture->Deactivate();
+      impl.CellPointTexture->Deactivate();
+      impl.PointTexture->Deactivate();
+      break; // no ray enters the mesh again
+    }
+    ++impl.Peels;
+
+    // Traversal pass: walk and integrate, compositing into the other accumulation texture.
+    const int target = 1 - source;
+    impl.Framebuffer->AddColorAttachment(0, impl.AccumulationTexture[target]);
+    impl.Framebuffer->AddColorAttachment(1, impl.ExitTexture);
+    impl.Framebuffer->ActivateDrawBuffers(2);
+    vtkShaderProgram* traverse =
+      window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, traverseSource.c_str(), "");
+    if (!traverse)
+    {
+      failed = true;
+      break;
+    }
+    impl.EntryTexture->Activate();
+    impl.AccumulationTexture[source]->Activate();
+    impl.OpaqueDepthTexture->Activate();
+    impl.NeighbourTexture->Activate();
+    impl.PsiTexture->Activate();
+    traverse->SetUniformi("entry", impl.EntryTexture->GetTextureUnit());
+    traverse->SetUniformi("accumulated", impl.AccumulationTexture[source]->GetTextureUnit());
+    traverse->SetUniformi("opaqueDepth", impl.OpaqueDepthTexture->GetTextureUnit());
+    traverse->SetUniformi("boundaryFaces", impl.BoundaryTexture->GetTextureUnit());
+    traverse->SetUniformi("cellPoints", impl.CellPointTexture->GetTextureUnit());
+    traverse->SetUniformi("cellNeighbours", impl.NeighbourTexture->GetTextureUnit());
+    traverse->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
+    traverse->SetUniformi("psiTable", impl.PsiTexture->GetTextureUnit());
+    traverse->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
+    traverse->SetUniformMatrix4x4("clipToModel", const_cast<float*>(glm::value_ptr(clipToModelF)));
+    traverse->SetUniform2f("viewportSize", viewport);
+    traverse->SetUniformi("integrationMode", this->IntegrationMode);
+    traverse->SetUniformi("fixedSteps", this->FixedSteps);
+    traverse->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
+    traverse->SetUniformi("maximumCells", static_cast<int>(std::min<std::size_t>(cellCount + 8, 1 << 20)));
+    traverse->SetUniformi("nodeCount", static_cast<int>(nodes.size()));
+    traverse->SetUniform4fv("nodeValues", MaximumUniformNodes, nodeValues.data());
+    traverse->SetUniform4fv("nodeScalars", MaximumUniformNodes / 4, nodeScalars.data());
+    impl.NoAttributes->Bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    impl.NoAttributes->Release();
+    for (vtkTextureObject* texture : { impl.EntryTexture.Get(), impl.AccumulationTexture[source].Get(),
+           impl.OpaqueDepthTexture.Get(), impl.NeighbourTexture.Get(), impl.PsiTexture.Get(),
+           impl.BoundaryTexture.Get(), impl.CellPointTexture.Get(), impl.PointTexture.Get() })
+    {
+      texture->Deactivate();
+    }
+    impl.Framebuffer->RemoveColorAttachment(1);
+    impl.Framebuffer->ActivateDrawBuffers(1);
+    source = target;
+  }
+  glDeleteQueries(1, &query);
+  if (this->KeepFloatImage && !failed)
+  {
+    if (!impl.FloatImage)
+      impl.FloatImage = vtkSmartPointer<vtkImageData>::New();
+    impl.FloatImage->SetDimensions(width, height, 1);
+    impl.FloatImage->AllocateScalars(VTK_FLOAT, 4);
+    impl.Framebuffer->AddColorAttachment(0, impl.AccumulationTexture[source]);
+    impl.Framebuffer->ActivateReadBuffer(0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, impl.FloatImage->GetScalarPointer());
+    impl.FloatImage->GetPointData()->GetScalars()->Modified();
+  }
+  impl.Framebuffer->RestorePreviousBindingsAndBuffers();
+  if (failed)
+  {
+    vtkErrorMacro("the hexahedral ray-casting shaders failed to compile or link");
+    return;
+  }
+
+  // ---- Blend the result into VTK's scene.
+  state->vtkglViewport(originX, originY, width, height);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  vtkShaderProgram* composite =
+    window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, uvCompositePremultipliedFS, "");
+  if (!composite)
+  {
+    vtkErrorMacro("the composite shaders failed to compile or link");
+    return;
+  }
+  impl.AccumulationTexture[source]->Activate();
+  composite->SetUniformi("premultipliedImage", impl.AccumulationTexture[source]->GetTextureUnit());
+  impl.NoAttributes->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  impl.NoAttributes->Release();
+  impl.AccumulationTexture[source]->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed after ray casting the hexahedra");
+}

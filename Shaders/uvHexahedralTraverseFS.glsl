@@ -1,0 +1,432 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+// vtkHexahedralRayCastMapper, traversal pass (full screen): from the boundary face the entry pass
+// found, walks the ray through the hexahedra by face adjacency and integrates the exact trilinear
+// field in each (the GPU twin of uvHexahedronRay.h: same steps, same names). Writes the composited
+// colour (front to back, premultiplied, alpha) and where the walk left the mesh (for the next peel).
+//
+// Each cell's field is the cubic of its corner values along the ray, in the cell's affine frame
+// (exact for every parallelepiped). Faces are the two triangles of each quad split along the
+// diagonal through its smallest point id: the exit found in one cell is the entry of the next.
+uniform sampler2D entry;        // (ray parameter, boundary face) of this peel, face < 0: none
+uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
+uniform sampler2D opaqueDepth;
+uniform isamplerBuffer boundaryFaces;
+uniform usamplerBuffer cellPoints;   // 8 point ids per cell
+uniform isamplerBuffer cellNeighbours; // per cell 6 values (2 texels): neighbour * 8 + its face, or -1
+uniform samplerBuffer pointData;
+uniform mat4 clipToModel;
+uniform vec2 viewportSize;
+uniform int integrationMode;    // 0 accurate, 1 fast, 2 fixed steps
+uniform int fixedSteps;
+uniform float opacityThreshold; // early ray termination
+uniform int maximumCells;       // bound on the walk (also guards against cycles)
+uniform int nodeCount;
+uniform vec4 nodeValues[UV_MAX_UNIFORM_NODES];      // (r, g, b, extinction)
+uniform vec4 nodeScalars[UV_MAX_UNIFORM_NODES / 4]; // normalised scalars, four per vec4
+uniform sampler2D psiTable;
+uniform float psiTableSize;
+
+const int faceCorners[24] = int[24](0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7);
+const float gaussNodes[6] = float[6](-0.9324695142, -0.6612093865, -0.2386191861, 0.2386191861, 0.6612093865,
+  0.9324695142);
+const float gaussWeights[6] = float[6](0.1713244924, 0.3607615730, 0.4679139346, 0.4679139346, 0.3607615730,
+  0.1713244924);
+const int maximumCuts = 24;
+
+vec3 colour = vec3(0.0);
+float transmittance = 1.0;
+
+float NodeScalar(int k)
+{
+  return nodeScalars[k >> 2][k & 3];
+}
+
+int NodesAtOrBelow(float s)
+{
+  int low = 0, high = nodeCount;
+  while (low < high)
+  {
+    int middle = (low + high) / 2;
+    if (NodeScalar(middle) <= s)
+      low = middle + 1;
+    else
+      high = middle;
+  }
+  return low;
+}
+
+vec4 Evaluate(float s) // (r, g, b, extinction)
+{
+  int below = NodesAtOrBelow(s);
+  if (below <= 0)
+    return nodeValues[0];
+  if (below >= nodeCount)
+    return nodeValues[nodeCount - 1];
+  float s0 = NodeScalar(below - 1), s1 = NodeScalar(below);
+  return mix(nodeValues[below - 1], nodeValues[below], s1 > s0 ? clamp((s - s0) / (s1 - s0), 0.0, 1.0) : 0.0);
+}
+
+float Psi(float a, float b)
+{
+  if (a + b < 1e-2)
+  {
+    float k = b - a;
+    return 1.0 - (a / 2.0 + k / 6.0) + 0.5 * (a * a / 3.0 + a * k / 4.0 + k * k / 20.0);
+  }
+  vec2 root = sqrt(vec2(a, b));
+  vec2 gamma = root / (1.0 + root);
+  return texture(psiTable, (gamma * (psiTableSize - 1.0) + 0.5) / psiTableSize).r;
+}
+
+void Composite(vec3 premultiplied, float depth)
+{
+  colour += transmittance * premultiplied;
+  transmittance *= exp(-depth);
+}
+
+// ---- The cubic along the ray (uvHexahedronRay.h)
+float CubicValue(vec4 c, float u)
+{
+  return c.x + u * (c.y + u * (c.z + u * c.w));
+}
+
+float CubicSlope(vec4 c, float u)
+{
+  return c.y + u * (2.0 * c.z + 3.0 * u * c.w);
+}
+
+float CubicIntegral(vec4 p, float x)
+{
+  return x * (p.x + x * (p.y / 2.0 + x * (p.z / 3.0 + x * p.w / 4.0)));
+}
+
+vec4 TrilinearAlongSegment(float f[8], vec3 xi0, vec3 xi1)
+{
+  float a000 = f[0], a100 = f[1] - f[0], a010 = f[3] - f[0], a001 = f[4] - f[0];
+  float a110 = f[0] - f[1] + f[2] - f[3];
+  float a101 = f[0] - f[1] - f[4] + f[5];
+  float a011 = f[0] - f[3] - f[4] + f[7];
+  float a111 = -f[0] + f[1] - f[2] + f[3] + f[4] - f[5] + f[6] - f[7];
+  float r = xi0.x, s = xi0.y, t = xi0.z;
+  vec3 d = xi1 - xi0;
+  float fr = a100 + a110 * s + a101 * t + a111 * s * t;
+  float fs = a010 + a110 * r + a011 * t + a111 * r * t;
+  float ft = a001 + a101 * r + a011 * s + a111 * r * s;
+  return vec4(a000 + a100 * r + a010 * s + a001 * t + a110 * r * s + a101 * r * t + a011 * s * t + a111 * r * s * t,
+    fr * d.x + fs * d.y + ft * d.z,
+    (a110 + a111 * t) * d.x * d.y + (a101 + a111 * s) * d.x * d.z + (a011 + a111 * r) * d.y * d.z,
+    a111 * d.x * d.y * d.z);
+}
+
+float RootInBracket(vec4 c, float value, float a, float b)
+{
+  bool rising = CubicValue(c, b) > CubicValue(c, a);
+  float u = 0.5 * (a + b);
+  for (int iteration = 0; iteration < 40; ++iteration)
+  {
+    float fu = CubicValue(c, u) - value;
+    if ((fu < 0.0) == rising)
+      a = u;
+    else
+      b = u;
+    float slope = CubicSlope(c, u);
+    float next = slope != 0.0 ? u - fu / slope : 0.5 * (a + b);
+    if (!(next > a && next < b))
+      next = 0.5 * (a + b);
+    if (abs(next - u) <= 1e-7 || b - a <= 1e-7)
+      return next;
+    u = next;
+  }
+  return u;
+}
+
+/// Integrates the cell's segment of `len` whose scalar is the cubic c(u), u in [0, 1].
+void IntegrateCubicSegment(vec4 c, float len)
+{
+  if (!(len > 0.0))
+    return;
+  if (integrationMode == 2)
+  {
+    float h = len / float(fixedSteps);
+    for (int i = 0; i < fixedSteps; ++i)
+    {
+      vec4 n = Evaluate(CubicValue(c, (float(i) + 0.5) / float(fixedSteps)));
+      Composite((1.0 - exp(-n.a * h)) * n.rgb, n.a * h);
+    }
+    return;
+  }
+  // Split points: 0, extrema, node crossings per monotonic interval, 1.
+  float cuts[maximumCuts];
+  int cutCount = 0;
+  float bounds[4];
+  int boundCount = 0;
+  bounds[boundCount++] = 0.0;
+  float qa = 3.0 * c.w, qb = 2.0 * c.z, qc = c.y;
+  float scale = abs(qa) + abs(qb) + abs(qc);
+  float e0 = -1.0, e1 = -1.0;
+  if (scale > 0.0)
+  {
+    if (abs(qa) <= 1e-7 * scale)
+    {
+      e0 = qb != 0.0 ? -qc / qb : -1.0;
+    }
+    else
+    {
+      float discriminant = qb * qb - 4.0 * qa * qc;
+      if (discriminant >= 0.0)
+      {
+        float q = -0.5 * (qb + (qb >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
+        e0 = q / qa;
+        e1 = q != 0.0 ? qc / q : -1.0;
+      }
+    }
+  }
+  float low = min(e0, e1), high = max(e0, e1);
+  if (low > 0.0 && low < 1.0)
+    bounds[boundCount++] = low;
+  if (high > 0.0 && high < 1.0 && high != low)
+    bounds[boundCount++] = high;
+  bounds[boundCount++] = 1.0;
+  for (int i = 0; i < boundCount && cutCount < maximumCuts; ++i)
+    cuts[cutCount++] = bounds[i];
+  for (int i = 0; i + 1 < boundCount; ++i)
+  {
+    float a = bounds[i], b = bounds[i + 1];
+    float fa = CubicValue(c, a), fb = CubicValue(c, b);
+    float lo = min(fa, fb), hi = max(fa, fb);
+    for (int k = NodesAtOrBelow(lo); k < nodeCount && NodeScalar(k) < hi && cutCount < maximumCuts; ++k)
+    {
+      if (NodeScalar(k) > lo)
+        cuts[cutCount++] = RootInBracket(c, NodeScalar(k), a, b);
+    }
+  }
+  for (int i = 1; i < cutCount; ++i) // insertion sort: a handful of values
+  {
+    float v = cuts[i];
+    int j = i - 1;
+    while (j >= 0 && cuts[j] > v)
+    {
+      cuts[j + 1] = cuts[j];
+      --j;
+    }
+    cuts[j + 1] = v;
+  }
+  for (int i = 0; i + 1 < cutCount; ++i)
+  {
+    float u0 = cuts[i], u1 = cuts[i + 1];
+    if (!(u1 > u0))
+      continue;
+    if (integrationMode == 1)
+    {
+      vec4 a = Evaluate(CubicValue(c, u0)), b = Evaluate(CubicValue(c, u1));
+      float pieceLength = len * (u1 - u0);
+      float da = a.a * pieceLength, db = b.a * pieceLength;
+      if (da + db > 0.0)
+      {
+        float psi = Psi(da, db);
+        float zeta = exp(-0.5 * (da + db));
+        Composite(a.rgb * (1.0 - psi) + b.rgb * (psi - zeta), 0.5 * (da + db));
+      }
+      continue;
+    }
+    // Accurate: the transfer function is linear on this piece; extinction and colour are cubics.
+    float mid = CubicValue(c, 0.5 * (u0 + u1));
+    int below = NodesAtOrBelow(mid);
+    vec4 base, slope = vec4(0.0);
+    float baseScalar = 0.0;
+    if (below <= 0 || below >= nodeCount)
+    {
+      base = nodeValues[below <= 0 ? 0 : nodeCount - 1];
+    }
+    else
+    {
+      float s0 = NodeScalar(below - 1), s1 = NodeScalar(below);
+      base = nodeValues[below - 1];
+      slope = (nodeValues[below] - nodeValues[below - 1]) / (s1 - s0);
+      baseScalar = s0;
+    }
+    vec4 g = vec4(CubicValue(c, u0), CubicSlope(c, u0), c.z + 3.0 * c.w * u0, c.w);
+    vec4 tau = len * vec4(base.a + slope.a * (g.x - baseScalar), slope.a * g.y, slope.a * g.z, slope.a * g.w);
+    float width = u1 - u0;
+    float totalDepth = CubicIntegral(tau, width);
+    if (!(totalDepth > 0.0))
+      continue;
+    int pieces = int(clamp(ceil(4.0 * totalDepth), 1.0, 16.0));
+    for (int k = 0; k < pieces; ++k)
+    {
+      float w0 = width * float(k) / float(pieces), w1 = width * float(k + 1) / float(pieces);
+      float depthBefore = CubicIntegral(tau, w0);
+      float halfWidth = 0.5 * (w1 - w0), centre = 0.5 * (w0 + w1);
+      vec3 pieceColour = vec3(0.0);
+      for (int q = 0; q < 6; ++q)
+      {
+        float w = centre + halfWidth * gaussNodes[q];
+        float scalar = g.x + w * (g.y + w * (g.z + w * g.w));
+        float extinction = tau.x + w * (tau.y + w * (tau.z + w * tau.w));
+        vec3 rgb = base.rgb + slope.rgb * (scalar - baseScalar);
+        pieceColour += gaussWeights[q] * extinction * exp(-(CubicIntegral(tau, w) - depthBefore)) * rgb;
+      }
+      Composite(pieceColour * halfWidth, CubicIntegral(tau, w1) - depthBefore);
+    }
+  }
+}
+
+// ---- Traversal
+vec3 points[8];
+float scalars[8];
+
+void LoadCell(int cell)
+{
+  uvec4 a = texelFetch(cellPoints, 2 * cell), b = texelFetch(cellPoints, 2 * cell + 1);
+  uint ids[8] = uint[8](a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w);
+  for (int k = 0; k < 8; ++k)
+  {
+    vec4 data = texelFetch(pointData, int(ids[k]));
+    points[k] = data.xyz;
+    scalars[k] = data.w;
+  }
+}
+
+/// Ray parameter where the ray meets triangle (a, b, c), or -1 (edges inclusive, so a ray through
+/// an edge is claimed by a face on either side).
+float HitTriangle(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c)
+{
+  vec3 e1 = b - a, e2 = c - a;
+  vec3 p = cross(direction, e2);
+  float det = dot(e1, p);
+  if (abs(det) < 1e-30)
+    return -1.0;
+  float inverse = 1.0 / det;
+  vec3 s = origin - a;
+  float u = dot(s, p) * inverse;
+  vec3 q = cross(s, e1);
+  float v = dot(direction, q) * inverse;
+  const float slack = 1e-5;
+  if (u < -slack || v < -slack || u + v > 1.0 + slack)
+    return -1.0;
+  return dot(e2, q) * inverse;
+}
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 before = texelFetch(accumulated, pixel, 0);
+  colour = before.rgb;
+  transmittance = 1.0 - before.a;
+  vec4 start = texelFetch(entry, pixel, 0);
+  float exitParameter = 3.0e38; // no further peel
+  if (start.g >= 0.0 && transmittance > 1.0 - opacityThreshold)
+  {
+    vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
+    vec4 nearPoint = clipToModel * vec4(ndc, -1.0, 1.0);
+    vec4 farPoint = clipToModel * vec4(ndc, 1.0, 1.0);
+    vec3 origin = nearPoint.xyz / nearPoint.w;
+    vec3 direction = normalize(farPoint.xyz / farPoint.w - origin);
+    // Opaque geometry ends the ray.
+    float depth = texelFetch(opaqueDepth, pixel, 0).r;
+    vec4 opaque = clipToModel * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+    float opaqueT = depth < 1.0 ? dot(opaque.xyz / opaque.w - origin, direction) : 3.0e38;
+
+    ivec4 cellFace = texelFetch(boundaryFaces, int(start.g));
+    int cell = cellFace.x, enterFace = cellFace.y;
+    float t = start.r;
+    for (int step = 0; step < maximumCells; ++step)
+    {
+      LoadCell(cell);
+      // The exit: the nearest face (other than the entry) the ray meets beyond t. Should no
+      // triangle claim the ray (it passes within rounding of an edge or a corner), the face whose
+      // plane it leaves through first is taken instead, as for a convex cell.
+      float exitT = 3.0e38, fallbackT = 3.0e38;
+      int exitFace = -1, fallbackFace = -1;
+      uvec4 idsA = texelFetch(cellPoints, 2 * cell), idsB = texelFetch(cellPoints, 2 * cell + 1);
+      uint ids[8] = uint[8](idsA.x, idsA.y, idsA.z, idsA.w, idsB.x, idsB.y, idsB.z, idsB.w);
+      vec3 cellCentre = vec3(0.0);
+      for (int k = 0; k < 8; ++k)
+        cellCentre += 0.125 * points[k];
+      float tolerance = 1e-6 * (1.0 + abs(t));
+      for (int f = 0; f < 6; ++f)
+      {
+        if (f == enterFace)
+          continue;
+        int corner[4] = int[4](faceCorners[4 * f], faceCorners[4 * f + 1], faceCorners[4 * f + 2], faceCorners[4 * f + 3]);
+        // The diagonal through the smallest point id, as in the entry pass.
+        int smallest = 0;
+        for (int k = 1; k < 4; ++k)
+          smallest = ids[corner[k]] < ids[corner[smallest]] ? k : smallest;
+        vec3 p0 = points[corner[smallest]], p1 = points[corner[(smallest + 1) % 4]],
+             p2 = points[corner[(smallest + 2) % 4]], p3 = points[corner[(smallest + 3) % 4]];
+        float h1 = HitTriangle(origin, direction, p0, p1, p2);
+        float h2 = HitTriangle(origin, direction, p0, p2, p3);
+        if (h1 > t + tolerance && h1 < exitT)
+        {
+          exitT = h1;
+          exitFace = f;
+        }
+        if (h2 > t + tolerance && h2 < exitT)
+        {
+          exitT = h2;
+          exitFace = f;
+        }
+        for (int half2 = 0; half2 < 2; ++half2)
+        {
+          vec3 a = p0, b = half2 == 0 ? p1 : p2, c = half2 == 0 ? p2 : p3;
+          vec3 n = cross(b - a, c - a);
+          n = dot(n, (a + b + c) / 3.0 - cellCentre) < 0.0 ? -n : n;
+          float along = dot(n, direction);
+          if (along > 0.0)
+          {
+            float planeT = dot(n, a - origin) / along;
+            if (planeT > t - tolerance && planeT < fallbackT)
+            {
+              fallbackT = max(planeT, t);
+              fallbackFace = f;
+            }
+          }
+        }
+      }
+      if (exitFace < 0)
+      {
+        exitFace = fallbackFace;
+        exitT = fallbackT;
+      }
+      if (exitFace < 0)
+      {
+        break; // a degenerate cell the ray cannot leave
+      }
+      float segmentEnd = min(exitT, opaqueT);
+      if (segmentEnd > t)
+      {
+        // Parametric coordinates of both ends in the cell's affine frame.
+        vec3 r = 0.25 * ((points[1] - points[0]) + (points[2] - points[3]) + (points[5] - points[4]) + (points[6] - points[7]));
+        vec3 s = 0.25 * ((points[3] - points[0]) + (points[2] - points[1]) + (points[7] - points[4]) + (points[6] - points[5]));
+        vec3 w = 0.25 * ((points[4] - points[0]) + (points[5] - points[1]) + (points[6] - points[2]) + (points[7] - points[3]));
+        vec3 centre = vec3(0.0);
+        for (int k = 0; k < 8; ++k)
+          centre += 0.125 * points[k];
+        mat3 toLocal = inverse(mat3(r, s, w));
+        vec3 frameOrigin = centre - 0.5 * (r + s + w);
+        vec3 xi0 = toLocal * (origin + t * direction - frameOrigin);
+        vec3 xi1 = toLocal * (origin + segmentEnd * direction - frameOrigin);
+        IntegrateCubicSegment(TrilinearAlongSegment(scalars, xi0, xi1), segmentEnd - t);
+      }
+      if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
+      {
+        break;
+      }
+      ivec4 n0 = texelFetch(cellNeighbours, 2 * cell), n1 = texelFetch(cellNeighbours, 2 * cell + 1);
+      int neighbours[6] = int[6](n0.x, n0.y, n0.z, n0.w, n1.x, n1.y);
+      int next = neighbours[exitFace];
+      if (next < 0)
+      {
+        exitParameter = exitT; // left the mesh: the next peel looks beyond here
+        break;
+      }
+      cell = next / 8;
+      enterFace = next % 8;
+      t = exitT;
+    }
+  }
+  gl_FragData[0] = vec4(colour, 1.0 - transmittance);
+  gl_FragData[1] = vec4(exitParameter, 0.0, 0.0, 1.0);
+}
