@@ -7,6 +7,7 @@
 #include "uvHexahedralTraverseFS.h"
 #include "uvLinearCellSplit.h"
 #include "uvPreIntegration.h"
+#include "uvRayCellGeometry.h"
 #include "uvTransferFunctionFromVolumeProperty.h"
 
 #include "vtkCamera.h"
@@ -82,6 +83,9 @@ public:
   glm::dvec3 Center{ 0.0 };
   double ScalarOffset = 0.0, ScalarScale = 1.0;
   int MeshBuilds = 0, Peels = 0;
+  std::string EyeCellKey;
+  glm::dvec3 EyeCellPosition{ 0.0 };
+  int EyeCell = -1;
   bool WarnedNaN = false;
 
   vtkOpenGLRenderWindow* Context = nullptr;
@@ -374,6 +378,36 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   const glm::dmat4 modelToClip = ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) *
     ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld;
   const glm::mat4 modelToClipF(modelToClip), clipToModelF(glm::inverse(modelToClip));
+  // A perspective eye inside the mesh: rays start there, in the cell that holds it.
+  const glm::dvec3 eyeModel =
+    glm::dvec3(glm::inverse(ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld) * glm::dvec4(0, 0, 0, 1));
+  int eyeCell = -1;
+  if (!camera->GetParallelProjection())
+  {
+    if (impl.EyeCellKey != impl.MeshKey || impl.EyeCellPosition != eyeModel)
+    {
+      impl.EyeCell = -1;
+      for (std::size_t c = 0; c < cellCount && impl.EyeCell < 0; ++c)
+      {
+        glm::dvec3 p[8], low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
+        for (int k = 0; k < 8; ++k)
+        {
+          const float* x = &impl.PointData[4 * impl.CellPoints[8 * c + k]];
+          p[k] = glm::dvec3(x[0], x[1], x[2]);
+          low = glm::min(low, p[k]);
+          high = glm::max(high, p[k]);
+        }
+        if (glm::any(glm::lessThan(eyeModel, low)) || glm::any(glm::greaterThan(eyeModel, high)))
+          continue;
+        glm::dvec3 xi(0.5);
+        if (uv::InverseTrilinear(p, eyeModel, xi) && uv::InUnitCube(xi, 1e-9))
+          impl.EyeCell = static_cast<int>(c);
+      }
+      impl.EyeCellKey = impl.MeshKey;
+      impl.EyeCellPosition = eyeModel;
+    }
+    eyeCell = impl.EyeCell;
+  }
 
   // ---- GPU resources.
   if (impl.Context != window)
@@ -519,7 +553,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     impl.Framebuffer->RemoveDepthAttachment();
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);
-    if (samples == 0)
+    if (samples == 0 && !(peel == 0 && eyeCell >= 0))
     {
       impl.BoundaryTexture->Deactivate();
       impl.CellPointTexture->Deactivate();
@@ -561,6 +595,9 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     traverse->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
     traverse->SetUniformi("maximumCells", static_cast<int>(std::min<std::size_t>(cellCount + 8, 1 << 20)));
     traverse->SetUniformi("nodeCount", static_cast<int>(nodes.size()));
+    traverse->SetUniformi("eyeCell", peel == 0 ? eyeCell : -1);
+    const float eye[3] = { static_cast<float>(eyeModel.x), static_cast<float>(eyeModel.y), static_cast<float>(eyeModel.z) };
+    traverse->SetUniform3f("eyeModel", eye);
     traverse->SetUniform4fv("nodeValues", MaximumUniformNodes, nodeValues.data());
     traverse->SetUniform4fv("nodeScalars", MaximumUniformNodes / 4, nodeScalars.data());
     impl.NoAttributes->Bind();

@@ -26,6 +26,8 @@ uniform vec4 nodeValues[UV_MAX_UNIFORM_NODES];      // (r, g, b, extinction)
 uniform vec4 nodeScalars[UV_MAX_UNIFORM_NODES / 4]; // normalised scalars, four per vec4
 uniform sampler2D psiTable;
 uniform float psiTableSize;
+uniform int eyeCell;            // first peel, perspective: the cell holding the eye, or -1
+uniform vec3 eyeModel;
 
 const int faceCorners[24] = int[24](0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7);
 const float gaussNodes[6] = float[6](-0.9324695142, -0.6612093865, -0.2386191861, 0.2386191861, 0.6612093865,
@@ -316,7 +318,8 @@ void main()
   transmittance = 1.0 - before.a;
   vec4 start = texelFetch(entry, pixel, 0);
   float exitParameter = 3.0e38; // no further peel
-  if (start.g >= 0.0 && transmittance > 1.0 - opacityThreshold)
+  bool fromEye = eyeCell >= 0;
+  if ((start.g >= 0.0 || fromEye) && transmittance > 1.0 - opacityThreshold)
   {
     vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
     vec4 nearPoint = clipToModel * vec4(ndc, -1.0, 1.0);
@@ -328,17 +331,28 @@ void main()
     vec4 opaque = clipToModel * vec4(ndc, 2.0 * depth - 1.0, 1.0);
     float opaqueT = depth < 1.0 ? dot(opaque.xyz / opaque.w - origin, direction) : 3.0e38;
 
-    ivec4 cellFace = texelFetch(boundaryFaces, int(start.g));
-    int cell = cellFace.x, enterFace = cellFace.y;
-    float t = start.r;
+    int cell, enterFace;
+    float t;
+    if (fromEye)
+    {
+      // The camera is inside the mesh: every ray starts at the eye, in its cell.
+      cell = eyeCell;
+      enterFace = -1;
+      t = dot(eyeModel - origin, direction);
+    }
+    else
+    {
+      ivec4 cellFace = texelFetch(boundaryFaces, int(start.g));
+      cell = cellFace.x;
+      enterFace = cellFace.y;
+      t = start.r;
+    }
     for (int step = 0; step < maximumCells; ++step)
     {
       LoadCell(cell);
-      // The exit: the nearest face (other than the entry) the ray meets beyond t. Should no
-      // triangle claim the ray (it passes within rounding of an edge or a corner), the face whose
-      // plane it leaves through first is taken instead, as for a convex cell.
-      float exitT = 3.0e38, fallbackT = 3.0e38;
-      int exitFace = -1, fallbackFace = -1;
+      // The exit: the nearest face (other than the entry) the ray meets beyond t.
+      float exitT = 3.0e38;
+      int exitFace = -1;
       uvec4 idsA = texelFetch(cellPoints, 2 * cell), idsB = texelFetch(cellPoints, 2 * cell + 1);
       uint ids[8] = uint[8](idsA.x, idsA.y, idsA.z, idsA.w, idsB.x, idsB.y, idsB.z, idsB.w);
       vec3 cellCentre = vec3(0.0);
@@ -368,31 +382,79 @@ void main()
           exitT = h2;
           exitFace = f;
         }
-        for (int half2 = 0; half2 < 2; ++half2)
+      }
+      if (exitFace < 0)
+      {
+        // No face claims the ray: it passed within rounding of an edge or a corner into a cell it
+        // only touches. Find the cell holding a point just ahead by walking towards it across the
+        // faces it lies outside of, and go on from there.
+        bool located = false;
+        float ahead = 0.0;
+        int startCell = cell;
+        for (int attempt = 0; attempt < 3 && !located; ++attempt)
         {
-          vec3 a = p0, b = half2 == 0 ? p1 : p2, c = half2 == 0 ? p2 : p3;
-          vec3 n = cross(b - a, c - a);
-          n = dot(n, (a + b + c) / 3.0 - cellCentre) < 0.0 ? -n : n;
-          float along = dot(n, direction);
-          if (along > 0.0)
+          // A point a little ahead (farther on each attempt), located by walking towards it.
+          cell = startCell;
+          LoadCell(cell);
+          ahead = (attempt == 0 ? 1e-3 : (attempt == 1 ? 1e-2 : 5e-2)) * length(points[6] - points[0]);
+          vec3 target = origin + (t + ahead) * direction;
+          for (int walk = 0; walk < 32; ++walk)
           {
-            float planeT = dot(n, a - origin) / along;
-            if (planeT > t - tolerance && planeT < fallbackT)
+            // Cross the face the point lies farthest outside of (outside either of its two triangles),
+            // preferring faces with a neighbour (near a corner it can lie just outside a boundary face).
+            ivec4 m0 = texelFetch(cellNeighbours, 2 * cell), m1 = texelFetch(cellNeighbours, 2 * cell + 1);
+            int across[6] = int[6](m0.x, m0.y, m0.z, m0.w, m1.x, m1.y);
+            uvec4 wa = texelFetch(cellPoints, 2 * cell), wb = texelFetch(cellPoints, 2 * cell + 1);
+            uint walkIds[8] = uint[8](wa.x, wa.y, wa.z, wa.w, wb.x, wb.y, wb.z, wb.w);
+            int outside = -1, outsideBoundary = -1;
+            float farthest = 0.0, farthestBoundary = 0.0;
+            vec3 centre = vec3(0.0);
+            for (int k = 0; k < 8; ++k)
+              centre += 0.125 * points[k];
+            for (int f = 0; f < 6; ++f)
             {
-              fallbackT = max(planeT, t);
-              fallbackFace = f;
+              int corner[4] = int[4](faceCorners[4 * f], faceCorners[4 * f + 1], faceCorners[4 * f + 2], faceCorners[4 * f + 3]);
+              int smallest = 0;
+              for (int k = 1; k < 4; ++k)
+                smallest = walkIds[corner[k]] < walkIds[corner[smallest]] ? k : smallest;
+              vec3 q0 = points[corner[smallest]], q1 = points[corner[(smallest + 1) % 4]],
+                   q2 = points[corner[(smallest + 2) % 4]], q3 = points[corner[(smallest + 3) % 4]];
+              float distanceOut = -3.0e38;
+              for (int half2 = 0; half2 < 2; ++half2)
+              {
+                vec3 a = q0, b = half2 == 0 ? q1 : q2, c = half2 == 0 ? q2 : q3;
+                vec3 n = normalize(cross(b - a, c - a));
+                n = dot(n, (a + b + c) / 3.0 - centre) < 0.0 ? -n : n;
+                distanceOut = max(distanceOut, dot(n, target - a));
+              }
+              if (across[f] >= 0 && distanceOut > farthest)
+              {
+                farthest = distanceOut;
+                outside = f;
+              }
+              if (across[f] < 0 && distanceOut > farthestBoundary)
+              {
+                farthestBoundary = distanceOut;
+                outsideBoundary = f;
+              }
             }
+            if (outside < 0)
+            {
+              located = outsideBoundary < 0; // inside this cell, or outside the mesh
+              break;
+            }
+            cell = across[outside] / 8;
+            LoadCell(cell);
           }
         }
-      }
-      if (exitFace < 0)
-      {
-        exitFace = fallbackFace;
-        exitT = fallbackT;
-      }
-      if (exitFace < 0)
-      {
-        break; // a degenerate cell the ray cannot leave
+        if (!located)
+        {
+          exitParameter = t;
+          break;
+        }
+        enterFace = -1;
+        t += ahead; // the skipped sliver of path is a thousandth of a cell
+        continue;
       }
       float segmentEnd = min(exitT, opaqueT);
       if (segmentEnd > t)
