@@ -592,6 +592,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     traverse->SetUniform2f("viewportSize", viewport);
     traverse->SetUniformi("integrationMode", this->IntegrationMode);
     traverse->SetUniformi("fixedSteps", this->FixedSteps);
+    traverse->SetUniformi("exactEnds", this->ExactSegmentEnds ? 1 : 0);
     traverse->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
     traverse->SetUniformi("maximumCells", static_cast<int>(std::min<std::size_t>(cellCount + 8, 1 << 20)));
     traverse->SetUniformi("nodeCount", static_cast<int>(nodes.size()));

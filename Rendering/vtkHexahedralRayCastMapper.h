@@ -61,6 +61,16 @@ public:
   ///@}
 
   ///@{
+  /// Curved cells: map each segment's ends into the cell by the isoparametric inverse (Newton)
+  /// rather than the affine frame (default on). The field along the ray is then exact at every
+  /// face crossing and continuous from cell to cell; between them it is the cubic through those
+  /// coordinates. Identical on parallelepipeds; off is the frame alone (cheaper).
+  vtkSetMacro(ExactSegmentEnds, bool);
+  vtkGetMacro(ExactSegmentEnds, bool);
+  vtkBooleanMacro(ExactSegmentEnds, bool);
+  ///@}
+
+  ///@{
   /// Early ray termination: a ray stops when its opacity reaches this (default 0.99; 1 disables).
   vtkSetClampMacro(OpacityThreshold, double, 0.0, 1.0);
   vtkGetMacro(OpacityThreshold, double);
@@ -96,6 +106,7 @@ protected:
 
   int IntegrationMode = ACCURATE;
   int FixedSteps = 8;
+  bool ExactSegmentEnds = true;
   double OpacityThreshold = 0.99;
   int MaximumPeels = 8;
   bool KeepFloatImage = false;

@@ -19,6 +19,7 @@ uniform mat4 clipToModel;
 uniform vec2 viewportSize;
 uniform int integrationMode;    // 0 accurate, 1 fast, 2 fixed steps
 uniform int fixedSteps;
+uniform int exactEnds;           // 1: segment ends by the isoparametric inverse (curved cells)
 uniform float opacityThreshold; // early ray termination
 uniform int maximumCells;       // bound on the walk (also guards against cycles)
 uniform int nodeCount;
@@ -290,6 +291,29 @@ void LoadCell(int cell)
   }
 }
 
+/// Trilinear coordinates of x in the loaded cell: Newton on the isoparametric map from `xi`.
+vec3 InverseTrilinear(vec3 x, vec3 xi)
+{
+  vec3 b = points[1] - points[0], c = points[3] - points[0], d = points[4] - points[0];
+  vec3 e = points[0] - points[1] + points[2] - points[3];
+  vec3 f = points[0] - points[1] - points[4] + points[5];
+  vec3 g = points[0] - points[3] - points[4] + points[7];
+  vec3 h = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
+  for (int iteration = 0; iteration < 8; ++iteration)
+  {
+    float r = xi.x, s = xi.y, t = xi.z;
+    vec3 mapped = points[0] + b * r + c * s + d * t + e * r * s + f * r * t + g * s * t + h * r * s * t;
+    mat3 jacobian = mat3(b + e * s + f * t + h * s * t, c + e * r + g * t + h * r * t, d + f * r + g * s + h * r * s);
+    if (abs(determinant(jacobian)) < 1e-30)
+      break;
+    vec3 step = inverse(jacobian) * (mapped - x);
+    xi = clamp(xi - step, vec3(-0.5), vec3(1.5));
+    if (max(abs(step.x), max(abs(step.y), abs(step.z))) < 1e-6)
+      break;
+  }
+  return xi;
+}
+
 /// Ray parameter where the ray meets triangle (a, b, c), or -1 (edges inclusive, so a ray through
 /// an edge is claimed by a face on either side).
 float HitTriangle(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c)
@@ -468,8 +492,17 @@ void main()
           centre += 0.125 * points[k];
         mat3 toLocal = inverse(mat3(r, s, w));
         vec3 frameOrigin = centre - 0.5 * (r + s + w);
-        vec3 xi0 = toLocal * (origin + t * direction - frameOrigin);
-        vec3 xi1 = toLocal * (origin + segmentEnd * direction - frameOrigin);
+        vec3 entryPoint = origin + t * direction, exitPoint = origin + segmentEnd * direction;
+        vec3 xi0 = toLocal * (entryPoint - frameOrigin);
+        vec3 xi1 = toLocal * (exitPoint - frameOrigin);
+        if (exactEnds == 1)
+        {
+          // The ends' coordinates through the isoparametric map (the frame's are the start): the
+          // field then matches the cell's exactly where the ray crosses faces, so it is continuous
+          // from cell to cell also on curved meshes.
+          xi0 = InverseTrilinear(entryPoint, xi0);
+          xi1 = InverseTrilinear(exitPoint, xi1);
+        }
         IntegrateCubicSegment(TrilinearAlongSegment(scalars, xi0, xi1), segmentEnd - t);
       }
       if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)

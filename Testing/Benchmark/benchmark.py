@@ -13,7 +13,8 @@ Pareto front (<scene>_time_vs_error.png) and a montage (<scene>_montage.png: top
 then each mapper's first view, bottom row their error heat maps). Reference images are cached in
 <output>/reference-cache, keyed by everything that determines them.
 
-Mappers register in MAPPERS below: a name, a factory, and whether it needs tetrahedra.
+Mappers register in MAPPERS below: a name, a factory, and the input it takes: "tets" (the scene's
+mesh split into tetrahedra) or "hexahedra" (the mesh itself; run on hexahedral scenes only).
 """
 import argparse
 import csv
@@ -25,7 +26,8 @@ import statistics
 import sys
 import time
 
-from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra, vtkPreIntegratedTetrahedraMapper,
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra, vtkHexahedralRayCastMapper,
+                                vtkPreIntegratedTetrahedraMapper,
                                 vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
@@ -57,16 +59,20 @@ SHARED = os.path.abspath(os.path.join(ROOT, "..", "shared", "data"))
 REFERENCE_VERSION = "1"  # bump when the reference renderer's output changes
 
 # ---------------------------------------------------------------------------------------------
-# Mappers: (name, factory, needs tetrahedra). This project's mappers register here as they land.
+# Mappers: (name, factory, input: "tets" or "hexahedra"). This project's mappers register here as they land.
 MAPPERS = [
-    ("VTK ProjectedTetrahedra", vtkProjectedTetrahedraMapper, True),
-    ("VTK UGVolumeRayCast", vtkUnstructuredGridVolumeRayCastMapper, True),
-    ("VTK UGZSweep", vtkUnstructuredGridVolumeZSweepMapper, True),
-    ("UV PreIntegratedTetrahedra", vtkPreIntegratedTetrahedraMapper, True),
+    ("VTK ProjectedTetrahedra", vtkProjectedTetrahedraMapper, "tets"),
+    ("VTK UGVolumeRayCast", vtkUnstructuredGridVolumeRayCastMapper, "tets"),
+    ("VTK UGZSweep", vtkUnstructuredGridVolumeZSweepMapper, "tets"),
+    ("UV PreIntegratedTetrahedra", vtkPreIntegratedTetrahedraMapper, "tets"),
     ("UV PreIntegrated (geometry shader)", lambda: configured(vtkPreIntegratedTetrahedraMapper,
-                                                             ProjectionRouteToGeometryShader=None), True),
+                                                             ProjectionRouteToGeometryShader=None), "tets"),
     ("UV AverageScalarTetrahedra", lambda: configured(vtkPreIntegratedTetrahedraMapper,
-                                                      IntegrationModeToAverageScalar=None), True),
+                                                      IntegrationModeToAverageScalar=None), "tets"),
+    ("UV HexRayCast Accurate", vtkHexahedralRayCastMapper, "hexahedra"),
+    ("UV HexRayCast Fast", lambda: configured(vtkHexahedralRayCastMapper, IntegrationModeToFast=None), "hexahedra"),
+    ("UV HexRayCast 8 steps", lambda: configured(vtkHexahedralRayCastMapper, IntegrationModeToFixedSteps=None),
+     "hexahedra"),
 ]
 
 
@@ -492,9 +498,12 @@ def main():
         print(f"  reference: {reference_seconds:.1f} s (0 when cached)", flush=True)
 
         scene_rows, first_views, heat_maps = [], [over_background(references[0])], [over_background(references[0])]
-        for name, factory, needs_tets in mappers:
+        hexahedral = all(mesh.GetCellType(c) in (11, 12) for c in range(min(mesh.GetNumberOfCells(), 1000)))
+        for name, factory, takes in mappers:
+            if takes == "hexahedra" and not hexahedral:
+                continue
             preparation, frames, memory, images = run_mapper(
-                name, factory, tets if needs_tets else mesh, scalar, prop, cameras, size)
+                name, factory, tets if takes == "tets" else mesh, scalar, prop, cameras, size)
             errors = []
             for k, (image, reference) in enumerate(zip(images, references)):
                 metrics = vtkVolumeImageErrorMetrics()
