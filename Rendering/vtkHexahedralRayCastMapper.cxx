@@ -1,6 +1,7 @@
 #include "vtkHexahedralRayCastMapper.h"
 
 #include "uvCompositePremultipliedFS.h"
+#include "uvBilinearFaceLib.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvHexahedralEntryFS.h"
 #include "uvHexahedralEntryVS.h"
@@ -491,6 +492,10 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     const auto at = text.find(marker);
     if (at != std::string::npos)
       text.replace(at, marker.size(), defines);
+    const std::string faces = "//UV::BilinearFace";
+    const auto facesAt = text.find(faces);
+    if (facesAt != std::string::npos)
+      text.replace(facesAt, faces.size(), uvBilinearFaceLib);
     return text;
   };
   const std::string traverseSource = withDefines(uvHexahedralTraverseFS);

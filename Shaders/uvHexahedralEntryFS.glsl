@@ -8,6 +8,14 @@ flat in int boundaryFace;
 flat in vec3 outwardNormal;
 
 uniform mat4 clipToModel;
+uniform mat4 modelToClip;
+uniform isamplerBuffer boundaryFaces;
+uniform usamplerBuffer cellPoints;
+uniform samplerBuffer pointData;
+
+const int faceCorners[24] = int[24](0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7);
+
+//UV::BilinearFace
 uniform vec2 viewportSize;
 uniform sampler2D previousExit; // ray parameter where the previous peel's traversal ended
 uniform int firstPeel;
@@ -23,10 +31,39 @@ void main()
   {
     discard; // the ray leaves the mesh here
   }
-  float t = dot(modelPosition - origin, direction);
-  if (firstPeel == 0 && !(t > texelFetch(previousExit, ivec2(gl_FragCoord.xy), 0).r))
+  // Where the ray meets the face exactly (the rasterised triangles only choose the pixels).
+  ivec4 cellFace = texelFetch(boundaryFaces, boundaryFace);
+  uvec4 idsA = texelFetch(cellPoints, 2 * cellFace.x), idsB = texelFetch(cellPoints, 2 * cellFace.x + 1);
+  uint cellIds[8] = uint[8](idsA.x, idsA.y, idsA.z, idsA.w, idsB.x, idsB.y, idsB.z, idsB.w);
+  vec3 q[4];
+  uint qi[4];
+  for (int k = 0; k < 4; ++k)
   {
-    discard; // already traversed
+    qi[k] = cellIds[faceCorners[4 * cellFace.y + k]];
+    q[k] = texelFetch(pointData, int(qi[k])).xyz;
   }
+  vec3 a, b, c, d;
+  CanonicalQuad(q, qi, a, b, c, d);
+  float h0, h1;
+  int hits = HitPatch(origin, direction, a, b, c, d, h0, h1);
+  float after = firstPeel == 1 ? -3.0e38 : texelFetch(previousExit, ivec2(gl_FragCoord.xy), 0).r;
+  float t = 3.0e38;
+  if (hits > 0 && h0 > after)
+    t = h0;
+  if (hits > 1 && h1 > after)
+    t = min(t, h1);
+  if (hits == 0)
+  {
+    // Rasterisation put this pixel on this face, the exact patch just misses it (its centre is
+    // within rounding of the face's edge): take the triangle's point; the walk sorts out the cell.
+    float nearby = dot(modelPosition - origin, direction);
+    t = nearby > after ? nearby : t;
+  }
+  if (!(t < 3.0e38))
+  {
+    discard; // traversed already
+  }
+  vec4 clip = modelToClip * vec4(origin + t * direction, 1.0);
+  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
   gl_FragData[0] = vec4(t, float(boundaryFace), 0.0, 1.0);
 }

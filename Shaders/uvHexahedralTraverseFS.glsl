@@ -6,8 +6,8 @@
 // colour (front to back, premultiplied, alpha) and where the walk left the mesh (for the next peel).
 //
 // Each cell's field is the cubic of its corner values along the ray, in the cell's affine frame
-// (exact for every parallelepiped). Faces are the two triangles of each quad split along the
-// diagonal through its smallest point id: the exit found in one cell is the entry of the next.
+// (exact for every parallelepiped). Faces are exact bilinear patches, parameterised the same way by
+// every cell (uvBilinearFaceLib.glsl): the exit found in one cell is the entry of the next.
 uniform sampler2D entry;        // (ray parameter, boundary face) of this peel, face < 0: none
 uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
 uniform sampler2D opaqueDepth;
@@ -275,6 +275,8 @@ void IntegrateCubicSegment(vec4 c, float len)
   }
 }
 
+//UV::BilinearFace
+
 // ---- Traversal
 vec3 points[8];
 float scalars[8];
@@ -388,22 +390,21 @@ void main()
         if (f == enterFace)
           continue;
         int corner[4] = int[4](faceCorners[4 * f], faceCorners[4 * f + 1], faceCorners[4 * f + 2], faceCorners[4 * f + 3]);
-        // The diagonal through the smallest point id, as in the entry pass.
-        int smallest = 0;
-        for (int k = 1; k < 4; ++k)
-          smallest = ids[corner[k]] < ids[corner[smallest]] ? k : smallest;
-        vec3 p0 = points[corner[smallest]], p1 = points[corner[(smallest + 1) % 4]],
-             p2 = points[corner[(smallest + 2) % 4]], p3 = points[corner[(smallest + 3) % 4]];
-        float h1 = HitTriangle(origin, direction, p0, p1, p2);
-        float h2 = HitTriangle(origin, direction, p0, p2, p3);
-        if (h1 > t + tolerance && h1 < exitT)
+        // The face exactly, as the bilinear patch through its corners (parameterised canonically).
+        vec3 q[4] = vec3[4](points[corner[0]], points[corner[1]], points[corner[2]], points[corner[3]]);
+        uint qi[4] = uint[4](ids[corner[0]], ids[corner[1]], ids[corner[2]], ids[corner[3]]);
+        vec3 a, b, c, d;
+        CanonicalQuad(q, qi, a, b, c, d);
+        float h0, h1;
+        int hits = HitPatch(origin, direction, a, b, c, d, h0, h1);
+        if (hits > 0 && h0 > t + tolerance && h0 < exitT)
         {
-          exitT = h1;
+          exitT = h0;
           exitFace = f;
         }
-        if (h2 > t + tolerance && h2 < exitT)
+        if (hits > 1 && h1 > t + tolerance && h1 < exitT)
         {
-          exitT = h2;
+          exitT = h1;
           exitFace = f;
         }
       }

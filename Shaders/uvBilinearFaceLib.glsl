@@ -1,0 +1,88 @@
+// Exact ray / bilinear-patch intersection for hexahedron faces, shared by the entry and traversal
+// passes of vtkHexahedralRayCastMapper (the GPU twin of IntersectBilinearPatch in
+// uvRayCellGeometry.h). Every cell, and the boundary pass, parameterises a face the same way --
+// corner a the smallest point id, b its neighbour with the smaller id, c opposite a -- so two cells
+// sharing a face compute bitwise the same crossing: the walk is watertight.
+
+/// Canonical corners of a quad given in cyclic order with their point ids.
+void CanonicalQuad(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, out vec3 d)
+{
+  int k = 0;
+  for (int i = 1; i < 4; ++i)
+    k = ids[i] < ids[k] ? i : k;
+  int next = (k + 1) % 4, previous = (k + 3) % 4;
+  bool forward = ids[next] < ids[previous];
+  a = p[k];
+  b = forward ? p[next] : p[previous];
+  c = p[(k + 2) % 4];
+  d = forward ? p[previous] : p[next];
+}
+
+/// Ray parameters where origin + t direction meets the patch a + u(b-a) + v(d-a) + uv(a-b+c-d),
+/// u and v in [0, 1] (a small slack keeps shared edges covered); returns how many (0, 1 or 2).
+int HitPatch(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out float t0, out float t1)
+{
+  vec3 e1 = b - a, e2 = d - a, e3 = a - b + c - d;
+  // Two planes through the ray.
+  vec3 n1 = abs(direction.x) > abs(direction.z) ? vec3(-direction.y, direction.x, 0.0)
+                                                : vec3(0.0, -direction.z, direction.y);
+  n1 = normalize(n1);
+  vec3 n2 = cross(direction, n1);
+  vec3 ao = a - origin;
+  float A1 = dot(n1, ao), B1 = dot(n1, e1), C1 = dot(n1, e2), D1 = dot(n1, e3);
+  float A2 = dot(n2, ao), B2 = dot(n2, e1), C2 = dot(n2, e2), D2 = dot(n2, e3);
+  // Eliminating u leaves qa v^2 + qb v + qc = 0.
+  float qa = C2 * D1 - C1 * D2;
+  float qb = A2 * D1 + C2 * B1 - A1 * D2 - C1 * B2;
+  float qc = A2 * B1 - A1 * B2;
+  float roots[2];
+  int rootCount = 0;
+  float scale = abs(qa) + abs(qb) + abs(qc);
+  if (!(scale > 0.0))
+    return 0;
+  if (abs(qa) <= 1e-6 * scale)
+  {
+    if (qb != 0.0)
+      roots[rootCount++] = -qc / qb;
+  }
+  else
+  {
+    float discriminant = qb * qb - 4.0 * qa * qc;
+    if (discriminant >= 0.0)
+    {
+      float q = -0.5 * (qb + (qb >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
+      roots[rootCount++] = q / qa;
+      if (q != 0.0)
+        roots[rootCount++] = qc / q;
+    }
+  }
+  const float slack = 1e-5;
+  int hits = 0;
+  t0 = -3.0e38;
+  t1 = -3.0e38;
+  for (int i = 0; i < rootCount; ++i)
+  {
+    float v = roots[i];
+    if (v < -slack || v > 1.0 + slack)
+      continue;
+    float denominator1 = B1 + v * D1, denominator2 = B2 + v * D2;
+    float u = abs(denominator1) > abs(denominator2) ? -(A1 + v * C1) / denominator1 : -(A2 + v * C2) / denominator2;
+    if (!(u >= -slack && u <= 1.0 + slack))
+      continue;
+    vec3 hit = a + u * e1 + v * e2 + u * v * e3;
+    float t = dot(hit - origin, direction);
+    if (hits == 0)
+      t0 = t;
+    else
+      t1 = t;
+    ++hits;
+  }
+  return hits;
+}
+
+/// Outward normal of the patch at (the point nearest to) `x`, from the cell centre's side.
+vec3 PatchNormal(vec3 a, vec3 b, vec3 c, vec3 d, vec3 cellCentre)
+{
+  vec3 n = cross(c - a, d - b);
+  return dot(n, 0.25 * (a + b + c + d) - cellCentre) < 0.0 ? -n : n;
+}
