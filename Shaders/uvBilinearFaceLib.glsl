@@ -18,9 +18,9 @@ void CanonicalQuad(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, o
   d = forward ? p[previous] : p[next];
 }
 
-/// Ray parameters where origin + t direction meets the patch a + u(b-a) + v(d-a) + uv(a-b+c-d),
-/// u and v in [0, 1] (a small slack keeps shared edges covered); returns how many (0, 1 or 2).
-int HitPatch(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out float t0, out float t1)
+/// HitPatch, with the hits' patch coordinates (u, v).
+int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out float t0, out float t1,
+  out vec2 uv0, out vec2 uv1)
 {
   vec3 e1 = b - a, e2 = d - a, e3 = a - b + c - d;
   // Two planes through the ray.
@@ -60,6 +60,8 @@ int HitPatch(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out fl
   int hits = 0;
   t0 = -3.0e38;
   t1 = -3.0e38;
+  uv0 = vec2(0.0);
+  uv1 = vec2(0.0);
   for (int i = 0; i < rootCount; ++i)
   {
     float v = roots[i];
@@ -72,12 +74,26 @@ int HitPatch(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out fl
     vec3 hit = a + u * e1 + v * e2 + u * v * e3;
     float t = dot(hit - origin, direction);
     if (hits == 0)
+    {
       t0 = t;
+      uv0 = vec2(u, v);
+    }
     else
+    {
       t1 = t;
+      uv1 = vec2(u, v);
+    }
     ++hits;
   }
   return hits;
+}
+
+/// Ray parameters where origin + t direction meets the patch a + u(b-a) + v(d-a) + uv(a-b+c-d),
+/// u and v in [0, 1] (a small slack keeps shared edges covered); returns how many (0, 1 or 2).
+int HitPatch(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out float t0, out float t1)
+{
+  vec2 uv0, uv1;
+  return HitPatchAt(origin, direction, a, b, c, d, t0, t1, uv0, uv1);
 }
 
 /// Outward normal of the patch at (the point nearest to) `x`, from the cell centre's side.
@@ -85,4 +101,11 @@ vec3 PatchNormal(vec3 a, vec3 b, vec3 c, vec3 d, vec3 cellCentre)
 {
   vec3 n = cross(c - a, d - b);
   return dot(n, 0.25 * (a + b + c + d) - cellCentre) < 0.0 ? -n : n;
+}
+
+/// The patch's normal at (u, v) (orientation of the canonical parameterisation).
+vec3 PatchNormalAt(vec3 a, vec3 b, vec3 c, vec3 d, vec2 uv)
+{
+  vec3 e1 = b - a, e2 = d - a, e3 = a - b + c - d;
+  return cross(e1 + uv.y * e3, e2 + uv.x * e3);
 }

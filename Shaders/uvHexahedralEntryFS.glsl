@@ -27,10 +27,6 @@ void main()
   vec4 farPoint = clipToModel * vec4(ndc, 1.0, 1.0);
   vec3 origin = nearPoint.xyz / nearPoint.w;
   vec3 direction = normalize(farPoint.xyz / farPoint.w - origin);
-  if (dot(outwardNormal, direction) >= 0.0)
-  {
-    discard; // the ray leaves the mesh here
-  }
   // Where the ray meets the face exactly (the rasterised triangles only choose the pixels).
   ivec4 cellFace = texelFetch(boundaryFaces, boundaryFace);
   uvec4 idsA = texelFetch(cellPoints, 2 * cellFace.x), idsB = texelFetch(cellPoints, 2 * cellFace.x + 1);
@@ -45,15 +41,25 @@ void main()
   vec3 a, b, c, d;
   CanonicalQuad(q, qi, a, b, c, d);
   float h0, h1;
-  int hits = HitPatch(origin, direction, a, b, c, d, h0, h1);
+  vec2 uv0, uv1;
+  int hits = HitPatchAt(origin, direction, a, b, c, d, h0, h1, uv0, uv1);
   float after = firstPeel == 1 ? -3.0e38 : texelFetch(previousExit, ivec2(gl_FragCoord.xy), 0).r;
+  // Only where the ray enters the mesh: the patch's own normal there, turned outward (a curved
+  // boundary face can be entered on one part and left on another).
+  vec3 normal0 = PatchNormalAt(a, b, c, d, uv0), normal1 = PatchNormalAt(a, b, c, d, uv1);
+  normal0 = dot(normal0, outwardNormal) < 0.0 ? -normal0 : normal0;
+  normal1 = dot(normal1, outwardNormal) < 0.0 ? -normal1 : normal1;
   float t = 3.0e38;
-  if (hits > 0 && h0 > after)
+  if (hits > 0 && h0 > after && dot(normal0, direction) < 0.0)
     t = h0;
-  if (hits > 1 && h1 > after)
+  if (hits > 1 && h1 > after && dot(normal1, direction) < 0.0)
     t = min(t, h1);
   if (hits == 0)
   {
+    if (dot(outwardNormal, direction) >= 0.0)
+    {
+      discard; // the ray leaves the mesh here
+    }
     // Rasterisation put this pixel on this face, the exact patch just misses it (its centre is
     // within rounding of the face's edge): take the triangle's point; the walk sorts out the cell.
     float nearby = dot(modelPosition - origin, direction);

@@ -425,41 +425,32 @@ void main()
           vec3 target = origin + (t + ahead) * direction;
           for (int walk = 0; walk < 32; ++walk)
           {
-            // Cross the face the point lies farthest outside of (outside either of its two triangles),
-            // preferring faces with a neighbour (near a corner it can lie just outside a boundary face).
+            // The point's trilinear coordinates in this cell decide, consistently with the exact
+            // bilinear faces, whether it is inside, and if not, which face to cross: the one of the
+            // most violated coordinate (r = 0: face 5, r = 1: face 3, s = 0: 2, s = 1: 4, t = 0: 0,
+            // t = 1: 1), preferring faces with a neighbour.
             ivec4 m0 = texelFetch(cellNeighbours, 2 * cell), m1 = texelFetch(cellNeighbours, 2 * cell + 1);
             int across[6] = int[6](m0.x, m0.y, m0.z, m0.w, m1.x, m1.y);
-            uvec4 wa = texelFetch(cellPoints, 2 * cell), wb = texelFetch(cellPoints, 2 * cell + 1);
-            uint walkIds[8] = uint[8](wa.x, wa.y, wa.z, wa.w, wb.x, wb.y, wb.z, wb.w);
-            int outside = -1, outsideBoundary = -1;
-            float farthest = 0.0, farthestBoundary = 0.0;
             vec3 centre = vec3(0.0);
             for (int k = 0; k < 8; ++k)
               centre += 0.125 * points[k];
+            vec3 r = 0.25 * ((points[1] - points[0]) + (points[2] - points[3]) + (points[5] - points[4]) + (points[6] - points[7]));
+            vec3 s = 0.25 * ((points[3] - points[0]) + (points[2] - points[1]) + (points[7] - points[4]) + (points[6] - points[5]));
+            vec3 w = 0.25 * ((points[4] - points[0]) + (points[5] - points[1]) + (points[6] - points[2]) + (points[7] - points[3]));
+            vec3 xi = InverseTrilinear(target, inverse(mat3(r, s, w)) * (target - (centre - 0.5 * (r + s + w))));
+            float violation[6] = float[6](-xi.z, xi.z - 1.0, -xi.y, xi.x - 1.0, xi.y - 1.0, -xi.x);
+            int outside = -1, outsideBoundary = -1;
+            float farthest = 1e-6, farthestBoundary = 1e-6;
             for (int f = 0; f < 6; ++f)
             {
-              int corner[4] = int[4](faceCorners[4 * f], faceCorners[4 * f + 1], faceCorners[4 * f + 2], faceCorners[4 * f + 3]);
-              int smallest = 0;
-              for (int k = 1; k < 4; ++k)
-                smallest = walkIds[corner[k]] < walkIds[corner[smallest]] ? k : smallest;
-              vec3 q0 = points[corner[smallest]], q1 = points[corner[(smallest + 1) % 4]],
-                   q2 = points[corner[(smallest + 2) % 4]], q3 = points[corner[(smallest + 3) % 4]];
-              float distanceOut = -3.0e38;
-              for (int half2 = 0; half2 < 2; ++half2)
+              if (across[f] >= 0 && violation[f] > farthest)
               {
-                vec3 a = q0, b = half2 == 0 ? q1 : q2, c = half2 == 0 ? q2 : q3;
-                vec3 n = normalize(cross(b - a, c - a));
-                n = dot(n, (a + b + c) / 3.0 - centre) < 0.0 ? -n : n;
-                distanceOut = max(distanceOut, dot(n, target - a));
-              }
-              if (across[f] >= 0 && distanceOut > farthest)
-              {
-                farthest = distanceOut;
+                farthest = violation[f];
                 outside = f;
               }
-              if (across[f] < 0 && distanceOut > farthestBoundary)
+              if (across[f] < 0 && violation[f] > farthestBoundary)
               {
-                farthestBoundary = distanceOut;
+                farthestBoundary = violation[f];
                 outsideBoundary = f;
               }
             }

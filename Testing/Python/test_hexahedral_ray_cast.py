@@ -253,6 +253,11 @@ class BaselineTests(SceneTestCase):
         self.assertEqual(scene.events.errors, 0)
         return scene
 
+    def test_twisted_grid(self):
+        mesh = analytic(10, distortion=vtkAnalyticMeshSource.TWIST)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        self.compare(self.render(mesh, prop, camera_for(mesh, distance=1.7)), "hexahedral_twisted_grid.png")
+
     def test_rotated_grid(self):
         mesh = analytic(8, distortion=vtkAnalyticMeshSource.ROTATE_45)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
