@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """The README's main job: renders the bundled default dataset and names the PNG files it wrote.
 
-The default hexahedral mesh split by vtkHexahedraToTetrahedra and volume-rendered with this
-project's vtkPreIntegratedTetrahedraMapper (alone, then with a lit isosurface), beside VTK's own
-vtkProjectedTetrahedraMapper for comparison, and the gradient from vtkVertexGradientFilter on a
-cut plane.
+The default hexahedral mesh ray-cast as hexahedra by this project's vtkHexahedralRayCastMapper,
+split by vtkHexahedraToTetrahedra and volume-rendered with vtkPreIntegratedTetrahedraMapper (alone,
+then with a lit isosurface), beside VTK's own vtkProjectedTetrahedraMapper for comparison, and the
+gradient from vtkVertexGradientFilter on a cut plane.
 """
 import argparse
 import os
@@ -48,6 +48,8 @@ def main():
 
     low, high = tets.GetPointData().GetArray(args.scalar).GetRange()
     written = [
+        uvrender.render_hexahedral_ray_cast(
+            mesh, args.scalar, os.path.join(args.output, "default_hexahedral_ray_cast.png"), args.size),
         uvrender.render_preintegrated_tetrahedra(
             tets, args.scalar, os.path.join(args.output, "default_preintegrated_tetrahedra.png"), args.size),
         uvrender.render_preintegrated_tetrahedra(

@@ -124,6 +124,18 @@ def render_preintegrated_tetrahedra(tets, scalar, path, size=512, isovalue=None)
     return _render_scene([volume], tets, size, path)
 
 
+def render_hexahedral_ray_cast(mesh, scalar, path, size=512):
+    """Volume-renders a hexahedral grid with this project's vtkHexahedralRayCastMapper (no split)."""
+    from unstructuredvolume import vtkHexahedralRayCastMapper
+    mesh.GetPointData().SetActiveScalars(scalar)
+    mapper = vtkHexahedralRayCastMapper()
+    mapper.SetInputData(mesh)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(volume_property(mesh.GetPointData().GetArray(scalar).GetRange()))
+    return _render_scene([volume], mesh, size, path)
+
+
 def render_gradient_cut(grid, gradients, path, size=512):
     """A cut through the grid coloured by |gradient|, over the grid's translucent boundary."""
     plane = vtkPlane()
