@@ -277,6 +277,20 @@ void IntegrateCubicSegment(vec4 c, float len)
 
 //UV::BilinearFace
 
+/// False when the transfer function is transparent over the whole scalar range [low, high]: such a
+/// cell costs this test, and no integration.
+bool RangeVisible(float low, float high)
+{
+  if (Evaluate(low).a > 0.0 || Evaluate(high).a > 0.0)
+    return true;
+  for (int k = NodesAtOrBelow(low); k < nodeCount && NodeScalar(k) < high; ++k)
+  {
+    if (nodeValues[k].a > 0.0)
+      return true;
+  }
+  return false;
+}
+
 // ---- Traversal
 vec3 points[8];
 float scalars[8];
@@ -473,7 +487,13 @@ void main()
         continue;
       }
       float segmentEnd = min(exitT, opaqueT);
-      if (segmentEnd > t)
+      float low = scalars[0], high = scalars[0];
+      for (int k = 1; k < 8; ++k)
+      {
+        low = min(low, scalars[k]);
+        high = max(high, scalars[k]);
+      }
+      if (segmentEnd > t && RangeVisible(low, high))
       {
         // Parametric coordinates of both ends in the cell's affine frame.
         vec3 r = 0.25 * ((points[1] - points[0]) + (points[2] - points[3]) + (points[5] - points[4]) + (points[6] - points[7]));
