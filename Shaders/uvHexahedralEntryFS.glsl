@@ -47,6 +47,10 @@ void main()
   // Only where the ray enters the mesh: the patch's own normal there, turned outward (a curved
   // boundary face can be entered on one part and left on another).
   vec3 normal0 = PatchNormalAt(a, b, c, d, uv0), normal1 = PatchNormalAt(a, b, c, d, uv1);
+  // Where a collapsed edge makes the patch's normal vanish, the face's mean normal decides.
+  float tiny = 1e-6 * dot(outwardNormal, outwardNormal);
+  normal0 = dot(normal0, normal0) > tiny ? normal0 : outwardNormal;
+  normal1 = dot(normal1, normal1) > tiny ? normal1 : outwardNormal;
   normal0 = dot(normal0, outwardNormal) < 0.0 ? -normal0 : normal0;
   normal1 = dot(normal1, outwardNormal) < 0.0 ? -normal1 : normal1;
   float t = 3.0e38;
