@@ -1,12 +1,12 @@
 #include "vtkHexahedralRayCastMapper.h"
 
-#include "uvCompositePremultipliedFS.h"
 #include "uvBilinearFaceLib.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvHexahedralEntryFS.h"
 #include "uvHexahedralEntryVS.h"
 #include "uvHexahedralTraverseFS.h"
 #include "uvLinearCellSplit.h"
+#include "uvMapperOpenGL.h"
 #include "uvPreIntegration.h"
 #include "uvRayCellGeometry.h"
 #include "uvTransferFunctionFromVolumeProperty.h"
@@ -51,15 +51,6 @@ vtkStandardNewMacro(vtkHexahedralRayCastMapper);
 namespace
 {
 constexpr int MaximumUniformNodes = 64; // as UV_MAX_UNIFORM_NODES in the traversal shader
-
-glm::dmat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::dmat4 result;
-  for (int row = 0; row < 4; ++row)
-    for (int column = 0; column < 4; ++column)
-      result[column][row] = m->GetElement(row, column);
-  return result;
-}
 
 /// A face by its sorted point ids, and which cell's local face it is.
 struct FaceRecord
@@ -375,13 +366,13 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   }
   vtkCamera* camera = renderer->GetActiveCamera();
   const double aspect = static_cast<double>(width) / height;
-  const glm::dmat4 modelToWorld = ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
-  const glm::dmat4 modelToClip = ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) *
-    ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld;
+  const glm::dmat4 modelToWorld = uv::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
+  const glm::dmat4 modelToClip = uv::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) *
+    uv::ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld;
   const glm::mat4 modelToClipF(modelToClip), clipToModelF(glm::inverse(modelToClip));
   // A perspective eye inside the mesh: rays start there, in the cell that holds it.
   const glm::dvec3 eyeModel =
-    glm::dvec3(glm::inverse(ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld) * glm::dvec4(0, 0, 0, 1));
+    glm::dvec3(glm::inverse(uv::ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld) * glm::dvec4(0, 0, 0, 1));
   int eyeCell = -1;
   if (!camera->GetParallelProjection())
   {
@@ -434,17 +425,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     bufferTexture(impl.BoundaryBuffer, impl.BoundaryTexture, impl.BoundaryFaces, 4, VTK_INT, GL_RGBA32I);
     impl.MeshOnGpu = true;
   }
-  if (!impl.PsiTexture->GetHandle())
-  {
-    static const uv::PsiTable table;
-    impl.PsiTexture->SetContext(window);
-    impl.PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
-    impl.PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-    impl.PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.PsiTexture->Create2DFromRaw(
-      table.GetSize(), table.GetSize(), 1, VTK_FLOAT, const_cast<float*>(table.GetValues().data()));
-  }
+  uv::EnsurePsiTexture(impl.PsiTexture, window);
   if (impl.ImageSize[0] != width || impl.ImageSize[1] != height)
   {
     for (vtkTextureObject* texture : { impl.EntryTexture.Get(), impl.ExitTexture.Get(),
@@ -463,17 +444,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     impl.ImageSize[0] = width;
     impl.ImageSize[1] = height;
   }
-  GLint sampleBuffers = 0;
-  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
-  if (sampleBuffers == 0)
-  {
-    impl.OpaqueDepthTexture->CopyFromFrameBuffer(originX, originY, 0, 0, width, height);
-  }
-  else
-  {
-    std::vector<float> far(static_cast<std::size_t>(width) * height, 1.0f);
-    impl.OpaqueDepthTexture->CreateDepthFromRaw(width, height, vtkTextureObject::Float32, VTK_FLOAT, far.data());
-  }
+  uv::CopySceneDepth(impl.OpaqueDepthTexture, originX, originY, width, height); // far if multisampled
 
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
@@ -485,20 +456,11 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
 
-  const std::string defines = "//VTK::System::Dec\n#define UV_MAX_UNIFORM_NODES " + std::to_string(MaximumUniformNodes) + "\n";
-  auto withDefines = [&defines](const char* source) {
-    std::string text(source);
-    const std::string marker = "//VTK::System::Dec\n";
-    const auto at = text.find(marker);
-    if (at != std::string::npos)
-      text.replace(at, marker.size(), defines);
-    const std::string faces = "//UV::BilinearFace";
-    const auto facesAt = text.find(faces);
-    if (facesAt != std::string::npos)
-      text.replace(facesAt, faces.size(), uvBilinearFaceLib);
-    return text;
-  };
-  const std::string traverseSource = withDefines(uvHexahedralTraverseFS);
+  const std::string defines = "#define UV_MAX_UNIFORM_NODES " + std::to_string(MaximumUniformNodes) + "\n";
+  const std::initializer_list<std::pair<const char*, const char*>> faces = { { "//UV::BilinearFace", uvBilinearFaceLib } };
+  const std::string entryVertexSource = uv::ShaderSource(uvHexahedralEntryVS, defines);
+  const std::string entryFragmentSource = uv::ShaderSource(uvHexahedralEntryFS, defines, faces);
+  const std::string traverseSource = uv::ShaderSource(uvHexahedralTraverseFS, defines, faces);
   const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
 
   impl.Framebuffer->SaveCurrentBindingsAndBuffers();
@@ -529,7 +491,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     state->vtkglEnable(GL_DEPTH_TEST);
     state->vtkglDepthFunc(GL_LESS);
     vtkShaderProgram* entry = window->GetShaderCache()->ReadyShaderProgram(
-      withDefines(uvHexahedralEntryVS).c_str(), withDefines(uvHexahedralEntryFS).c_str(), "");
+      entryVertexSource.c_str(), entryFragmentSource.c_str(), "");
     if (!entry)
     {
       failed = true;
@@ -640,21 +602,11 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   }
 
   // ---- Blend the result into VTK's scene.
-  state->vtkglViewport(originX, originY, width, height);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  vtkShaderProgram* composite =
-    window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, uvCompositePremultipliedFS, "");
-  if (!composite)
+  if (!uv::CompositeIntoScene(
+        window, impl.AccumulationTexture[source], impl.NoAttributes, originX, originY, width, height))
   {
     vtkErrorMacro("the composite shaders failed to compile or link");
     return;
   }
-  impl.AccumulationTexture[source]->Activate();
-  composite->SetUniformi("premultipliedImage", impl.AccumulationTexture[source]->GetTextureUnit());
-  impl.NoAttributes->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  impl.NoAttributes->Release();
-  impl.AccumulationTexture[source]->Deactivate();
   vtkOpenGLCheckErrorMacro("failed after ray casting the hexahedra");
 }

@@ -5,8 +5,7 @@
 #include "uvPreIntegratedTetrahedraPullVS.h"
 #include "uvPreIntegratedTetrahedraVS.h"
 #include "uvProjectedTetrahedronLib.h"
-#include "uvCompositePremultipliedFS.h"
-#include "uvFullScreenTriangleVS.h"
+#include "uvMapperOpenGL.h"
 #include "uvPreIntegration.h"
 #include "uvTransferFunctionFromVolumeProperty.h"
 #include "uvVisibilitySort.h"
@@ -55,15 +54,6 @@ vtkStandardNewMacro(vtkPreIntegratedTetrahedraMapper);
 
 namespace
 {
-glm::dmat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::dmat4 result;
-  for (int row = 0; row < 4; ++row)
-    for (int column = 0; column < 4; ++column)
-      result[column][row] = m->GetElement(row, column);
-  return result;
-}
-
 /// Closed intervals of normalised scalar where the extinction is zero: the set that decides which
 /// tetrahedra are invisible.
 std::vector<std::pair<double, double>> ZeroExtinctionIntervals(const std::vector<uv::TransferFunction::Node>& nodes)
@@ -519,9 +509,9 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     return;
   }
   const double aspect = static_cast<double>(width) / height;
-  const glm::dmat4 modelToWorld = ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
-  const glm::dmat4 worldToEye = ToGlm(camera->GetModelViewTransformMatrix());
-  const glm::dmat4 eyeToClip = ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  const glm::dmat4 modelToWorld = uv::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
+  const glm::dmat4 worldToEye = uv::ToGlm(camera->GetModelViewTransformMatrix());
+  const glm::dmat4 eyeToClip = uv::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1));
   const glm::dmat4 modelToEye = worldToEye * modelToWorld;
   const glm::dmat4 eyeToModel = glm::inverse(modelToEye);
   const bool parallel = camera->GetParallelProjection() != 0;
@@ -687,17 +677,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     impl.IsosurfaceTexture->Create2DFromRaw(count, 2, 4, VTK_FLOAT, texels.data());
     impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
   }
-  if (!impl.PsiTexture->GetHandle())
-  {
-    static const uv::PsiTable table; // computed once per process (about 0.4 s)
-    impl.PsiTexture->SetContext(window);
-    impl.PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
-    impl.PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-    impl.PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.PsiTexture->Create2DFromRaw(table.GetSize(), table.GetSize(), 1, VTK_FLOAT,
-      const_cast<float*>(table.GetValues().data()));
-  }
+  uv::EnsurePsiTexture(impl.PsiTexture, window);
   const bool pulling = this->ProjectionRoute == VERTEX_PULLING;
   if (!impl.OrderOnGpu || impl.OrderRoute != this->ProjectionRoute)
   {
@@ -752,22 +732,10 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   }
 
   // ---- The depth of what VTK drew so far (opaque geometry), from the current framebuffer.
-  GLint sampleBuffers = 0;
-  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
-  if (sampleBuffers == 0)
+  if (!uv::CopySceneDepth(impl.DepthTexture, originX, originY, width, height) && !impl.WarnedMultisample)
   {
-    impl.DepthTexture->CopyFromFrameBuffer(originX, originY, 0, 0, width, height);
-  }
-  else
-  {
-    // A multisampled framebuffer cannot be copied from directly; draw as if nothing were opaque.
-    if (!impl.WarnedMultisample)
-    {
-      vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
-      impl.WarnedMultisample = true;
-    }
-    std::vector<float> far(static_cast<std::size_t>(width) * height, 1.0f);
-    impl.DepthTexture->CreateDepthFromRaw(width, height, vtkTextureObject::Float32, VTK_FLOAT, far.data());
+    vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
+    impl.WarnedMultisample = true;
   }
 
   // ---- Project the tetrahedra into the float image, back to front.
@@ -796,30 +764,19 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   // Transfer-function nodes are uniforms when they fit (the common case), a texture otherwise.
   constexpr int maximumUniformNodes = 64;
   const bool nodeTexture = impl.Nodes.size() > static_cast<std::size_t>(maximumUniformNodes);
-  std::string defines = "//VTK::System::Dec\n#define UV_MAX_UNIFORM_NODES " + std::to_string(maximumUniformNodes) + "\n";
+  std::string defines = "#define UV_MAX_UNIFORM_NODES " + std::to_string(maximumUniformNodes) + "\n";
   if (needGradients)
     defines += "#define UV_GRADIENTS\n";
   if (nodeTexture)
     defines += "#define UV_NODE_TEXTURE\n";
-  auto withDefines = [&defines](const char* source) {
-    std::string text(source);
-    const std::string marker = "//VTK::System::Dec\n";
-    const auto at = text.find(marker);
-    if (at != std::string::npos)
-      text.replace(at, marker.size(), defines);
-    return text;
+  const std::initializer_list<std::pair<const char*, const char*>> projection = {
+    { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
   };
-  auto withProjection = [](std::string text) {
-    const std::string marker = "//UV::ProjectedTetrahedron\n";
-    const auto at = text.find(marker);
-    if (at != std::string::npos)
-      text.replace(at, marker.size(), uvProjectedTetrahedronLib);
-    return text;
-  };
-  const std::string vertexSource =
-    withProjection(withDefines(pulling ? uvPreIntegratedTetrahedraPullVS : uvPreIntegratedTetrahedraVS));
-  const std::string geometrySource = pulling ? std::string() : withProjection(withDefines(uvPreIntegratedTetrahedraGS));
-  const std::string fragmentSource = withDefines(uvPreIntegratedTetrahedraFS);
+  const std::string vertexSource = uv::ShaderSource(
+    pulling ? uvPreIntegratedTetrahedraPullVS : uvPreIntegratedTetrahedraVS, defines, projection);
+  const std::string geometrySource =
+    pulling ? std::string() : uv::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
+  const std::string fragmentSource = uv::ShaderSource(uvPreIntegratedTetrahedraFS, defines);
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vertexSource.c_str(), fragmentSource.c_str(), geometrySource.c_str());
   if (!program)
@@ -947,19 +904,10 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   impl.Framebuffer->RestorePreviousBindingsAndBuffers();
 
   // ---- Blend the float image into VTK's scene.
-  state->vtkglViewport(originX, originY, width, height);
-  vtkShaderProgram* composite =
-    window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, uvCompositePremultipliedFS, "");
-  if (!composite)
+  if (!uv::CompositeIntoScene(window, impl.ColorTexture, impl.NoAttributes, originX, originY, width, height))
   {
     vtkErrorMacro("the composite shaders failed to compile or link");
     return;
   }
-  impl.ColorTexture->Activate();
-  composite->SetUniformi("premultipliedImage", impl.ColorTexture->GetTextureUnit());
-  impl.NoAttributes->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  impl.NoAttributes->Release();
-  impl.ColorTexture->Deactivate();
   vtkOpenGLCheckErrorMacro("failed after rendering the tetrahedra");
 }
