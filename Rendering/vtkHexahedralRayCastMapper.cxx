@@ -9,6 +9,7 @@
 #include "uvMapperOpenGL.h"
 #include "uvPreIntegration.h"
 #include "uvRayCellGeometry.h"
+#include "uvTransferFunctionLib.h"
 #include "uvTransferFunctionFromVolumeProperty.h"
 
 #include "vtkCamera.h"
@@ -460,7 +461,8 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   const std::initializer_list<std::pair<const char*, const char*>> faces = { { "//UV::BilinearFace", uvBilinearFaceLib } };
   const std::string entryVertexSource = uv::ShaderSource(uvHexahedralEntryVS, defines);
   const std::string entryFragmentSource = uv::ShaderSource(uvHexahedralEntryFS, defines, faces);
-  const std::string traverseSource = uv::ShaderSource(uvHexahedralTraverseFS, defines, faces);
+  const std::string traverseSource = uv::ShaderSource(uvHexahedralTraverseFS, defines,
+    { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::TransferFunction", uvTransferFunctionLib } });
   const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
 
   impl.Framebuffer->SaveCurrentBindingsAndBuffers();

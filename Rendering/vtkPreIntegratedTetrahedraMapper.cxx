@@ -5,6 +5,7 @@
 #include "uvPreIntegratedTetrahedraPullVS.h"
 #include "uvPreIntegratedTetrahedraVS.h"
 #include "uvProjectedTetrahedronLib.h"
+#include "uvTransferFunctionLib.h"
 #include "uvMapperOpenGL.h"
 #include "uvPreIntegration.h"
 #include "uvTransferFunctionFromVolumeProperty.h"
@@ -776,7 +777,8 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     pulling ? uvPreIntegratedTetrahedraPullVS : uvPreIntegratedTetrahedraVS, defines, projection);
   const std::string geometrySource =
     pulling ? std::string() : uv::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
-  const std::string fragmentSource = uv::ShaderSource(uvPreIntegratedTetrahedraFS, defines);
+  const std::string fragmentSource = uv::ShaderSource(
+    uvPreIntegratedTetrahedraFS, defines, { { "//UV::TransferFunction", uvTransferFunctionLib } });
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vertexSource.c_str(), fragmentSource.c_str(), geometrySource.c_str());
   if (!program)

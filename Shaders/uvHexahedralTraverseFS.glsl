@@ -22,11 +22,6 @@ uniform int fixedSteps;
 uniform int exactEnds;           // 1: segment ends by the isoparametric inverse (curved cells)
 uniform float opacityThreshold; // early ray termination
 uniform int maximumCells;       // bound on the walk (also guards against cycles)
-uniform int nodeCount;
-uniform vec4 nodeValues[UV_MAX_UNIFORM_NODES];      // (r, g, b, extinction)
-uniform vec4 nodeScalars[UV_MAX_UNIFORM_NODES / 4]; // normalised scalars, four per vec4
-uniform sampler2D psiTable;
-uniform float psiTableSize;
 uniform int eyeCell;            // first peel, perspective: the cell holding the eye, or -1
 uniform vec3 eyeModel;
 
@@ -40,46 +35,11 @@ const int maximumCuts = 24;
 vec3 colour = vec3(0.0);
 float transmittance = 1.0;
 
-float NodeScalar(int k)
-{
-  return nodeScalars[k >> 2][k & 3];
-}
-
-int NodesAtOrBelow(float s)
-{
-  int low = 0, high = nodeCount;
-  while (low < high)
-  {
-    int middle = (low + high) / 2;
-    if (NodeScalar(middle) <= s)
-      low = middle + 1;
-    else
-      high = middle;
-  }
-  return low;
-}
+//UV::TransferFunction
 
 vec4 Evaluate(float s) // (r, g, b, extinction)
 {
-  int below = NodesAtOrBelow(s);
-  if (below <= 0)
-    return nodeValues[0];
-  if (below >= nodeCount)
-    return nodeValues[nodeCount - 1];
-  float s0 = NodeScalar(below - 1), s1 = NodeScalar(below);
-  return mix(nodeValues[below - 1], nodeValues[below], s1 > s0 ? clamp((s - s0) / (s1 - s0), 0.0, 1.0) : 0.0);
-}
-
-float Psi(float a, float b)
-{
-  if (a + b < 1e-2)
-  {
-    float k = b - a;
-    return 1.0 - (a / 2.0 + k / 6.0) + 0.5 * (a * a / 3.0 + a * k / 4.0 + k * k / 20.0);
-  }
-  vec2 root = sqrt(vec2(a, b));
-  vec2 gamma = root / (1.0 + root);
-  return texture(psiTable, (gamma * (psiTableSize - 1.0) + 0.5) / psiTableSize).r;
+  return EvaluateBetween(s, NodesAtOrBelow(s));
 }
 
 void Composite(vec3 premultiplied, float depth)
@@ -240,13 +200,13 @@ void IntegrateCubicSegment(vec4 c, float len)
     float baseScalar = 0.0;
     if (below <= 0 || below >= nodeCount)
     {
-      base = nodeValues[below <= 0 ? 0 : nodeCount - 1];
+      base = NodeValue(below <= 0 ? 0 : nodeCount - 1);
     }
     else
     {
       float s0 = NodeScalar(below - 1), s1 = NodeScalar(below);
-      base = nodeValues[below - 1];
-      slope = (nodeValues[below] - nodeValues[below - 1]) / (s1 - s0);
+      base = NodeValue(below - 1);
+      slope = (NodeValue(below) - NodeValue(below - 1)) / (s1 - s0);
       baseScalar = s0;
     }
     vec4 g = vec4(CubicValue(c, u0), CubicSlope(c, u0), c.z + 3.0 * c.w * u0, c.w);
@@ -285,7 +245,7 @@ bool RangeVisible(float low, float high)
     return true;
   for (int k = NodesAtOrBelow(low); k < nodeCount && NodeScalar(k) < high; ++k)
   {
-    if (nodeValues[k].a > 0.0)
+    if (NodeValue(k).a > 0.0)
       return true;
   }
   return false;

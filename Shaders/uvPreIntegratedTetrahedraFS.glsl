@@ -23,18 +23,8 @@ flat in int rayCastTetrahedron;  // >= 0: intersect the eye ray with this tetrah
 uniform usamplerBuffer tetrahedronPoints;
 uniform samplerBuffer pointData;
 uniform mat4 modelToEye;
-#ifdef UV_NODE_TEXTURE
-uniform sampler2D transferFunction; // nodes: row 0 (r, g, b, extinction), row 1 (normalised scalar)
-#else
-// Up to UV_MAX_UNIFORM_NODES nodes as uniforms (cheaper to read than a texture on CPU rasterisers).
-uniform vec4 nodeValues[UV_MAX_UNIFORM_NODES];        // (r, g, b, extinction)
-uniform vec4 nodeScalars[UV_MAX_UNIFORM_NODES / 4];   // normalised scalars, four per vec4
-#endif
-uniform int nodeCount;
 uniform sampler2D isosurfaces;      // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
 uniform int isosurfaceCount;
-uniform sampler2D psiTable;         // Psi over gamma = sqrt(x) / (1 + sqrt(x)), both axes
-uniform float psiTableSize;
 uniform sampler2D opaqueDepth;      // the scene's depth buffer before the volume
 uniform mat4 clipToEye;
 uniform vec2 viewportSize;
@@ -48,7 +38,7 @@ uniform float diffuse;
 uniform float specular;
 uniform float specularPower;
 
-const float psiSeriesLimit = 1e-2; // as uv::PsiSeriesLimit
+//UV::TransferFunction
 
 struct Sample
 {
@@ -56,64 +46,17 @@ struct Sample
   float extinction;
 };
 
-float NodeScalar(int k)
-{
-#ifdef UV_NODE_TEXTURE
-  return texelFetch(transferFunction, ivec2(k, 1), 0).r;
-#else
-  return nodeScalars[k >> 2][k & 3];
-#endif
-}
-
 Sample NodeSample(int k)
 {
-#ifdef UV_NODE_TEXTURE
-  vec4 n = texelFetch(transferFunction, ivec2(k, 0), 0);
-#else
-  vec4 n = nodeValues[k];
-#endif
+  vec4 n = NodeValue(k);
   return Sample(n.rgb, n.a);
 }
 
-/// Number of nodes with scalar <= s (binary search).
-int NodesAtOrBelow(float s)
+/// The transfer function at s, given `below` = the number of nodes <= s.
+Sample SampleBetween(float s, int below)
 {
-  int low = 0, high = nodeCount; // answer in [low, high]
-  while (low < high)
-  {
-    int middle = (low + high) / 2;
-    if (NodeScalar(middle) <= s)
-      low = middle + 1;
-    else
-      high = middle;
-  }
-  return low;
-}
-
-/// The transfer function at s, given `below` = the number of nodes <= s: linear between nodes,
-/// constant beyond the ends.
-Sample EvaluateBetween(float s, int below)
-{
-  if (below <= 0)
-    return NodeSample(0);
-  if (below >= nodeCount)
-    return NodeSample(nodeCount - 1);
-  float s0 = NodeScalar(below - 1), s1 = NodeScalar(below);
-  Sample a = NodeSample(below - 1), b = NodeSample(below);
-  float w = s1 > s0 ? clamp((s - s0) / (s1 - s0), 0.0, 1.0) : 0.0;
-  return Sample(mix(a.color, b.color, w), mix(a.extinction, b.extinction, w));
-}
-
-float Psi(float a, float b)
-{
-  if (a + b < psiSeriesLimit)
-  {
-    float k = b - a;
-    return 1.0 - (a / 2.0 + k / 6.0) + 0.5 * (a * a / 3.0 + a * k / 4.0 + k * k / 20.0);
-  }
-  vec2 root = sqrt(vec2(a, b));
-  vec2 gamma = root / (1.0 + root);
-  return texture(psiTable, (gamma * (psiTableSize - 1.0) + 0.5) / psiTableSize).r;
+  vec4 n = EvaluateBetween(s, below);
+  return Sample(n.rgb, n.a);
 }
 
 vec3 Light(vec3 color, vec3 gradient, vec3 toEye)
@@ -262,12 +205,12 @@ void main()
   if (averageScalar == 1)
   {
     float middle = 0.5 * (frontScalar + backScalar);
-    constant = EvaluateBetween(middle, NodesAtOrBelow(middle));
+    constant = SampleBetween(middle, NodesAtOrBelow(middle));
     previous = constant;
   }
   else
   {
-    previous = EvaluateBetween(frontScalar, frontBelow);
+    previous = SampleBetween(frontScalar, frontBelow);
   }
   if (shadeVolume == 1 && averageScalar == 0)
     previous.color = Light(previous.color, frontGradient, toEye);
@@ -290,7 +233,7 @@ void main()
     else if (!takeIso && nodeInside)
       next = NodeSample(node);
     else
-      next = EvaluateBetween(cut, rising ? node : node + 1);
+      next = SampleBetween(cut, rising ? node : node + 1);
     vec3 gradientHere = mix(frontGradient, backGradient, fraction);
     if (shadeVolume == 1 && averageScalar == 0)
       next.color = Light(next.color, gradientHere, toEye);
