@@ -16,6 +16,7 @@ set(uv_rendering_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/uvChebyshevSeries.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvHexahedronRay.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvImageErrorMetrics.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvIsosurfaceList.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvMapperOpenGL.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvOpticalModel.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvPreIntegration.h"

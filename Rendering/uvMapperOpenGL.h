@@ -7,15 +7,21 @@
 
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
+#include "uvIsosurfaceList.h"
+#include "uvPhongLib.h"
 #include "uvPreIntegration.h"
 
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
 #include <glm/glm.hpp>
@@ -90,6 +96,52 @@ inline std::string ShaderSource(const char* source, const std::string& defines,
       text.replace(where, std::string(marker).size(), library);
   }
   return text;
+}
+
+/// The uniforms of uvPhongLib.glsl: the property's coefficients and the renderer's first switched-on
+/// light as a direction towards it in eye space (a headlight when there is none).
+inline void SetPhongUniforms(
+  vtkShaderProgram* program, vtkRenderer* renderer, vtkVolumeProperty* property, const glm::dmat4& worldToEye)
+{
+  program->SetUniformf("ambient", static_cast<float>(property->GetAmbient()));
+  program->SetUniformf("diffuse", static_cast<float>(property->GetDiffuse()));
+  program->SetUniformf("specular", static_cast<float>(property->GetSpecular()));
+  program->SetUniformf("specularPower", static_cast<float>(property->GetSpecularPower()));
+  glm::dvec3 towardsLight(0.0, 0.0, 1.0), lightColor(1.0);
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  while (vtkLight* light = lights->GetNextItem())
+  {
+    if (!light->GetSwitch())
+      continue;
+    double position[3], focal[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    const glm::dvec3 world(position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]);
+    if (glm::length(world) > 0.0)
+      towardsLight = glm::normalize(glm::dmat3(worldToEye) * world);
+    const double* rgb = light->GetDiffuseColor();
+    lightColor = glm::dvec3(rgb[0], rgb[1], rgb[2]) * light->GetIntensity();
+    break;
+  }
+  const float direction[3] = { static_cast<float>(towardsLight.x), static_cast<float>(towardsLight.y),
+    static_cast<float>(towardsLight.z) };
+  const float color[3] = { static_cast<float>(lightColor.r), static_cast<float>(lightColor.g),
+    static_cast<float>(lightColor.b) };
+  program->SetUniform3f("lightDirection", direction);
+  program->SetUniform3f("lightColor", color);
+}
+
+/// The drawn isosurfaces as the shaders read them (uniform `isosurfaces`, see
+/// uv::IsosurfaceList::Texels): a 2-row float RGBA texture, nearest filtering.
+inline void UploadIsosurfaces(
+  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, const std::vector<Isosurface>& drawn)
+{
+  std::vector<float> texels = IsosurfaceList::Texels(drawn);
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->Create2DFromRaw(static_cast<unsigned int>(texels.size() / 8), 2, 4, VTK_FLOAT, texels.data());
 }
 
 /// Blends a premultiplied RGBA image over the viewport of VTK's scene (ONE, ONE_MINUS_SRC_ALPHA).

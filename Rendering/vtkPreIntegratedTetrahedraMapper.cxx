@@ -18,8 +18,6 @@
 #include "vtkFloatArray.h"
 #include "vtkHexahedraToTetrahedra.h"
 #include "vtkImageData.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
@@ -76,12 +74,6 @@ std::vector<std::pair<double, double>> ZeroExtinctionIntervals(const std::vector
   return intervals;
 }
 
-struct Isosurface
-{
-  double Value;
-  double Color[3];
-  double Opacity;
-};
 } // namespace
 
 class vtkPreIntegratedTetrahedraMapper::Internals
@@ -104,7 +96,7 @@ public:
   vtkMTimeType TransferFunctionTime = 0;
   std::string TransferFunctionMeshKey;
   std::vector<uv::TransferFunction::Node> Nodes; // normalised scalars
-  std::vector<Isosurface> Isosurfaces;
+  uv::IsosurfaceList Isosurfaces;
   vtkMTimeType IsosurfaceTime = 0, UploadedIsosurfaceTime = 0;
 
   std::vector<std::pair<double, double>> VisibleListZeroSet;
@@ -175,20 +167,15 @@ vtkPreIntegratedTetrahedraMapper::~vtkPreIntegratedTetrahedraMapper()
 
 void vtkPreIntegratedTetrahedraMapper::AddIsosurface(double value, double red, double green, double blue, double opacity)
 {
-  Isosurface surface{ value, { red, green, blue }, std::min(std::max(opacity, 0.0), 1.0) };
-  auto& list = this->Impl->Isosurfaces;
-  list.insert(std::upper_bound(list.begin(), list.end(), value,
-                [](double v, const Isosurface& s) { return v < s.Value; }),
-    surface);
+  this->Impl->Isosurfaces.Add(value, red, green, blue, opacity);
   this->Modified();
   this->Impl->IsosurfaceTime = this->GetMTime();
 }
 
 void vtkPreIntegratedTetrahedraMapper::RemoveAllIsosurfaces()
 {
-  if (!this->Impl->Isosurfaces.empty())
+  if (this->Impl->Isosurfaces.Clear())
   {
-    this->Impl->Isosurfaces.clear();
     this->Modified();
     this->Impl->IsosurfaceTime = this->GetMTime();
   }
@@ -196,7 +183,7 @@ void vtkPreIntegratedTetrahedraMapper::RemoveAllIsosurfaces()
 
 int vtkPreIntegratedTetrahedraMapper::GetNumberOfIsosurfaces()
 {
-  return static_cast<int>(this->Impl->Isosurfaces.size());
+  return this->Impl->Isosurfaces.Size();
 }
 
 vtkImageData* vtkPreIntegratedTetrahedraMapper::GetFloatImage()
@@ -239,7 +226,7 @@ void vtkPreIntegratedTetrahedraMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: "
      << (this->IntegrationMode == AVERAGE_SCALAR ? "AverageScalar" : "PartialPreIntegration") << "\n";
-  os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.size() << "\n";
+  os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.Size() << "\n";
   os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
   os << indent << "KeepFloatImage: " << this->KeepFloatImage << "\n";
@@ -450,12 +437,10 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     impl.TransferFunctionMeshKey = impl.MeshKey;
     impl.TransferFunctionOnGpu = false;
   }
+  const std::vector<uv::Isosurface> drawnIsosurfaces = impl.Isosurfaces.Drawn(impl.ScalarOffset, impl.ScalarScale);
   std::vector<double> isovalues;
-  for (const Isosurface& s : impl.Isosurfaces)
-  {
-    if (s.Opacity > 0.0)
-      isovalues.push_back((s.Value - impl.ScalarOffset) * impl.ScalarScale);
-  }
+  for (const uv::Isosurface& s : drawnIsosurfaces)
+    isovalues.push_back(s.Value);
 
   // ---- Visible tetrahedra: rebuilt only when the zero-opacity set (or the isovalues) moved.
   const auto zeroSet = this->SkipInvisibleCells ? ZeroExtinctionIntervals(impl.Nodes)
@@ -659,23 +644,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   if (impl.UploadedIsosurfaceTime != impl.IsosurfaceTime || !impl.IsosurfaceTexture->GetHandle() ||
     impl.TransferFunctionMeshKey != impl.MeshKey)
   {
-    std::vector<const Isosurface*> drawn;
-    for (const Isosurface& s : impl.Isosurfaces)
-      if (s.Opacity > 0.0)
-        drawn.push_back(&s);
-    const int count = std::max<int>(1, static_cast<int>(drawn.size()));
-    std::vector<float> texels(8 * count, 0.0f);
-    for (std::size_t k = 0; k < drawn.size(); ++k)
-    {
-      for (int d = 0; d < 3; ++d)
-        texels[4 * k + d] = static_cast<float>(drawn[k]->Color[d]);
-      texels[4 * k + 3] = static_cast<float>(drawn[k]->Opacity);
-      texels[4 * (count + k)] = static_cast<float>(isovalues[k]);
-    }
-    impl.IsosurfaceTexture->SetContext(window);
-    impl.IsosurfaceTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    impl.IsosurfaceTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    impl.IsosurfaceTexture->Create2DFromRaw(count, 2, 4, VTK_FLOAT, texels.data());
+    uv::UploadIsosurfaces(impl.IsosurfaceTexture, window, drawnIsosurfaces);
     impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
   }
   uv::EnsurePsiTexture(impl.PsiTexture, window);
@@ -778,7 +747,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   const std::string geometrySource =
     pulling ? std::string() : uv::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
   const std::string fragmentSource = uv::ShaderSource(
-    uvPreIntegratedTetrahedraFS, defines, { { "//UV::TransferFunction", uvTransferFunctionLib } });
+    uvPreIntegratedTetrahedraFS, defines, { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib } });
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vertexSource.c_str(), fragmentSource.c_str(), geometrySource.c_str());
   if (!program)
@@ -826,34 +795,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   }
   program->SetUniformi("isosurfaceCount", static_cast<int>(isovalues.size()));
   program->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
-  program->SetUniformf("ambient", static_cast<float>(property->GetAmbient()));
-  program->SetUniformf("diffuse", static_cast<float>(property->GetDiffuse()));
-  program->SetUniformf("specular", static_cast<float>(property->GetSpecular()));
-  program->SetUniformf("specularPower", static_cast<float>(property->GetSpecularPower()));
-  // The first switched-on light, as a direction (towards it) in eye space; a headlight otherwise.
-  glm::dvec3 towardsLight(0.0, 0.0, 1.0), lightColor(1.0);
-  vtkLightCollection* lights = renderer->GetLights();
-  lights->InitTraversal();
-  while (vtkLight* light = lights->GetNextItem())
-  {
-    if (!light->GetSwitch())
-      continue;
-    double position[3], focal[3];
-    light->GetTransformedPosition(position);
-    light->GetTransformedFocalPoint(focal);
-    const glm::dvec3 world(position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]);
-    if (glm::length(world) > 0.0)
-      towardsLight = glm::normalize(glm::dmat3(worldToEye) * world);
-    lightColor = glm::dvec3(light->GetDiffuseColor()[0], light->GetDiffuseColor()[1], light->GetDiffuseColor()[2]) *
-      light->GetIntensity();
-    break;
-  }
-  const float lightDirection[3] = { static_cast<float>(towardsLight.x), static_cast<float>(towardsLight.y),
-    static_cast<float>(towardsLight.z) };
-  const float lightRgb[3] = { static_cast<float>(lightColor.r), static_cast<float>(lightColor.g),
-    static_cast<float>(lightColor.b) };
-  program->SetUniform3f("lightDirection", lightDirection);
-  program->SetUniform3f("lightColor", lightRgb);
+  uv::SetPhongUniforms(program, renderer, property, worldToEye);
 
   std::vector<vtkTextureObject*> active = { impl.TetrahedronTexture, impl.PointTexture, impl.TransferTexture,
     impl.IsosurfaceTexture, impl.PsiTexture, impl.DepthTexture };

@@ -31,14 +31,10 @@ uniform vec2 viewportSize;
 uniform int parallelProjection;
 uniform int averageScalar;          // 1: the paper's basic mode
 uniform int shadeVolume;            // 1: light the volume's colours too (vtkVolumeProperty::Shade)
-uniform vec3 lightDirection;        // eye space, towards the light
-uniform vec3 lightColor;
-uniform float ambient;
-uniform float diffuse;
-uniform float specular;
-uniform float specularPower;
 
 //UV::TransferFunction
+
+//UV::Phong
 
 struct Sample
 {
@@ -57,21 +53,6 @@ Sample SampleBetween(float s, int below)
 {
   vec4 n = EvaluateBetween(s, below);
   return Sample(n.rgb, n.a);
-}
-
-vec3 Light(vec3 color, vec3 gradient, vec3 toEye)
-{
-  float length2 = dot(gradient, gradient);
-  if (!(length2 > 0.0))
-  {
-    return color * (ambient + diffuse); // no direction to light by: as if facing the light
-  }
-  vec3 n = gradient * inversesqrt(length2);
-  n = dot(n, toEye) < 0.0 ? -n : n; // two-sided
-  float lambert = max(dot(n, lightDirection), 0.0);
-  vec3 reflected = reflect(-lightDirection, n);
-  float highlight = lambert > 0.0 ? pow(max(dot(reflected, toEye), 0.0), specularPower) : 0.0;
-  return color * (ambient + diffuse * lambert) * lightColor + specular * highlight * lightColor;
 }
 
 vec4 result = vec4(0.0); // premultiplied colour, front to back within this fragment
