@@ -5,8 +5,10 @@
 #include "uvHexahedralEntryFS.h"
 #include "uvHexahedralEntryVS.h"
 #include "uvHexahedralTraverseFS.h"
+#include "uvIsosurfaceList.h"
 #include "uvLinearCellSplit.h"
 #include "uvMapperOpenGL.h"
+#include "uvPhongLib.h"
 #include "uvPreIntegration.h"
 #include "uvRayCellGeometry.h"
 #include "uvTransferFunctionLib.h"
@@ -80,11 +82,13 @@ public:
   glm::dvec3 EyeCellPosition{ 0.0 };
   int EyeCell = -1;
   bool WarnedNaN = false;
+  uv::IsosurfaceList Isosurfaces;
+  std::string UploadedIsosurfacesKey;
 
   vtkOpenGLRenderWindow* Context = nullptr;
   vtkNew<vtkOpenGLBufferObject> CellPointBuffer, PointBuffer, NeighbourBuffer, BoundaryBuffer;
   vtkNew<vtkTextureObject> CellPointTexture, PointTexture, NeighbourTexture, BoundaryTexture, PsiTexture,
-    OpaqueDepthTexture, EntryTexture, EntryDepthTexture, ExitTexture, AccumulationTexture[2];
+    IsosurfaceTexture, OpaqueDepthTexture, EntryTexture, EntryDepthTexture, ExitTexture, AccumulationTexture[2];
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
   bool MeshOnGpu = false;
@@ -97,6 +101,7 @@ public:
     {
       for (vtkTextureObject* texture : { this->CellPointTexture.Get(), this->PointTexture.Get(),
              this->NeighbourTexture.Get(), this->BoundaryTexture.Get(), this->PsiTexture.Get(),
+             this->IsosurfaceTexture.Get(),
              this->OpaqueDepthTexture.Get(), this->EntryTexture.Get(), this->EntryDepthTexture.Get(),
              this->ExitTexture.Get(), this->AccumulationTexture[0].Get(), this->AccumulationTexture[1].Get() })
       {
@@ -112,6 +117,7 @@ public:
     }
     this->Context = nullptr;
     this->MeshOnGpu = false;
+    this->UploadedIsosurfacesKey.clear();
     this->ImageSize[0] = this->ImageSize[1] = 0;
   }
 };
@@ -122,6 +128,23 @@ vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
 }
 
 vtkHexahedralRayCastMapper::~vtkHexahedralRayCastMapper() = default;
+
+void vtkHexahedralRayCastMapper::AddIsosurface(double value, double red, double green, double blue, double opacity)
+{
+  this->Impl->Isosurfaces.Add(value, red, green, blue, opacity);
+  this->Modified();
+}
+
+void vtkHexahedralRayCastMapper::RemoveAllIsosurfaces()
+{
+  if (this->Impl->Isosurfaces.Clear())
+    this->Modified();
+}
+
+int vtkHexahedralRayCastMapper::GetNumberOfIsosurfaces()
+{
+  return this->Impl->Isosurfaces.Size();
+}
 
 vtkImageData* vtkHexahedralRayCastMapper::GetFloatImage()
 {
@@ -157,6 +180,7 @@ void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FixedSteps: " << this->FixedSteps << "\n";
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
   os << indent << "MaximumPeels: " << this->MaximumPeels << "\n";
+  os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.Size() << "\n";
 }
 
 void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
@@ -368,8 +392,11 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   vtkCamera* camera = renderer->GetActiveCamera();
   const double aspect = static_cast<double>(width) / height;
   const glm::dmat4 modelToWorld = uv::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
-  const glm::dmat4 modelToClip = uv::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) *
-    uv::ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld;
+  const glm::dmat4 worldToEye = uv::ToGlm(camera->GetModelViewTransformMatrix());
+  const glm::dmat4 modelToEye = worldToEye * modelToWorld;
+  const glm::dmat4 modelToClip = uv::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) * modelToEye;
+  const glm::mat4 modelToEyeF(modelToEye);
+  const glm::mat3 normalToEyeF(glm::transpose(glm::inverse(glm::dmat3(modelToEye))));
   const glm::mat4 modelToClipF(modelToClip), clipToModelF(glm::inverse(modelToClip));
   // A perspective eye inside the mesh: rays start there, in the cell that holds it.
   const glm::dvec3 eyeModel =
@@ -427,6 +454,17 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     impl.MeshOnGpu = true;
   }
   uv::EnsurePsiTexture(impl.PsiTexture, window);
+  // Isosurfaces, normalised like the scalar: uploaded when they or the normalisation change.
+  const std::vector<uv::Isosurface> isosurfaces = impl.Isosurfaces.Drawn(impl.ScalarOffset, impl.ScalarScale);
+  std::string isosurfacesKey = "n" + std::to_string(isosurfaces.size());
+  for (const uv::Isosurface& s : isosurfaces)
+    isosurfacesKey += ":" + std::to_string(s.Value) + "," + std::to_string(s.Color[0]) + "," +
+      std::to_string(s.Color[1]) + "," + std::to_string(s.Color[2]) + "," + std::to_string(s.Opacity);
+  if (isosurfacesKey != impl.UploadedIsosurfacesKey || !impl.IsosurfaceTexture->GetHandle())
+  {
+    uv::UploadIsosurfaces(impl.IsosurfaceTexture, window, isosurfaces);
+    impl.UploadedIsosurfacesKey = isosurfacesKey;
+  }
   if (impl.ImageSize[0] != width || impl.ImageSize[1] != height)
   {
     for (vtkTextureObject* texture : { impl.EntryTexture.Get(), impl.ExitTexture.Get(),
@@ -462,7 +500,8 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   const std::string entryVertexSource = uv::ShaderSource(uvHexahedralEntryVS, defines);
   const std::string entryFragmentSource = uv::ShaderSource(uvHexahedralEntryFS, defines, faces);
   const std::string traverseSource = uv::ShaderSource(uvHexahedralTraverseFS, defines,
-    { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::TransferFunction", uvTransferFunctionLib } });
+    { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
+      { "//UV::Phong", uvPhongLib } });
   const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
 
   impl.Framebuffer->SaveCurrentBindingsAndBuffers();
@@ -548,6 +587,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     impl.OpaqueDepthTexture->Activate();
     impl.NeighbourTexture->Activate();
     impl.PsiTexture->Activate();
+    impl.IsosurfaceTexture->Activate();
     traverse->SetUniformi("entry", impl.EntryTexture->GetTextureUnit());
     traverse->SetUniformi("accumulated", impl.AccumulationTexture[source]->GetTextureUnit());
     traverse->SetUniformi("opaqueDepth", impl.OpaqueDepthTexture->GetTextureUnit());
@@ -557,6 +597,12 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     traverse->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
     traverse->SetUniformi("psiTable", impl.PsiTexture->GetTextureUnit());
     traverse->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
+    traverse->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
+    traverse->SetUniformi("isosurfaceCount", static_cast<int>(isosurfaces.size()));
+    traverse->SetUniformMatrix4x4("modelToEye", const_cast<float*>(glm::value_ptr(modelToEyeF)));
+    traverse->SetUniformMatrix3x3("normalToEye", const_cast<float*>(glm::value_ptr(normalToEyeF)));
+    traverse->SetUniformi("parallelProjection", camera->GetParallelProjection() ? 1 : 0);
+    uv::SetPhongUniforms(traverse, renderer, property, worldToEye);
     traverse->SetUniformMatrix4x4("clipToModel", const_cast<float*>(glm::value_ptr(clipToModelF)));
     traverse->SetUniform2f("viewportSize", viewport);
     traverse->SetUniformi("integrationMode", this->IntegrationMode);
@@ -574,7 +620,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     glDrawArrays(GL_TRIANGLES, 0, 3);
     impl.NoAttributes->Release();
     for (vtkTextureObject* texture : { impl.EntryTexture.Get(), impl.AccumulationTexture[source].Get(),
-           impl.OpaqueDepthTexture.Get(), impl.NeighbourTexture.Get(), impl.PsiTexture.Get(),
+           impl.OpaqueDepthTexture.Get(), impl.NeighbourTexture.Get(), impl.PsiTexture.Get(), impl.IsosurfaceTexture.Get(),
            impl.BoundaryTexture.Get(), impl.CellPointTexture.Get(), impl.PointTexture.Get() })
     {
       texture->Deactivate();

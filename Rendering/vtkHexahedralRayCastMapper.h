@@ -17,8 +17,13 @@
  * - FIXED_STEPS: FixedSteps constant steps per cell (Hexa_CONST), for comparison.
  * The math is uvHexahedronRay.h (unit-tested); Shaders/uvHexahedralTraverseFS.glsl is its GPU twin.
  *
+ * Isosurfaces (any number, each with a colour and opacity) are further split points: where the
+ * cubic crosses an isovalue the surface is composited, Phong-lit from the vtkVolumeProperty and the
+ * renderer's first light with the exact gradient of the cell's trilinear field (no gradient array).
+ *
  * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.99); pixels no
- * boundary face covers cost nothing beyond the entry pass.
+ * boundary face covers cost nothing beyond the entry pass; a cell whose scalar range the transfer
+ * function makes transparent (and holding no isovalue) costs one range test, no integration.
  *
  * Input: hexahedra and voxels with a point scalar. Other cells are an error: split mixed meshes with
  * vtkHexahedraToTetrahedra and render them with vtkPreIntegratedTetrahedraMapper.
@@ -80,6 +85,13 @@ public:
   /// Depth-peeling passes at most (non-convex meshes, holes); default 8.
   vtkSetClampMacro(MaximumPeels, int, 1, 64);
   vtkGetMacro(MaximumPeels, int);
+  ///@}
+
+  ///@{
+  /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each.
+  void AddIsosurface(double value, double red, double green, double blue, double opacity);
+  void RemoveAllIsosurfaces();
+  int GetNumberOfIsosurfaces();
   ///@}
 
   ///@{

@@ -8,6 +8,9 @@
 // Each cell's field is the cubic of its corner values along the ray, in the cell's affine frame
 // (exact for every parallelepiped). Faces are exact bilinear patches, parameterised the same way by
 // every cell (uvBilinearFaceLib.glsl): the exit found in one cell is the entry of the next.
+//
+// Isosurfaces are further cuts: where the cubic crosses an isovalue the surface's colour is
+// composited, Phong-lit with the exact gradient of the cell's trilinear field there.
 uniform sampler2D entry;        // (ray parameter, boundary face) of this peel, face < 0: none
 uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
 uniform sampler2D opaqueDepth;
@@ -24,18 +27,25 @@ uniform float opacityThreshold; // early ray termination
 uniform int maximumCells;       // bound on the walk (also guards against cycles)
 uniform int eyeCell;            // first peel, perspective: the cell holding the eye, or -1
 uniform vec3 eyeModel;
+uniform sampler2D isosurfaces;  // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
+uniform int isosurfaceCount;
+uniform mat4 modelToEye;
+uniform mat3 normalToEye;       // inverse transpose of modelToEye's linear part
+uniform int parallelProjection;
 
 const int faceCorners[24] = int[24](0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7);
 const float gaussNodes[6] = float[6](-0.9324695142, -0.6612093865, -0.2386191861, 0.2386191861, 0.6612093865,
   0.9324695142);
 const float gaussWeights[6] = float[6](0.1713244924, 0.3607615730, 0.4679139346, 0.4679139346, 0.3607615730,
   0.1713244924);
-const int maximumCuts = 24;
+const int maximumCuts = 32;
 
 vec3 colour = vec3(0.0);
 float transmittance = 1.0;
 
 //UV::TransferFunction
+
+//UV::Phong
 
 vec4 Evaluate(float s) // (r, g, b, extinction)
 {
@@ -46,6 +56,57 @@ void Composite(vec3 premultiplied, float depth)
 {
   colour += transmittance * premultiplied;
   transmittance *= exp(-depth);
+}
+
+// ---- The current segment (set by the traversal before it integrates a cell)
+vec3 points[8];
+float scalars[8];
+vec3 segmentXi0, segmentXi1;  // the segment's ends in the cell's trilinear coordinates
+vec3 segmentStartPoint, segmentEndPoint; // and in model space
+
+/// d(position)/d(r, s, t) of the loaded cell at xi.
+mat3 Jacobian(vec3 xi)
+{
+  vec3 b = points[1] - points[0], c = points[3] - points[0], d = points[4] - points[0];
+  vec3 e = points[0] - points[1] + points[2] - points[3];
+  vec3 f = points[0] - points[1] - points[4] + points[5];
+  vec3 g = points[0] - points[3] - points[4] + points[7];
+  vec3 h = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
+  float r = xi.x, s = xi.y, t = xi.z;
+  return mat3(b + e * s + f * t + h * s * t, c + e * r + g * t + h * r * t, d + f * r + g * s + h * r * s);
+}
+
+/// The gradient of the loaded cell's trilinear field at xi, in model space.
+vec3 FieldGradient(vec3 xi)
+{
+  float r = xi.x, s = xi.y, t = xi.z;
+  float a100 = scalars[1] - scalars[0], a010 = scalars[3] - scalars[0], a001 = scalars[4] - scalars[0];
+  float a110 = scalars[0] - scalars[1] + scalars[2] - scalars[3];
+  float a101 = scalars[0] - scalars[1] - scalars[4] + scalars[5];
+  float a011 = scalars[0] - scalars[3] - scalars[4] + scalars[7];
+  float a111 = -scalars[0] + scalars[1] - scalars[2] + scalars[3] + scalars[4] - scalars[5] + scalars[6] - scalars[7];
+  vec3 local = vec3(a100 + a110 * s + a101 * t + a111 * s * t, a010 + a110 * r + a011 * t + a111 * r * t,
+    a001 + a101 * r + a011 * s + a111 * r * s);
+  mat3 jacobian = Jacobian(xi);
+  if (abs(determinant(jacobian)) < 1e-30)
+    return vec3(0.0);
+  return transpose(inverse(jacobian)) * local;
+}
+
+/// Composites isosurface `k` where the segment's parameter is u.
+void CompositeSurface(int k, float u)
+{
+  vec4 surface = texelFetch(isosurfaces, ivec2(k, 0), 0);
+  vec3 eyePoint = (modelToEye * vec4(mix(segmentStartPoint, segmentEndPoint, u), 1.0)).xyz;
+  vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-eyePoint);
+  vec3 lit = Light(surface.rgb, normalToEye * FieldGradient(mix(segmentXi0, segmentXi1, u)), toEye);
+  colour += transmittance * surface.a * lit;
+  transmittance *= 1.0 - surface.a;
+}
+
+float IsoValue(int k)
+{
+  return texelFetch(isosurfaces, ivec2(k, 1), 0).r;
 }
 
 // ---- The cubic along the ray (uvHexahedronRay.h)
@@ -104,23 +165,73 @@ float RootInBracket(vec4 c, float value, float a, float b)
   return u;
 }
 
+/// One piece [u0, u1] of the segment, between consecutive split points: the transfer function is
+/// linear on it. FAST: the scalar linear between the ends, with the Psi table.
+void IntegratePiece(vec4 c, float len, float u0, float u1)
+{
+  if (integrationMode == 1)
+  {
+    vec4 a = Evaluate(CubicValue(c, u0)), b = Evaluate(CubicValue(c, u1));
+    float pieceLength = len * (u1 - u0);
+    float da = a.a * pieceLength, db = b.a * pieceLength;
+    if (da + db > 0.0)
+    {
+      float psi = Psi(da, db);
+      float zeta = exp(-0.5 * (da + db));
+      Composite(a.rgb * (1.0 - psi) + b.rgb * (psi - zeta), 0.5 * (da + db));
+    }
+    return;
+  }
+  // Accurate: the transfer function is linear on this piece; extinction and colour are cubics.
+  float mid = CubicValue(c, 0.5 * (u0 + u1));
+  int below = NodesAtOrBelow(mid);
+  vec4 base, slope = vec4(0.0);
+  float baseScalar = 0.0;
+  if (below <= 0 || below >= nodeCount)
+  {
+    base = NodeValue(below <= 0 ? 0 : nodeCount - 1);
+  }
+  else
+  {
+    float s0 = NodeScalar(below - 1), s1 = NodeScalar(below);
+    base = NodeValue(below - 1);
+    slope = (NodeValue(below) - NodeValue(below - 1)) / (s1 - s0);
+    baseScalar = s0;
+  }
+  vec4 g = vec4(CubicValue(c, u0), CubicSlope(c, u0), c.z + 3.0 * c.w * u0, c.w);
+  vec4 tau = len * vec4(base.a + slope.a * (g.x - baseScalar), slope.a * g.y, slope.a * g.z, slope.a * g.w);
+  float width = u1 - u0;
+  float totalDepth = CubicIntegral(tau, width);
+  if (!(totalDepth > 0.0))
+    return;
+  int pieces = int(clamp(ceil(4.0 * totalDepth), 1.0, 16.0));
+  for (int k = 0; k < pieces; ++k)
+  {
+    float w0 = width * float(k) / float(pieces), w1 = width * float(k + 1) / float(pieces);
+    float depthBefore = CubicIntegral(tau, w0);
+    float halfWidth = 0.5 * (w1 - w0), centre = 0.5 * (w0 + w1);
+    vec3 pieceColour = vec3(0.0);
+    for (int q = 0; q < 6; ++q)
+    {
+      float w = centre + halfWidth * gaussNodes[q];
+      float scalar = g.x + w * (g.y + w * (g.z + w * g.w));
+      float extinction = tau.x + w * (tau.y + w * (tau.z + w * tau.w));
+      vec3 rgb = base.rgb + slope.rgb * (scalar - baseScalar);
+      pieceColour += gaussWeights[q] * extinction * exp(-(CubicIntegral(tau, w) - depthBefore)) * rgb;
+    }
+    Composite(pieceColour * halfWidth, CubicIntegral(tau, w1) - depthBefore);
+  }
+}
+
 /// Integrates the cell's segment of `len` whose scalar is the cubic c(u), u in [0, 1].
 void IntegrateCubicSegment(vec4 c, float len)
 {
   if (!(len > 0.0))
     return;
-  if (integrationMode == 2)
-  {
-    float h = len / float(fixedSteps);
-    for (int i = 0; i < fixedSteps; ++i)
-    {
-      vec4 n = Evaluate(CubicValue(c, (float(i) + 0.5) / float(fixedSteps)));
-      Composite((1.0 - exp(-n.a * h)) * n.rgb, n.a * h);
-    }
-    return;
-  }
-  // Split points: 0, extrema, node crossings per monotonic interval, 1.
+  // Split points: 0, extrema, 1, then per monotonic interval the node and isovalue crossings (an
+  // isovalue equal to an interval's far end counts there, at its near end not: once per ray).
   float cuts[maximumCuts];
+  int surfaceAt[maximumCuts]; // the isosurface a cut is on, or -1
   int cutCount = 0;
   float bounds[4];
   int boundCount = 0;
@@ -151,98 +262,93 @@ void IntegrateCubicSegment(vec4 c, float len)
   if (high > 0.0 && high < 1.0 && high != low)
     bounds[boundCount++] = high;
   bounds[boundCount++] = 1.0;
-  for (int i = 0; i < boundCount && cutCount < maximumCuts; ++i)
+  for (int i = 0; i < boundCount; ++i)
+  {
+    surfaceAt[cutCount] = -1;
     cuts[cutCount++] = bounds[i];
+  }
+  bool constantSteps = integrationMode == 2;
   for (int i = 0; i + 1 < boundCount; ++i)
   {
     float a = bounds[i], b = bounds[i + 1];
     float fa = CubicValue(c, a), fb = CubicValue(c, b);
     float lo = min(fa, fb), hi = max(fa, fb);
-    for (int k = NodesAtOrBelow(lo); k < nodeCount && NodeScalar(k) < hi && cutCount < maximumCuts; ++k)
+    for (int k = 0; k < isosurfaceCount && cutCount < maximumCuts; ++k)
+    {
+      float v = IsoValue(k);
+      if ((v > lo && v < hi) || (v == fb && v != fa))
+      {
+        surfaceAt[cutCount] = k;
+        cuts[cutCount++] = RootInBracket(c, v, a, b);
+      }
+    }
+    for (int k = NodesAtOrBelow(lo); !constantSteps && k < nodeCount && NodeScalar(k) < hi && cutCount < maximumCuts; ++k)
     {
       if (NodeScalar(k) > lo)
+      {
+        surfaceAt[cutCount] = -1;
         cuts[cutCount++] = RootInBracket(c, NodeScalar(k), a, b);
+      }
     }
   }
   for (int i = 1; i < cutCount; ++i) // insertion sort: a handful of values
   {
     float v = cuts[i];
+    int kind = surfaceAt[i];
     int j = i - 1;
     while (j >= 0 && cuts[j] > v)
     {
       cuts[j + 1] = cuts[j];
+      surfaceAt[j + 1] = surfaceAt[j];
       --j;
     }
     cuts[j + 1] = v;
+    surfaceAt[j + 1] = kind;
+  }
+  if (constantSteps)
+  {
+    // Constant steps over the cell (the paper's Hexa_CONST); a surface goes in before the first step
+    // whose midpoint lies beyond it.
+    float h = len / float(fixedSteps);
+    int next = 0;
+    for (int i = 0; i < fixedSteps; ++i)
+    {
+      float middle = (float(i) + 0.5) / float(fixedSteps);
+      for (; next < cutCount && cuts[next] <= middle; ++next)
+        if (surfaceAt[next] >= 0)
+          CompositeSurface(surfaceAt[next], cuts[next]);
+      vec4 n = Evaluate(CubicValue(c, middle));
+      Composite((1.0 - exp(-n.a * h)) * n.rgb, n.a * h);
+    }
+    for (; next < cutCount; ++next)
+      if (surfaceAt[next] >= 0)
+        CompositeSurface(surfaceAt[next], cuts[next]);
+    return;
   }
   for (int i = 0; i + 1 < cutCount; ++i)
   {
     float u0 = cuts[i], u1 = cuts[i + 1];
-    if (!(u1 > u0))
-      continue;
-    if (integrationMode == 1)
-    {
-      vec4 a = Evaluate(CubicValue(c, u0)), b = Evaluate(CubicValue(c, u1));
-      float pieceLength = len * (u1 - u0);
-      float da = a.a * pieceLength, db = b.a * pieceLength;
-      if (da + db > 0.0)
-      {
-        float psi = Psi(da, db);
-        float zeta = exp(-0.5 * (da + db));
-        Composite(a.rgb * (1.0 - psi) + b.rgb * (psi - zeta), 0.5 * (da + db));
-      }
-      continue;
-    }
-    // Accurate: the transfer function is linear on this piece; extinction and colour are cubics.
-    float mid = CubicValue(c, 0.5 * (u0 + u1));
-    int below = NodesAtOrBelow(mid);
-    vec4 base, slope = vec4(0.0);
-    float baseScalar = 0.0;
-    if (below <= 0 || below >= nodeCount)
-    {
-      base = NodeValue(below <= 0 ? 0 : nodeCount - 1);
-    }
-    else
-    {
-      float s0 = NodeScalar(below - 1), s1 = NodeScalar(below);
-      base = NodeValue(below - 1);
-      slope = (NodeValue(below) - NodeValue(below - 1)) / (s1 - s0);
-      baseScalar = s0;
-    }
-    vec4 g = vec4(CubicValue(c, u0), CubicSlope(c, u0), c.z + 3.0 * c.w * u0, c.w);
-    vec4 tau = len * vec4(base.a + slope.a * (g.x - baseScalar), slope.a * g.y, slope.a * g.z, slope.a * g.w);
-    float width = u1 - u0;
-    float totalDepth = CubicIntegral(tau, width);
-    if (!(totalDepth > 0.0))
-      continue;
-    int pieces = int(clamp(ceil(4.0 * totalDepth), 1.0, 16.0));
-    for (int k = 0; k < pieces; ++k)
-    {
-      float w0 = width * float(k) / float(pieces), w1 = width * float(k + 1) / float(pieces);
-      float depthBefore = CubicIntegral(tau, w0);
-      float halfWidth = 0.5 * (w1 - w0), centre = 0.5 * (w0 + w1);
-      vec3 pieceColour = vec3(0.0);
-      for (int q = 0; q < 6; ++q)
-      {
-        float w = centre + halfWidth * gaussNodes[q];
-        float scalar = g.x + w * (g.y + w * (g.z + w * g.w));
-        float extinction = tau.x + w * (tau.y + w * (tau.z + w * tau.w));
-        vec3 rgb = base.rgb + slope.rgb * (scalar - baseScalar);
-        pieceColour += gaussWeights[q] * extinction * exp(-(CubicIntegral(tau, w) - depthBefore)) * rgb;
-      }
-      Composite(pieceColour * halfWidth, CubicIntegral(tau, w1) - depthBefore);
-    }
+    if (u1 > u0)
+      IntegratePiece(c, len, u0, u1);
+    if (surfaceAt[i + 1] >= 0)
+      CompositeSurface(surfaceAt[i + 1], u1);
   }
 }
 
 //UV::BilinearFace
 
-/// False when the transfer function is transparent over the whole scalar range [low, high]: such a
-/// cell costs this test, and no integration.
+/// False when the transfer function is transparent over the whole scalar range [low, high] and no
+/// isovalue lies in it: such a cell costs this test, and no integration.
 bool RangeVisible(float low, float high)
 {
   if (Evaluate(low).a > 0.0 || Evaluate(high).a > 0.0)
     return true;
+  for (int k = 0; k < isosurfaceCount; ++k)
+  {
+    float v = IsoValue(k);
+    if (v >= low && v <= high)
+      return true;
+  }
   for (int k = NodesAtOrBelow(low); k < nodeCount && NodeScalar(k) < high; ++k)
   {
     if (NodeValue(k).a > 0.0)
@@ -252,8 +358,6 @@ bool RangeVisible(float low, float high)
 }
 
 // ---- Traversal
-vec3 points[8];
-float scalars[8];
 
 void LoadCell(int cell)
 {
@@ -279,7 +383,7 @@ vec3 InverseTrilinear(vec3 x, vec3 xi)
   {
     float r = xi.x, s = xi.y, t = xi.z;
     vec3 mapped = points[0] + b * r + c * s + d * t + e * r * s + f * r * t + g * s * t + h * r * s * t;
-    mat3 jacobian = mat3(b + e * s + f * t + h * s * t, c + e * r + g * t + h * r * t, d + f * r + g * s + h * r * s);
+    mat3 jacobian = Jacobian(xi);
     if (abs(determinant(jacobian)) < 1e-30)
       break;
     vec3 step = inverse(jacobian) * (mapped - x);
@@ -475,6 +579,10 @@ void main()
           xi0 = InverseTrilinear(entryPoint, xi0);
           xi1 = InverseTrilinear(exitPoint, xi1);
         }
+        segmentXi0 = xi0;
+        segmentXi1 = xi1;
+        segmentStartPoint = entryPoint;
+        segmentEndPoint = exitPoint;
         IntegrateCubicSegment(TrilinearAlongSegment(scalars, xi0, xi1), segmentEnd - t);
       }
       if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
