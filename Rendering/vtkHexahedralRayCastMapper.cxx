@@ -17,6 +17,8 @@
 #include "vtkCamera.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -167,6 +169,17 @@ int vtkHexahedralRayCastMapper::GetNumberOfMeshBuilds()
   return this->Impl->MeshBuilds;
 }
 
+void vtkHexahedralRayCastMapper::SetInputData(vtkDataSet* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+int vtkHexahedralRayCastMapper::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  return 1;
+}
+
 void vtkHexahedralRayCastMapper::ReleaseGraphicsResources(vtkWindow*)
 {
   this->Impl->ReleaseGraphics();
@@ -188,7 +201,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   Internals& impl = *this->Impl;
   impl.Peels = 0;
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkUnstructuredGridBase* input = this->GetInput();
+  vtkDataSet* input = vtkDataSet::SafeDownCast(this->GetInputDataObject(0, 0));
   if (!window || !volume || !volume->GetProperty() || !input)
   {
     vtkErrorMacro("needs an input, an OpenGL render window and a volume with a property");
@@ -220,12 +233,10 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   {
     impl.MeshKey.clear();
     impl.MeshOnGpu = false;
-    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(input);
-    if (!grid)
-    {
-      grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-      grid->DeepCopy(input);
-    }
+    // Any vtkDataSet through its generic cell API: unstructured grids, and structured grids
+    // (hexahedra; blanked cells are empty and skipped), image data and rectilinear grids (voxels)
+    // with no conversion.
+    vtkDataSet* grid = input;
     const vtkIdType pointCount = grid->GetNumberOfPoints();
     double low = std::numeric_limits<double>::infinity(), high = -low;
     for (vtkIdType p = 0; p < pointCount; ++p)
@@ -245,12 +256,13 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     grid->GetBounds(bounds);
     impl.Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
     impl.PointData.assign(4 * pointCount, 0.0f);
-    vtkPoints* points = grid->GetPoints();
+    double firstPoint[3];
+    grid->GetPoint(0, firstPoint); // vtkDataSet::GetPoint(id, x) is thread-safe after one serial call
     vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
       double x[3];
       for (vtkIdType p = begin; p < end; ++p)
       {
-        points->GetPoint(p, x);
+        grid->GetPoint(p, x);
         for (int d = 0; d < 3; ++d)
           impl.PointData[4 * p + d] = static_cast<float>(x[d] - impl.Center[d]);
         impl.PointData[4 * p + 3] =
@@ -260,17 +272,19 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
 
     impl.CellPoints.clear();
     vtkIdType others = 0, withNaN = 0;
-    vtkIdType npts;
-    const vtkIdType* ids;
+    vtkNew<vtkIdList> cellIds;
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
     {
       const int type = grid->GetCellType(c);
+      if (type == VTK_EMPTY_CELL)
+        continue; // blanked
       if (type != VTK_HEXAHEDRON && type != VTK_VOXEL)
       {
         ++others;
         continue;
       }
-      grid->GetCellPoints(c, npts, ids);
+      grid->GetCellPoints(c, cellIds);
+      const vtkIdType* ids = cellIds->GetPointer(0);
       std::array<std::uint32_t, 8> corners;
       for (int k = 0; k < 8; ++k)
         corners[k] = static_cast<std::uint32_t>(ids[type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k]);

@@ -25,8 +25,10 @@
  * boundary face covers cost nothing beyond the entry pass; a cell whose scalar range the transfer
  * function makes transparent (and holding no isovalue) costs one range test, no integration.
  *
- * Input: hexahedra and voxels with a point scalar. Other cells are an error: split mixed meshes with
- * vtkHexahedraToTetrahedra and render them with vtkPreIntegratedTetrahedraMapper.
+ * Input: any vtkDataSet of hexahedra and voxels with a point scalar: vtkUnstructuredGrid, and
+ * vtkStructuredGrid (blanked cells left out), vtkImageData and vtkRectilinearGrid as they are, with
+ * no conversion. Other cells are an error: split mixed meshes with vtkHexahedraToTetrahedra and
+ * render them with vtkPreIntegratedTetrahedraMapper.
  */
 #ifndef vtkHexahedralRayCastMapper_h
 #define vtkHexahedralRayCastMapper_h
@@ -109,12 +111,17 @@ public:
   int GetNumberOfMeshBuilds();
   ///@}
 
+  /// Any vtkDataSet (the superclass takes vtkUnstructuredGridBase only).
+  using Superclass::SetInputData;
+  void SetInputData(vtkDataSet* input) override;
+
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
   vtkHexahedralRayCastMapper();
   ~vtkHexahedralRayCastMapper() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 
   int IntegrationMode = ACCURATE;
   int FixedSteps = 8;

@@ -394,24 +394,17 @@ vec3 InverseTrilinear(vec3 x, vec3 xi)
   return xi;
 }
 
-/// Ray parameter where the ray meets triangle (a, b, c), or -1 (edges inclusive, so a ray through
-/// an edge is claimed by a face on either side).
-float HitTriangle(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c)
+/// Whether a ray along `direction` leaves a cell where its face's normal is `normal` (either
+/// orientation; `outward`, the face's mean outward normal, orients it). A vanishing normal (a
+/// collapsed edge) falls back to `outward`; a collapsed face does not block.
+bool Leaves(vec3 normal, vec3 outward, vec3 direction)
 {
-  vec3 e1 = b - a, e2 = c - a;
-  vec3 p = cross(direction, e2);
-  float det = dot(e1, p);
-  if (abs(det) < 1e-30)
-    return -1.0;
-  float inverse = 1.0 / det;
-  vec3 s = origin - a;
-  float u = dot(s, p) * inverse;
-  vec3 q = cross(s, e1);
-  float v = dot(direction, q) * inverse;
-  const float slack = 1e-5;
-  if (u < -slack || v < -slack || u + v > 1.0 + slack)
-    return -1.0;
-  return dot(e2, q) * inverse;
+  float tiny = 1e-6 * dot(outward, outward);
+  if (!(tiny > 0.0))
+    return true;
+  normal = dot(normal, normal) > tiny ? normal : outward;
+  normal = dot(normal, outward) < 0.0 ? -normal : normal;
+  return dot(normal, direction) > 0.0;
 }
 
 void main()
@@ -474,13 +467,17 @@ void main()
         vec3 a, b, c, d;
         CanonicalQuad(q, qi, a, b, c, d);
         float h0, h1;
-        int hits = HitPatch(origin, direction, a, b, c, d, h0, h1);
-        if (hits > 0 && h0 > t + tolerance && h0 < exitT)
+        vec2 uv0, uv1;
+        int hits = HitPatchAt(origin, direction, a, b, c, d, h0, h1, uv0, uv1);
+        // Only where the ray leaves the cell: near an edge the ray can also meet (within the edge
+        // slack) a face it enters through, just after the entry on the neighbouring face.
+        vec3 outward = PatchNormal(a, b, c, d, cellCentre);
+        if (hits > 0 && h0 > t + tolerance && h0 < exitT && Leaves(PatchNormalAt(a, b, c, d, uv0), outward, direction))
         {
           exitT = h0;
           exitFace = f;
         }
-        if (hits > 1 && h1 > t + tolerance && h1 < exitT)
+        if (hits > 1 && h1 > t + tolerance && h1 < exitT && Leaves(PatchNormalAt(a, b, c, d, uv1), outward, direction))
         {
           exitT = h1;
           exitFace = f;

@@ -17,6 +17,8 @@ from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, vtkPiecewiseFunction, vtkStructuredGrid,  # noqa: E402
                                            vtkUnstructuredGrid)
+from vtkmodules.vtkFiltersCore import vtkAppendFilter  # noqa: E402
+from vtkmodules.vtkImagingCore import vtkRTAnalyticSource  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkRenderer, vtkVolume, vtkVolumeProperty  # noqa: E402
 
 OUTPUT = os.environ.get("UV_TEST_OUTPUT", tempfile.gettempdir())
@@ -302,6 +304,41 @@ class InputTests(SceneTestCase):
         scene = HexScene(split.GetOutput(), uvrender.volume_property((0, 1)), camera_for(analytic(2)), 48)
         scene.render()
         self.assertEqual(scene.events.errors, 1)
+
+    def test_image_and_structured_grids_render_as_they_are(self):
+        # vtkImageData (voxels) and vtkStructuredGrid (hexahedra) straight in: the same image as
+        # their vtkUnstructuredGrid copies, and the reference's; a blanked cell leaves a hole.
+        wavelet = vtkRTAnalyticSource()
+        wavelet.SetWholeExtent(-4, 4, -4, 4, -4, 4)
+        wavelet.Update()
+        image = wavelet.GetOutput()
+        structured = vtkStructuredGrid()
+        structured.SetDimensions(9, 9, 9)
+        points = vtkPoints()
+        for i in range(image.GetNumberOfPoints()):
+            x, y, z = image.GetPoint(i)
+            points.InsertNextPoint(x + 0.15 * z, y, z)  # sheared: no longer an image
+        structured.SetPoints(points)
+        structured.GetPointData().SetScalars(image.GetPointData().GetScalars())
+        prop = uvrender.volume_property(image.GetPointData().GetScalars().GetRange())
+        prop.SetScalarOpacityUnitDistance(2.0)
+        for data in (image, structured):
+            camera = camera_for(data, distance=1.8)
+            converted = vtkAppendFilter()
+            converted.SetInputData(data)
+            converted.Update()
+            direct_scene = HexScene(data, prop, camera, 64)
+            direct = direct_scene.render()
+            self.assertEqual(direct_scene.events.errors, 0)
+            self.assertLess(rmse(direct, HexScene(converted.GetOutput(), prop, camera, 64).render())[0], 1e-6)
+            self.assertLess(rmse(direct, reference(data, prop, camera, 64))[0], 1e-3)  # measured 7.6e-5, 2.1e-4
+        structured.BlankCell(4 + 8 * 4 + 64 * 4)  # cells (4, 4, 4) and (4, 4, 5)
+        structured.BlankCell(4 + 8 * 4 + 64 * 5)
+        scene = HexScene(structured, prop, camera, 64)
+        holed = scene.render()
+        self.assertEqual(scene.events.errors, 0)
+        self.assertEqual(scene.mapper.GetNumberOfCells(), 8 * 8 * 8 - 2)
+        self.assertTrue(finite_image(holed))
 
     def test_empty_and_constant(self):
         scene = HexScene(vtkUnstructuredGrid(), uvrender.volume_property((0, 1)), camera_for(analytic(2)), 48)
