@@ -61,6 +61,36 @@ inline HexahedronFrame MakeHexahedronFrame(const glm::dvec3 p[8])
   return frame;
 }
 
+/// Whether the cell's trilinear map folds over itself: its Jacobian determinant takes both signs
+/// over the corners and the centre (where it is extreme for most cells). Zeros, as at a collapsed
+/// edge, do not count. Rays through such a cell meet parts of it more than once and overlapping
+/// neighbours; what they integrate there is not well defined.
+inline bool IsTangledHexahedron(const glm::dvec3 p[8])
+{
+  auto determinant = [p](double r, double s, double t) {
+    const glm::dvec3 dr = (1 - s) * (1 - t) * (p[1] - p[0]) + s * (1 - t) * (p[2] - p[3]) +
+      (1 - s) * t * (p[5] - p[4]) + s * t * (p[6] - p[7]);
+    const glm::dvec3 ds = (1 - r) * (1 - t) * (p[3] - p[0]) + r * (1 - t) * (p[2] - p[1]) +
+      (1 - r) * t * (p[7] - p[4]) + r * t * (p[6] - p[5]);
+    const glm::dvec3 dt = (1 - r) * (1 - s) * (p[4] - p[0]) + r * (1 - s) * (p[5] - p[1]) +
+      r * s * (p[6] - p[2]) + (1 - r) * s * (p[7] - p[3]);
+    return glm::dot(dr, glm::cross(ds, dt));
+  };
+  double scale = 0.0;
+  for (int k = 1; k < 8; ++k)
+    scale = std::max(scale, glm::length(p[k] - p[0]));
+  const double tiny = 1e-12 * scale * scale * scale;
+  bool positive = false, negative = false;
+  for (int corner = 0; corner < 9; ++corner)
+  {
+    const double d = corner < 8 ? determinant(corner & 1 ? 1 : 0, corner & 2 ? 1 : 0, corner & 4 ? 1 : 0)
+                                : determinant(0.5, 0.5, 0.5);
+    positive = positive || d > tiny;
+    negative = negative || d < -tiny;
+  }
+  return positive && negative;
+}
+
 inline glm::dvec3 FrameParametric(const HexahedronFrame& frame, const glm::dvec3& x)
 {
   return frame.Inverse * (x - frame.Origin);

@@ -5,6 +5,7 @@
 #include "uvHexahedralEntryFS.h"
 #include "uvHexahedralEntryVS.h"
 #include "uvHexahedralTraverseFS.h"
+#include "uvHexahedronRay.h"
 #include "uvIsosurfaceList.h"
 #include "uvLinearCellSplit.h"
 #include "uvMapperOpenGL.h"
@@ -45,6 +46,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -80,6 +82,7 @@ public:
   glm::dvec3 Center{ 0.0 };
   double ScalarOffset = 0.0, ScalarScale = 1.0;
   int MeshBuilds = 0, Peels = 0;
+  vtkIdType TangledCells = 0;
   std::string EyeCellKey;
   glm::dvec3 EyeCellPosition{ 0.0 };
   int EyeCell = -1;
@@ -163,6 +166,10 @@ vtkIdType vtkHexahedralRayCastMapper::GetNumberOfBoundaryFaces()
 int vtkHexahedralRayCastMapper::GetNumberOfPeels()
 {
   return this->Impl->Peels;
+}
+vtkIdType vtkHexahedralRayCastMapper::GetNumberOfTangledCells()
+{
+  return this->Impl->TangledCells;
 }
 int vtkHexahedralRayCastMapper::GetNumberOfMeshBuilds()
 {
@@ -304,6 +311,28 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
                     << "vtkHexahedraToTetrahedra and render it with vtkPreIntegratedTetrahedraMapper");
       impl.CellPoints.clear();
       return;
+    }
+    // Folded cells (a crushed mesh): told, not refused.
+    std::atomic<vtkIdType> tangled(0);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(impl.CellPoints.size() / 8), [&](vtkIdType begin, vtkIdType end) {
+      vtkIdType found = 0;
+      for (vtkIdType c = begin; c < end; ++c)
+      {
+        glm::dvec3 p[8];
+        for (int k = 0; k < 8; ++k)
+        {
+          const float* x = &impl.PointData[4 * impl.CellPoints[8 * c + k]];
+          p[k] = glm::dvec3(x[0], x[1], x[2]);
+        }
+        found += uv::IsTangledHexahedron(p) ? 1 : 0;
+      }
+      tangled += found;
+    });
+    impl.TangledCells = tangled;
+    if (impl.TangledCells > 0)
+    {
+      vtkWarningMacro(<< impl.TangledCells << " hexahedra are tangled (their Jacobian changes sign, as in a "
+                      << "crushed mesh): what a ray integrates through them is not well defined");
     }
     if (withNaN > 0 && !impl.WarnedNaN)
     {

@@ -104,8 +104,10 @@ public:
   ///@}
 
   ///@{
-  /// What the last frame did: cells in the mesh, boundary faces, peels run, mesh builds.
+  /// What the last frame did: cells in the mesh, boundary faces, peels run, mesh builds, and the
+  /// cells found tangled (folded over themselves; warned about once per mesh build).
   vtkIdType GetNumberOfCells();
+  vtkIdType GetNumberOfTangledCells();
   vtkIdType GetNumberOfBoundaryFaces();
   int GetNumberOfPeels();
   int GetNumberOfMeshBuilds();

@@ -33,15 +33,10 @@ from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkTable
-from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkImagingCore import vtkImageConstantPad
 from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
-from vtkmodules.vtkFiltersCore import vtkArrayCalculator
-from vtkmodules.vtkIOExodus import vtkExodusIIReader
-from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLImageDataWriter, vtkXMLStructuredGridReader,
-                                 vtkXMLUnstructuredGridReader)
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLImageDataWriter
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
                                          vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
 from vtkmodules.vtkRenderingVolume import (vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeRayCastMapper,
@@ -55,7 +50,7 @@ import vtkmodules.vtkRenderingFreeType  # noqa: F401
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
-SHARED = os.path.abspath(os.path.join(ROOT, "..", "shared", "data"))
+from shared_data import SHARED, bluntfin, can, disk_out_ref, legacy  # noqa: E402
 REFERENCE_VERSION = "1"  # bump when the reference renderer's output changes
 
 # ---------------------------------------------------------------------------------------------
@@ -97,24 +92,6 @@ def analytic(resolution, field, distortion, cells):
     return source.GetOutput()
 
 
-def legacy(path):
-    reader = vtkUnstructuredGridReader()
-    reader.ReadAllScalarsOn()
-    reader.ReadAllFieldsOn()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
-def bluntfin():
-    reader = vtkXMLStructuredGridReader()
-    reader.SetFileName(os.path.join(SHARED, "bluntfin", "bluntfin.vts"))
-    to_grid = vtkAppendFilter()
-    to_grid.SetInputConnection(reader.GetOutputPort())
-    to_grid.Update()
-    return to_grid.GetOutput()
-
-
 def wavelet_tets():
     """VTK's wavelet on 64^3 points, five tetrahedra per cell: 1.25 M tetrahedra."""
     wavelet = vtkRTAnalyticSource()
@@ -134,36 +111,6 @@ def split_tets(load):
         split.Update()
         return split.GetOutput()
     return loader
-
-
-def disk_out_ref():
-    reader = vtkExodusIIReader()
-    reader.SetFileName(os.path.join(SHARED, "disk_out_ref", "disk_out_ref.ex2"))
-    reader.UpdateInformation()
-    reader.SetAllArrayStatus(vtkExodusIIReader.NODAL, 1)
-    reader.Update()
-    merge = vtkAppendFilter()
-    merge.MergePointsOn()
-    iterator = reader.GetOutput().NewTreeIterator()
-    iterator.InitTraversal()
-    while not iterator.IsDoneWithTraversal():
-        merge.AddInputData(iterator.GetCurrentDataObject())
-        iterator.GoToNextItem()
-    merge.Update()
-    return merge.GetOutput()
-
-
-def can():
-    """The can's displacement magnitude as a point scalar."""
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(os.path.join(SHARED, "can", "can.vtu"))
-    magnitude = vtkArrayCalculator()
-    magnitude.SetInputConnection(reader.GetOutputPort())
-    magnitude.AddVectorArrayName("DISPL")
-    magnitude.SetFunction("mag(DISPL)")
-    magnitude.SetResultArrayName("DISPL_magnitude")
-    magnitude.Update()
-    return magnitude.GetOutput()
 
 
 def smooth_ramp(low, high):
@@ -206,9 +153,8 @@ def scenes(quick):
             ("bluntfin_tets", split_tets(bluntfin), "Density", smooth_ramp, 0.03),
             ("disk_out_ref_hex", disk_out_ref, "Temp", smooth_ramp, 0.05),
             ("can_hex", can, "DISPL_magnitude", smooth_ramp, 0.05),
-            ("spx_tets", lambda: legacy(os.path.join(SHARED, "spx", "spx.vtk")), None, smooth_ramp, 0.05),
-            ("lox_post_tets", lambda: legacy(os.path.join(SHARED, "lox_post", "post.vtk")), "Pressure", smooth_ramp,
-             0.05),
+            ("spx_tets", lambda: legacy("spx", "spx.vtk"), None, smooth_ramp, 0.05),
+            ("lox_post_tets", lambda: legacy("lox_post", "post.vtk"), "Pressure", smooth_ramp, 0.05),
         ]
     return found
 

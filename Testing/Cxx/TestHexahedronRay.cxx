@@ -217,3 +217,30 @@ TEST(HexahedronRay, TwistedCellFrameErrorIsMeasured)
   EXPECT_GT(worst, 1e-6); // not exact...
   EXPECT_LT(worst, 0.05); // ...but close for a mild twist
 }
+
+TEST(HexahedronRay, TangledCellsAreTold)
+{
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 50; ++trial)
+  {
+    std::array<glm::dvec3, 8> p = Parallelepiped(random);
+    EXPECT_FALSE(uv::IsTangledHexahedron(p.data())); // valid, in either orientation
+    std::swap(p[0], p[4]);
+    std::swap(p[1], p[5]);
+    std::swap(p[2], p[6]);
+    std::swap(p[3], p[7]);
+    EXPECT_FALSE(uv::IsTangledHexahedron(p.data())); // inverted as a whole: one sign
+  }
+  std::array<glm::dvec3, 8> cube;
+  for (int k = 0; k < 8; ++k)
+    cube[k] = Corner(k);
+  // A corner pushed through the opposite face folds the cell.
+  std::array<glm::dvec3, 8> folded = cube;
+  folded[6] = glm::dvec3(0.3, 0.3, -0.5);
+  EXPECT_TRUE(uv::IsTangledHexahedron(folded.data()));
+  // A collapsed edge (a wedge as a hexahedron) has zero Jacobians, not both signs.
+  std::array<glm::dvec3, 8> collapsed = cube;
+  collapsed[5] = collapsed[4];
+  collapsed[6] = collapsed[7];
+  EXPECT_FALSE(uv::IsTangledHexahedron(collapsed.data()));
+}
