@@ -171,6 +171,12 @@ vtkIdType vtkHexahedralRayCastMapper::GetNumberOfTangledCells()
 {
   return this->Impl->TangledCells;
 }
+vtkIdType vtkHexahedralRayCastMapper::GetMeshMemoryInBytes()
+{
+  const Internals& impl = *this->Impl;
+  return static_cast<vtkIdType>(sizeof(std::uint32_t) * impl.CellPoints.size() + sizeof(float) * impl.PointData.size() +
+    sizeof(std::int32_t) * (impl.Neighbours.size() + impl.BoundaryFaces.size()));
+}
 int vtkHexahedralRayCastMapper::GetNumberOfMeshBuilds()
 {
   return this->Impl->MeshBuilds;

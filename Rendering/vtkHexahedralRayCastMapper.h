@@ -108,6 +108,9 @@ public:
   /// cells found tangled (folded over themselves; warned about once per mesh build).
   vtkIdType GetNumberOfCells();
   vtkIdType GetNumberOfTangledCells();
+  /// Bytes of GPU buffers the mesh takes (cells, points, adjacency, boundary faces; not the
+  /// screen-sized images).
+  vtkIdType GetMeshMemoryInBytes();
   vtkIdType GetNumberOfBoundaryFaces();
   int GetNumberOfPeels();
   int GetNumberOfMeshBuilds();

@@ -203,6 +203,16 @@ int vtkPreIntegratedTetrahedraMapper::GetNumberOfGradientComputations()
 {
   return this->Impl->GradientComputations;
 }
+vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
+{
+  const Internals& impl = *this->Impl;
+  std::size_t bytes = sizeof(std::uint32_t) * (impl.TetrahedronPoints.size() + impl.Order.size()) +
+    sizeof(float) * impl.PointData.size() + sizeof(std::uint32_t) * 12 * impl.FanIndexCount;
+  if (impl.GradientsOnGpu)
+    bytes += sizeof(float) * impl.Gradients.size();
+  return static_cast<vtkIdType>(bytes);
+}
+
 int vtkPreIntegratedTetrahedraMapper::GetNumberOfMeshUploads()
 {
   return this->Impl->MeshUploads;

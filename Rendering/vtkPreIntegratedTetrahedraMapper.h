@@ -120,6 +120,9 @@ public:
   int GetNumberOfSorts();
   int GetNumberOfGradientComputations();
   int GetNumberOfMeshUploads();
+  /// Bytes of GPU buffers the mesh takes (ids, points, gradients, order, fan indices; not the
+  /// screen-sized images), as of the last frame.
+  vtkIdType GetMeshMemoryInBytes();
   int GetNumberOfTransferFunctionUploads();
   int GetNumberOfVisibleListBuilds();
   ///@}

@@ -7,7 +7,7 @@
 For each scene (mesh, scalar, transfer function, an orbit of camera positions) and each mapper:
 preparation time (the first frame), then the median and spread of the frame time over the orbit
 (each frame ends with WaitForCompletion, i.e. glFinish), the process's resident memory after the
-first frame, and the error of every frame against vtkUnstructuredVolumeReferenceRenderer at the same
+first frame, the GPU buffers the mesh takes per cell of the scene (this project's mappers), and the error of every frame against vtkUnstructuredVolumeReferenceRenderer at the same
 view. Writes results.csv, results.json, results.md (a table), and per scene a log-log plot of time against error with the
 Pareto front (<scene>_time_vs_error.png) and a montage (<scene>_montage.png: top row the reference
 then each mapper's first view, bottom row their error heat maps). Reference images are cached in
@@ -283,8 +283,9 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
         window.WaitForCompletion()
         frames.append(time.perf_counter() - start)
         images.append(grab_rgba(window))
+    mesh_bytes = mapper.GetMeshMemoryInBytes() if hasattr(mapper, "GetMeshMemoryInBytes") else None
     window.Finalize()
-    return preparation, frames, memory, images
+    return preparation, frames, memory, images, mesh_bytes
 
 
 def pareto(points):
@@ -395,12 +396,14 @@ def montage(top, bottom, path):
 
 def markdown_table(rows):
     """The results as a Markdown table (for the README and issue notes)."""
-    lines = ["| scene | mapper | prep (s) | median frame (s) [min-max] | RMSE covered | max error | memory (MB) |",
-             "|---|---|---|---|---|---|---|"]
+    lines = ["| scene | mapper | prep (s) | median frame (s) [min-max] | RMSE covered | max error | memory (MB) "
+             "| GPU mesh B/cell |",
+             "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| {r['scene']} | {r['mapper']} | {float(r['preparation_s']):.3f} | "
                      f"{float(r['median_s']):.3f} [{float(r['min_s']):.3f}-{float(r['max_s']):.3f}] | "
-                     f"{float(r['rmse_covered']):.4f} | {float(r['max_error']):.3f} | {float(r['memory_mb']):.0f} |")
+                     f"{float(r['rmse_covered']):.4f} | {float(r['max_error']):.3f} | {float(r['memory_mb']):.0f} | "
+                     f"{'' if r['gpu_bytes_per_cell'] is None else round(float(r['gpu_bytes_per_cell']))} |")
     return "\n".join(lines) + "\n"
 
 
@@ -448,7 +451,7 @@ def main():
         for name, factory, takes in mappers:
             if takes == "hexahedra" and not hexahedral:
                 continue
-            preparation, frames, memory, images = run_mapper(
+            preparation, frames, memory, images, mesh_bytes = run_mapper(
                 name, factory, tets if takes == "tets" else mesh, scalar, prop, cameras, size)
             errors = []
             for k, (image, reference) in enumerate(zip(images, references)):
@@ -469,6 +472,8 @@ def main():
                 "preparation_s": preparation, "median_s": statistics.median(frames),
                 "p25_s": quartiles[0], "p75_s": quartiles[2], "min_s": min(frames), "max_s": max(frames),
                 "memory_mb": memory,
+                # GPU buffers of the mesh per cell of the scene's mesh (a hexahedron, or its tetrahedra).
+                "gpu_bytes_per_cell": None if mesh_bytes is None else mesh_bytes / mesh.GetNumberOfCells(),
                 "rmse": statistics.mean(e[0] for e in errors), "rmse_covered": statistics.mean(e[1] for e in errors),
                 "psnr": statistics.mean(min(e[2], 200.0) for e in errors), "max_error": max(e[3] for e in errors),
                 "p99_error": statistics.mean(e[4] for e in errors),
