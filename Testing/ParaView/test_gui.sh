@@ -21,7 +21,7 @@ inner='
   xwd -root -silent | convert xwd:- "$UV_GUI_OUTPUT/paraview_gui.png"
   kill $gui 2>/dev/null; wait $gui 2>/dev/null
   true'
-xvfb-run -a -s "-screen 0 1280x800x24" bash -c "$inner" "$pythonpath" "$here"
+xvfb-run -a -s "-screen 0 1280x800x24 -noreset" bash -c "$inner" "$pythonpath" "$here"
 if [ ! -s "$output/gui_entries.txt" ]; then
   echo "the GUI did not get as far as rendering; its log:"; tail -20 "$output/paraview_gui.log"; exit 1
 fi
