@@ -244,6 +244,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     std::to_string(scalars->GetMTime());
   if (meshKey != impl.MeshKey)
   {
+    this->UpdateProgress(0.0); // preparation (adjacency) can take seconds on large meshes
     impl.MeshKey.clear();
     impl.MeshOnGpu = false;
     // Any vtkDataSet through its generic cell API: unstructured grids, and structured grids
@@ -359,7 +360,9 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
           record.CellFace = static_cast<std::uint32_t>(8 * c + f);
         }
     });
+    this->UpdateProgress(0.4);
     vtkSMPTools::Sort(faces.begin(), faces.end());
+    this->UpdateProgress(0.8);
     impl.Neighbours.assign(8 * cellCount, -1);
     impl.BoundaryFaces.clear();
     for (std::size_t i = 0; i < faces.size();)
@@ -387,6 +390,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     }
     impl.MeshKey = meshKey;
     ++impl.MeshBuilds;
+    this->UpdateProgress(1.0);
   }
   const std::size_t cellCount = impl.CellPoints.size() / 8;
   const std::size_t boundaryCount = impl.BoundaryFaces.size() / 4;

@@ -286,6 +286,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     impl.MeshOnGpu = impl.GradientsOnGpu = impl.OrderOnGpu = false;
     impl.OrderValid = impl.VisibleListValid = false;
     impl.GradientKey.clear();
+    this->UpdateProgress(0.0); // preparation (split, arrays) can take seconds on large meshes
     vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(input);
     if (!grid)
     {
@@ -317,6 +318,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
         return;
       }
       grid = tets;
+      this->UpdateProgress(0.5);
       int flag = 0;
       impl.Scalars = vtkAbstractMapper::GetScalars(
         grid, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, flag);
@@ -422,6 +424,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
       }
     });
     impl.MeshKey = meshKey;
+    this->UpdateProgress(1.0);
   }
   const std::size_t tetCount = impl.TetrahedronPoints.size() / 4;
   if (tetCount == 0)

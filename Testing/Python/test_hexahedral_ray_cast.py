@@ -352,6 +352,30 @@ class InputTests(SceneTestCase):
         self.assertLess(rmse(image, reference(mesh, prop, camera_for(mesh), 64))[0], 1e-3)
 
 
+class ProgressTests(SceneTestCase):
+    def test_preparation_reports_progress_once_per_data_change(self):
+        # The mesh preparation (adjacency, split) reports progress like a filter (ParaView's progress
+        # bar shows it through the plugin's representations); a frame with nothing changed does not.
+        mesh = analytic(6)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        for mapper in (vtkHexahedralRayCastMapper(), vtkPreIntegratedTetrahedraMapper()):
+            progress = []
+            mapper.AddObserver("ProgressEvent", lambda caller, event: progress.append(caller.GetProgress()))
+            scene = HexScene(mesh, prop, camera_for(mesh), 48, mapper=mapper)
+            scene.render()
+            # The pipeline's own update reports 0 and 1 first; the preparation follows, 0 to 1.
+            preparation = progress[len(progress) - 1 - progress[::-1].index(0.0):]
+            self.assertGreaterEqual(len(preparation), 3, mapper.GetClassName())
+            self.assertEqual(preparation[-1], 1.0)
+            self.assertEqual(preparation, sorted(preparation))
+            del progress[:]
+            scene.render()
+            self.assertEqual(progress, [])
+            mesh.GetPointData().GetScalars().Modified()
+            scene.render()
+            self.assertEqual(progress[-1], 1.0)
+
+
 class StressTests(SceneTestCase):
     def test_rays_along_faces_and_edges(self):
         # Axis-aligned views of a regular grid: rays run exactly along faces and edges.
