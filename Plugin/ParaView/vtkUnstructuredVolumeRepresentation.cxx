@@ -1,62 +1,50 @@
 #include "vtkUnstructuredVolumeRepresentation.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkCompositeDataSet.h"
+#include "vtkCommand.h"
 #include "vtkInformation.h"
-#include "vtkObjectFactory.h"
-#include "vtkPreIntegratedTetrahedraMapper.h"
 #include "vtkVolumeProperty.h"
 
-vtkStandardNewMacro(vtkUnstructuredVolumeRepresentation);
-
-namespace
-{
-constexpr const char* MapperName = "Pre-integrated tetrahedra";
-}
-
-vtkUnstructuredVolumeRepresentation::vtkUnstructuredVolumeRepresentation()
-{
-  this->PreIntegratedMapper = vtkPreIntegratedTetrahedraMapper::New();
-  this->AddVolumeMapper(MapperName, this->PreIntegratedMapper);
-  this->Superclass::SetActiveVolumeMapper(MapperName);
-}
+vtkUnstructuredVolumeRepresentation::vtkUnstructuredVolumeRepresentation() = default;
 
 vtkUnstructuredVolumeRepresentation::~vtkUnstructuredVolumeRepresentation()
 {
-  this->PreIntegratedMapper->Delete();
+  // The superclass still holds the mapper here.
+  if (this->PinnedMapper)
+  {
+    this->PinnedMapper->RemoveObserver(this->ProgressObserver);
+  }
+}
+
+void vtkUnstructuredVolumeRepresentation::PinMapper(const char* name, vtkAbstractVolumeMapper* mapper)
+{
+  this->MapperName = name;
+  this->PinnedMapper = mapper;
+  this->ProgressObserver = mapper->AddObserver(
+    vtkCommand::ProgressEvent, this, &vtkUnstructuredVolumeRepresentation::ForwardMapperProgress);
+  this->AddVolumeMapper(name, mapper);
+  this->Superclass::SetActiveVolumeMapper(name);
+}
+
+void vtkUnstructuredVolumeRepresentation::ForwardMapperProgress(vtkObject*, unsigned long, void* progress)
+{
+  this->UpdateProgress(*static_cast<double*>(progress));
 }
 
 void vtkUnstructuredVolumeRepresentation::SetActiveVolumeMapper(const char*)
 {
-  this->Superclass::SetActiveVolumeMapper(MapperName);
+  this->Superclass::SetActiveVolumeMapper(this->MapperName.c_str());
 }
 
 int vtkUnstructuredVolumeRepresentation::FillInputPortInformation(int port, vtkInformation* info)
 {
-  // Any dataset: the superclass's preprocessor tetrahedralises structured and image data.
+  // Any dataset (the superclass takes unstructured grids and composites only).
   this->Superclass::FillInputPortInformation(port, info);
   info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
-}
-
-void vtkUnstructuredVolumeRepresentation::SetIntegrationMode(int mode)
-{
-  this->PreIntegratedMapper->SetIntegrationMode(mode);
-  this->MarkModified();
-}
-
-void vtkUnstructuredVolumeRepresentation::SetProjectionRoute(int route)
-{
-  this->PreIntegratedMapper->SetProjectionRoute(route);
-  this->MarkModified();
-}
-
-void vtkUnstructuredVolumeRepresentation::SetSkipInvisibleCells(int skip)
-{
-  this->PreIntegratedMapper->SetSkipInvisibleCells(skip != 0);
-  this->MarkModified();
 }
 
 void vtkUnstructuredVolumeRepresentation::AddIsovalue(double value)
@@ -82,7 +70,7 @@ void vtkUnstructuredVolumeRepresentation::UpdateMapperParameters()
   this->Superclass::UpdateMapperParameters();
   // Isosurfaces take the colour map's colour at their value, like ParaView's contours coloured by
   // the same array.
-  this->PreIntegratedMapper->RemoveAllIsosurfaces();
+  this->ClearMapperIsosurfaces();
   vtkColorTransferFunction* colors = this->Property->GetRGBTransferFunction(0);
   for (double value : this->Isovalues)
   {
@@ -91,13 +79,14 @@ void vtkUnstructuredVolumeRepresentation::UpdateMapperParameters()
     {
       colors->GetColor(value, rgb);
     }
-    this->PreIntegratedMapper->AddIsosurface(value, rgb[0], rgb[1], rgb[2], this->IsosurfaceOpacity);
+    this->AddMapperIsosurface(value, rgb, this->IsosurfaceOpacity);
   }
 }
 
 void vtkUnstructuredVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Mapper: " << this->MapperName << "\n";
   os << indent << "Isovalues: " << this->Isovalues.size() << "\n";
   os << indent << "IsosurfaceOpacity: " << this->IsosurfaceOpacity << "\n";
 }

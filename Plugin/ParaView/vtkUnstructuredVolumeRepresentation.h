@@ -1,14 +1,15 @@
 /**
  * @class vtkUnstructuredVolumeRepresentation
- * @brief ParaView's unstructured-grid volume representation, rendering with one of this project's
- * mappers.
+ * @brief ParaView's unstructured-grid volume representation, pinned to one of this project's mappers.
  *
  * A vtkUnstructuredGridVolumeRepresentation (so: the same colour map and opacity editor, scalar
- * selection, "Use Separate Opacity Array", shading properties, multiblock handling, conversion of
- * structured and image data to tetrahedra, and ordered compositing in parallel) whose active mapper
- * is fixed to this project's vtkPreIntegratedTetrahedraMapper. Adding a mapper later means one more
- * representation proxy in Plugin/UnstructuredVolumeRepresentations.xml and one more case in
- * CreateMapper().
+ * selection, "Use Separate Opacity Array", shading properties, multiblock handling and ordered
+ * compositing in parallel) whose active mapper is fixed to the one a subclass pins in its
+ * constructor. Isosurfaces are kept here (values, coloured by the colour map, one opacity) and
+ * handed to the mapper before each render.
+ *
+ * Adding a mapper to the plugin: a subclass that pins it and forwards its settings, and its proxy
+ * in Plugin/UnstructuredVolumeRepresentations.xml (the menu entries are generated from there).
  */
 #ifndef vtkUnstructuredVolumeRepresentation_h
 #define vtkUnstructuredVolumeRepresentation_h
@@ -16,27 +17,18 @@
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 #include "vtkUnstructuredVolumeParaViewModule.h" // for export macro
 
+#include <string> // for std::string
 #include <vector> // for std::vector
-
-class vtkPreIntegratedTetrahedraMapper;
 
 class VTKUNSTRUCTUREDVOLUMEPARAVIEW_EXPORT vtkUnstructuredVolumeRepresentation
   : public vtkUnstructuredGridVolumeRepresentation
 {
 public:
-  static vtkUnstructuredVolumeRepresentation* New();
-  vtkTypeMacro(vtkUnstructuredVolumeRepresentation, vtkUnstructuredGridVolumeRepresentation);
+  vtkAbstractTypeMacro(vtkUnstructuredVolumeRepresentation, vtkUnstructuredGridVolumeRepresentation);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The inherited "SelectMapper" property must not switch away from this project's mapper.
+  /// The inherited "SelectMapper" property must not switch away from the pinned mapper.
   void SetActiveVolumeMapper(const char*) override;
-
-  ///@{
-  /// Forwarded to vtkPreIntegratedTetrahedraMapper.
-  void SetIntegrationMode(int mode);
-  void SetProjectionRoute(int route);
-  void SetSkipInvisibleCells(int skip);
-  ///@}
 
   ///@{
   /// Isosurfaces: values (any number), coloured by the colour map at their value, one opacity.
@@ -49,10 +41,23 @@ protected:
   vtkUnstructuredVolumeRepresentation();
   ~vtkUnstructuredVolumeRepresentation() override;
 
+  /// For subclasses' constructors: the mapper to render with, under a name. Its progress (mesh
+  /// preparation) is reported as this representation's, which ParaView's progress bar shows.
+  void PinMapper(const char* name, vtkAbstractVolumeMapper* mapper);
+  void ForwardMapperProgress(vtkObject* mapper, unsigned long event, void* progress);
+
+  ///@{
+  /// The pinned mapper's isosurface calls.
+  virtual void ClearMapperIsosurfaces() = 0;
+  virtual void AddMapperIsosurface(double value, const double rgb[3], double opacity) = 0;
+  ///@}
+
   int FillInputPortInformation(int port, vtkInformation* info) override;
   void UpdateMapperParameters() override;
 
-  vtkPreIntegratedTetrahedraMapper* PreIntegratedMapper;
+  std::string MapperName;
+  vtkAbstractVolumeMapper* PinnedMapper = nullptr;
+  unsigned long ProgressObserver = 0;
   std::vector<double> Isovalues;
   double IsosurfaceOpacity = 1.0;
 

@@ -1,10 +1,13 @@
-"""The plugin's representation from pvbatch / pvpython (and mpiexec -np N pvbatch): select
-"Volume (Pre-integrated Tetrahedra)" on unstructured and image data, drive it with the colour map,
-opacity editor and the mapper's own properties, render, write the image and compare it with the
-baseline: vtkImageDifference's thresholded error at most <threshold>, and at most <fraction> of the
-pixels more than 2 levels off in some channel (the 2-rank run composites two halves with IceT).
+"""The plugin's representations from pvbatch / pvpython (and mpiexec -np N pvbatch): select one
+("preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray
+Cast)") on image data, check it is offered on unstructured, structured and multiblock data, drive it
+with the colour map, opacity editor and the mapper's own properties, render, write the image and
+compare it with the baseline: vtkImageDifference's thresholded error at most <threshold>, and at
+most <fraction> of the pixels more than 2 levels off in some channel (the 2-rank run composites two
+halves with IceT).
 
-    pvbatch test_plugin_representation.py <plugin> <output.png> [<baseline.png> <threshold> <fraction>]
+    pvbatch test_plugin_representation.py <plugin> <preintegrated|hexahedral> <output.png> \
+        [<baseline.png> <threshold> <fraction>]
 
 With UV_SERVER=host:port in the environment (pvpython only) it first connects to that pvserver and
 loads the plugin on both sides: the server renders, the client receives the image.
@@ -15,10 +18,18 @@ import sys
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
 
-plugin, output = sys.argv[1], sys.argv[2]
-baseline = sys.argv[3] if len(sys.argv) > 3 else None
-threshold = float(sys.argv[4]) if len(sys.argv) > 4 else 10.0
-fraction = float(sys.argv[5]) if len(sys.argv) > 5 else 0.0
+plugin, mapper, output = sys.argv[1], sys.argv[2], sys.argv[3]
+baseline = sys.argv[4] if len(sys.argv) > 4 else None
+threshold = float(sys.argv[5]) if len(sys.argv) > 5 else 10.0
+fraction = float(sys.argv[6]) if len(sys.argv) > 6 else 0.0
+# Each representation: its menu entry and the panel's settings the test drives.
+ENTRY, SETTINGS = {
+    "preintegrated": ("Volume (Pre-integrated Tetrahedra)",
+                      {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8, "IntegrationMode": "Partial pre-integration"}),
+    "hexahedral": ("Volume (Hexahedral Ray Cast)",
+                   {"HexahedralIsovalues": [200.0], "HexahedralIsosurfaceOpacity": 0.8,
+                    "HexahedralIntegrationMode": "Accurate", "OpacityThreshold": 0.99}),
+}[mapper]
 server = os.environ.get("UV_SERVER")
 if server:
     host, port = server.split(":")
@@ -28,7 +39,6 @@ if server:
 LoadPlugin(plugin, remote=False, ns=globals())
 ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 print(f"ranks: {ranks}")
-ENTRY = "Volume (Pre-integrated Tetrahedra)"
 
 view = CreateView("RenderView")  # noqa: F405
 view.ViewSize = [300, 300]
@@ -51,11 +61,10 @@ lut.RescaleTransferFunction(37.0, 277.0)
 opacity = GetOpacityTransferFunction("RTData")  # noqa: F405
 opacity.Points = [37.0, 0.0, 0.5, 0.0, 150.0, 0.05, 0.5, 0.0, 277.0, 0.6, 0.5, 0.0]
 display.ScalarOpacityUnitDistance = 3.0
-display.Isovalues = [200.0]
-display.IsosurfaceOpacity = 0.8
-display.IntegrationMode = "Partial pre-integration"
+for name, value in SETTINGS.items():
+    setattr(display, name, value)
 
-# The same entry on an unstructured grid (generated hexahedra, split by the representation).
+# The same entry on an unstructured grid (generated hexahedra).
 mesh = AnalyticMesh(Resolution=[6, 6, 6], Distortion="Twist")  # noqa: F405
 mesh_display = Show(mesh, view)  # noqa: F405
 assert ENTRY in mesh_display.Representation.Available, mesh_display.Representation.Available
