@@ -131,6 +131,25 @@ inline Cubic TrilinearAlongSegment(const double f[8], const glm::dvec3& xi0, con
   return cubic;
 }
 
+/// Where a curved cell's field is sampled inside a segment (with its ends): the Chebyshev-Lobatto
+/// points of a cubic on [0, 1].
+constexpr double CurvedSampleNear = 0.25;
+constexpr double CurvedSampleFar = 0.75;
+
+/// The cubic through the values at u = 0, 1/4, 3/4, 1. With the isoparametric field's exact values
+/// there (inverse map) it is the segment's field on curved cells: exact wherever the field along the
+/// ray is a cubic (every parallelepiped), a cubic interpolant of it otherwise, rather than the field
+/// along a straight path in trilinear coordinates, which a curved cell's ray does not follow.
+inline Cubic CubicThroughSamples(double f0, double fNear, double fFar, double f1)
+{
+  Cubic cubic;
+  cubic.c[0] = f0;
+  cubic.c[1] = (-19.0 * f0 + 24.0 * fNear - 8.0 * fFar + 3.0 * f1) / 3.0;
+  cubic.c[2] = (32.0 * f0 - 56.0 * fNear + 40.0 * fFar - 16.0 * f1) / 3.0;
+  cubic.c[3] = 16.0 * (-f0 + 2.0 * fNear - 2.0 * fFar + f1) / 3.0;
+  return cubic;
+}
+
 /// Roots of f' strictly inside (0, 1), ascending: where the cubic turns.
 inline std::vector<double> CubicExtrema(const Cubic& f)
 {

@@ -68,10 +68,11 @@ public:
   ///@}
 
   ///@{
-  /// Curved cells: map each segment's ends into the cell by the isoparametric inverse (Newton)
-  /// rather than the affine frame (default on). The field along the ray is then exact at every
-  /// face crossing and continuous from cell to cell; between them it is the cubic through those
-  /// coordinates. Identical on parallelepipeds; off is the frame alone (cheaper).
+  /// Curved cells: map each segment's ends and two inner points (a quarter from each end) into
+  /// the cell by the isoparametric inverse (Newton) rather than the affine frame (default on). The
+  /// field along the ray is then exact at every face crossing, so continuous from cell to cell,
+  /// and between them the cubic through the four exact values. Parallelepipeds (no bilinear terms)
+  /// skip this: their frame is exact. Off is the frame alone on every cell (cheaper).
   vtkSetMacro(ExactSegmentEnds, bool);
   vtkGetMacro(ExactSegmentEnds, bool);
   vtkBooleanMacro(ExactSegmentEnds, bool);

@@ -143,6 +143,14 @@ vec4 TrilinearAlongSegment(float f[8], vec3 xi0, vec3 xi1)
     a111 * d.x * d.y * d.z);
 }
 
+/// The cubic through the values at u = 0, 1/4, 3/4, 1 (uv::CubicThroughSamples).
+vec4 CubicThroughSamples(float f0, float fNear, float fFar, float f1)
+{
+  return vec4(f0, (-19.0 * f0 + 24.0 * fNear - 8.0 * fFar + 3.0 * f1) / 3.0,
+    (32.0 * f0 - 56.0 * fNear + 40.0 * fFar - 16.0 * f1) / 3.0,
+    16.0 * (-f0 + 2.0 * fNear - 2.0 * fFar + f1) / 3.0);
+}
+
 float RootInBracket(vec4 c, float value, float a, float b)
 {
   bool rising = CubicValue(c, b) > CubicValue(c, a);
@@ -568,19 +576,37 @@ void main()
         vec3 entryPoint = origin + t * direction, exitPoint = origin + segmentEnd * direction;
         vec3 xi0 = toLocal * (entryPoint - frameOrigin);
         vec3 xi1 = toLocal * (exitPoint - frameOrigin);
-        if (exactEnds == 1)
+        // A parallelepiped's map is its frame (no bilinear terms): the frame's cubic is exact.
+        vec3 twistRS = points[0] - points[1] + points[2] - points[3];
+        vec3 twistRT = points[0] - points[1] - points[4] + points[5];
+        vec3 twistST = points[0] - points[3] - points[4] + points[7];
+        vec3 twistRST = points[1] - points[0] + points[3] - points[2] + points[4] - points[5] + points[6] - points[7];
+        float twist = max(max(length(twistRS), length(twistRT)), max(length(twistST), length(twistRST)));
+        bool curved = twist > 1e-5 * (length(r) + length(s) + length(w));
+        vec4 field;
+        if (exactEnds == 1 && curved)
         {
-          // The ends' coordinates through the isoparametric map (the frame's are the start): the
-          // field then matches the cell's exactly where the ray crosses faces, so it is continuous
-          // from cell to cell also on curved meshes.
+          // Through the isoparametric map (the frame's coordinates are the start): the ends, so the
+          // field matches the cell's where the ray crosses faces and is continuous from cell to cell
+          // on curved meshes, and two inner points; the field is the cubic through those four exact
+          // values (on a parallelepiped the same cubic as the frame's).
+          vec3 xiNear = InverseTrilinear(mix(entryPoint, exitPoint, 0.25), mix(xi0, xi1, 0.25));
+          vec3 xiFar = InverseTrilinear(mix(entryPoint, exitPoint, 0.75), mix(xi0, xi1, 0.75));
           xi0 = InverseTrilinear(entryPoint, xi0);
           xi1 = InverseTrilinear(exitPoint, xi1);
+          field = CubicThroughSamples(TrilinearAlongSegment(scalars, xi0, xi0).x,
+            TrilinearAlongSegment(scalars, xiNear, xiNear).x, TrilinearAlongSegment(scalars, xiFar, xiFar).x,
+            TrilinearAlongSegment(scalars, xi1, xi1).x);
+        }
+        else
+        {
+          field = TrilinearAlongSegment(scalars, xi0, xi1);
         }
         segmentXi0 = xi0;
         segmentXi1 = xi1;
         segmentStartPoint = entryPoint;
         segmentEndPoint = exitPoint;
-        IntegrateCubicSegment(TrilinearAlongSegment(scalars, xi0, xi1), segmentEnd - t);
+        IntegrateCubicSegment(field, segmentEnd - t);
       }
       if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
       {

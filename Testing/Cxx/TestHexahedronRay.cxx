@@ -61,8 +61,15 @@ TEST(HexahedronRay, CubicIsExactOnParallelepipeds)
     auto inside = [&] { return frame.Origin + frame.Axes * glm::dvec3(u(random), u(random), u(random)); };
     const glm::dvec3 a = inside(), b = inside();
     const uv::Cubic cubic = uv::TrilinearAlongSegment(f, uv::FrameParametric(frame, a), uv::FrameParametric(frame, b));
+    // The curved cells' route, the cubic through four exact samples, is the same cubic here.
+    const uv::Cubic sampled = uv::CubicThroughSamples(TrueScalar(p, f, a),
+      TrueScalar(p, f, a + uv::CurvedSampleNear * (b - a)), TrueScalar(p, f, a + uv::CurvedSampleFar * (b - a)),
+      TrueScalar(p, f, b));
     for (double t : { 0.0, 0.1, 0.37, 0.5, 0.81, 1.0 })
+    {
       worst = std::max(worst, std::abs(cubic(t) - TrueScalar(p, f, a + t * (b - a))));
+      worst = std::max(worst, std::abs(sampled(t) - TrueScalar(p, f, a + t * (b - a))));
+    }
   }
   EXPECT_LT(worst, 1e-12);
 }
@@ -207,15 +214,23 @@ TEST(HexahedronRay, TwistedCellFrameErrorIsMeasured)
   const uv::HexahedronFrame frame = uv::MakeHexahedronFrame(p.data());
   const glm::dvec3 a(-0.3, -0.35, 0.02), b(0.3, 0.25, 0.97);
   const uv::Cubic cubic = uv::TrilinearAlongSegment(f, uv::FrameParametric(frame, a), uv::FrameParametric(frame, b));
-  double worst = 0.0;
+  // The mapper's curved-cell route: the cubic through the exact field at the ends and at u = 1/4, 3/4.
+  const uv::Cubic sampled = uv::CubicThroughSamples(TrueScalar(p, f, a),
+    TrueScalar(p, f, a + uv::CurvedSampleNear * (b - a)), TrueScalar(p, f, a + uv::CurvedSampleFar * (b - a)),
+    TrueScalar(p, f, b));
+  double worst = 0.0, worstSampled = 0.0;
   for (int i = 0; i <= 20; ++i)
   {
     const double t = i / 20.0;
-    worst = std::max(worst, std::abs(cubic(t) - TrueScalar(p, f, a + t * (b - a))));
+    const double exact = TrueScalar(p, f, a + t * (b - a));
+    worst = std::max(worst, std::abs(cubic(t) - exact));
+    worstSampled = std::max(worstSampled, std::abs(sampled(t) - exact));
   }
-  std::printf("10-degree twisted cell: frame scalar off by at most %.3g\n", worst);
+  std::printf("10-degree twisted cell: frame scalar off by at most %.3g, four exact samples' cubic by %.3g\n",
+    worst, worstSampled);
   EXPECT_GT(worst, 1e-6); // not exact...
   EXPECT_LT(worst, 0.05); // ...but close for a mild twist
+  EXPECT_LT(worstSampled, 0.1 * worst); // and the sampled cubic much closer
 }
 
 TEST(HexahedronRay, TangledCellsAreTold)
