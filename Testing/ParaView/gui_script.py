@@ -1,5 +1,5 @@
 """Run inside the ParaView GUI (paraview --script=...) by test_gui.sh: loads the plugin, shows a
-generated mesh with "Volume (Pre-integrated Tetrahedra)" and writes what the GUI lists to
+generated hexahedral mesh with "Volume (Hexahedral Ray Cast)" and writes what the GUI lists to
 $UV_GUI_OUTPUT/gui_entries.txt once the view has rendered."""
 import os
 
@@ -11,15 +11,15 @@ LoadPlugin(os.environ["UV_PLUGIN"], remote=False, ns=globals())
 mesh = AnalyticMesh(Resolution=[10, 10, 10], Distortion="Twist")  # noqa: F405
 SetActiveSource(mesh)  # noqa: F405
 display = Show(mesh)  # noqa: F405
-display.Representation = "Volume (Pre-integrated Tetrahedra)"
+display.Representation = "Volume (Hexahedral Ray Cast)"
 ColorBy(display, ("POINTS", "MarschnerLobb"))  # noqa: F405
 lut = GetColorTransferFunction("MarschnerLobb")  # noqa: F405
 lut.ApplyPreset("Cool to Warm", True)
 opacity = GetOpacityTransferFunction("MarschnerLobb")  # noqa: F405
 opacity.Points = [0.0, 0.0, 0.5, 0.0, 0.3, 0.05, 0.5, 0.0, 1.0, 0.6, 0.5, 0.0]
 display.ScalarOpacityUnitDistance = 0.4
-display.Isovalues = [0.7]
-display.IsosurfaceOpacity = 0.8
+display.HexahedralIsovalues = [0.7]
+display.HexahedralIsosurfaceOpacity = 0.8
 display.SetScalarBarVisibility(GetActiveView(), True)  # noqa: F405
 view = GetActiveView()  # noqa: F405
 view.OrientationAxesVisibility = 1
