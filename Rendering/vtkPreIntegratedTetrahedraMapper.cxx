@@ -539,7 +539,15 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
         vtkNew<vtkUnstructuredGrid> scalarOnly;
         scalarOnly->CopyStructure(impl.Tetrahedra);
         vtkSmartPointer<vtkDataArray> named = vtk::TakeSmartPointer(impl.Scalars->NewInstance());
-        named->ShallowCopy(impl.Scalars);
+        if (impl.Scalars->GetNumberOfComponents() == 1)
+        {
+          named->ShallowCopy(impl.Scalars);
+        }
+        else // the rendered scalar is component 0 (e.g. ParaView's "_and_opacity" arrays)
+        {
+          named->SetNumberOfTuples(impl.Scalars->GetNumberOfTuples());
+          named->CopyComponent(0, impl.Scalars, 0);
+        }
         named->SetName("uvScalar");
         scalarOnly->GetPointData()->AddArray(named);
         vtkNew<vtkVertexGradientFilter> filter;

@@ -68,6 +68,14 @@ void vtkUnstructuredVolumeRepresentation::SetIsosurfaceOpacity(double opacity)
 void vtkUnstructuredVolumeRepresentation::UpdateMapperParameters()
 {
   this->Superclass::UpdateMapperParameters();
+  // The mappers integrate one scalar along each ray (colour and opacity are functions of it); a
+  // second, independent opacity field has no place in that integral. Said once, not ignored silently.
+  if (this->UseSeparateOpacityArray && !this->SeparateOpacityWarned)
+  {
+    vtkWarningMacro(<< "Volume (" << this->MapperName << "): \"Use Separate Opacity Array\" is not supported "
+                    << "(the ray integral takes one scalar); colour and opacity both follow the coloring array.");
+  }
+  this->SeparateOpacityWarned = this->UseSeparateOpacityArray;
   // Isosurfaces take the colour map's colour at their value, like ParaView's contours coloured by
   // the same array.
   this->ClearMapperIsosurfaces();

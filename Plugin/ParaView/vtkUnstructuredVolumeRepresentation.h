@@ -3,10 +3,10 @@
  * @brief ParaView's unstructured-grid volume representation, pinned to one of this project's mappers.
  *
  * A vtkUnstructuredGridVolumeRepresentation (so: the same colour map and opacity editor, scalar
- * selection, "Use Separate Opacity Array", shading properties, multiblock handling and ordered
- * compositing in parallel) whose active mapper is fixed to the one a subclass pins in its
- * constructor. Isosurfaces are kept here (values, coloured by the colour map, one opacity) and
- * handed to the mapper before each render.
+ * selection, shading properties, multiblock handling and ordered compositing in parallel) whose
+ * active mapper is fixed to the one a subclass pins in its constructor. "Use Separate Opacity
+ * Array" draws a warning: the mappers integrate one scalar. Isosurfaces are kept here (values,
+ * coloured by the colour map, one opacity) and handed to the mapper before each render.
  *
  * Adding a mapper to the plugin: a subclass that pins it and forwards its settings, and its proxy
  * in Plugin/UnstructuredVolumeRepresentations.xml (the menu entries are generated from there).
@@ -60,6 +60,7 @@ protected:
   unsigned long ProgressObserver = 0;
   std::vector<double> Isovalues;
   double IsosurfaceOpacity = 1.0;
+  bool SeparateOpacityWarned = false;
 
 private:
   vtkUnstructuredVolumeRepresentation(const vtkUnstructuredVolumeRepresentation&) = delete;
