@@ -10,6 +10,9 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 namespace uv
@@ -17,10 +20,13 @@ namespace uv
 
 /// Nodes: the union of the colour and opacity nodes. Where VTK's functions are not linear between
 /// their nodes (a midpoint other than 0.5, a non-zero sharpness, or a colour space other than RGB),
-/// `subdivisions` extra nodes per interval make the piecewise-linear model follow them closely.
-/// Returns an empty optional-like result (no nodes) when the property has no opacity function.
+/// each interval is halved until the straight line between its ends is within `tolerance` of VTK's
+/// colour (every channel) and opacity at a quarter, half and three quarters of it, into at most
+/// `maximumSubdivisions` pieces: the piecewise-linear model follows the curves, with nodes only where
+/// they bend (every node is a split point of every ray integral, so their number is frame time).
+/// Returns no nodes when the property has no opacity function.
 inline std::vector<TransferFunction::Node> TransferFunctionNodes(
-  vtkVolumeProperty* property, int subdivisions = 32)
+  vtkVolumeProperty* property, int maximumSubdivisions = 32, double tolerance = 1e-3)
 {
   std::vector<TransferFunction::Node> nodes;
   vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
@@ -54,14 +60,56 @@ inline std::vector<TransferFunction::Node> TransferFunctionNodes(
   }
   std::sort(scalars.begin(), scalars.end());
   scalars.erase(std::unique(scalars.begin(), scalars.end()), scalars.end());
-  if (curved && scalars.size() > 1)
+  if (curved && scalars.size() > 1 && maximumSubdivisions > 1)
   {
+    // VTK's colour and opacity at s, as one vector.
+    auto sample = [&](double s) {
+      std::array<double, 4> value{ 1.0, 1.0, 1.0, opacity->GetValue(s) };
+      if (color)
+      {
+        color->GetColor(s, value.data());
+      }
+      else if (grayFunction)
+      {
+        value[0] = value[1] = value[2] = grayFunction->GetValue(s);
+      }
+      return value;
+    };
+    auto straight = [&](double a, double b) {
+      const std::array<double, 4> va = sample(a), vb = sample(b);
+      for (double f : { 0.25, 0.5, 0.75 })
+      {
+        const std::array<double, 4> v = sample(a + f * (b - a));
+        for (int c = 0; c < 4; ++c)
+        {
+          if (std::abs(v[c] - ((1.0 - f) * va[c] + f * vb[c])) > tolerance)
+          {
+            return false;
+          }
+        }
+      }
+      return true;
+    };
     std::vector<double> refined;
     for (std::size_t i = 0; i + 1 < scalars.size(); ++i)
     {
-      for (int k = 0; k < subdivisions; ++k)
+      // Depth-first halving; `pieces` is how many of the interval's finest pieces one spans.
+      std::vector<std::pair<double, int>> pending{ { scalars[i], maximumSubdivisions } };
+      const double step = (scalars[i + 1] - scalars[i]) / maximumSubdivisions;
+      while (!pending.empty())
       {
-        refined.push_back(scalars[i] + (scalars[i + 1] - scalars[i]) * k / subdivisions);
+        const auto [start, pieces] = pending.back();
+        pending.pop_back();
+        const double end = start + pieces * step;
+        if (pieces == 1 || straight(start, end))
+        {
+          refined.push_back(start);
+        }
+        else
+        {
+          pending.push_back({ start + (pieces / 2) * step, pieces - pieces / 2 });
+          pending.push_back({ start, pieces / 2 });
+        }
       }
     }
     refined.push_back(scalars.back());

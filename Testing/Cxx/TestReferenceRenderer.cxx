@@ -1,4 +1,5 @@
 // vtkUnstructuredVolumeReferenceRenderer against closed forms and against itself.
+#include "uvTransferFunctionFromVolumeProperty.h"
 #include "uvTestMeshChecks.h"
 #include "vtkAnalyticMeshSource.h"
 #include "vtkHexahedraToTetrahedra.h"
@@ -17,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 namespace
@@ -264,4 +267,48 @@ TEST(ReferenceRenderer, BadInput)
   Render(uvtest::QuadraticTetraMesh(), property, camera, 8, 1e-7, &events);
   EXPECT_EQ(events->Errors, 1);
   EXPECT_NE(events->LastMessage.find("vtkQuadraticTetra"), std::string::npos);
+}
+
+TEST(ReferenceRenderer, CurvedTransferFunctionsAreFollowedWithNodesWhereTheyBend)
+{
+  // ParaView's default colour map interpolates in the Diverging space (not linear in RGB between
+  // its nodes). The model halves intervals only where the curve bends: as close to VTK's colours as
+  // the full 32 pieces per interval, with far fewer nodes. In RGB no node is added.
+  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkColorTransferFunction> colors;
+  colors->AddRGBPoint(0.0, 0.23, 0.30, 0.75);
+  colors->AddRGBPoint(0.5, 0.87, 0.87, 0.87);
+  colors->AddRGBPoint(1.0, 0.71, 0.02, 0.15);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(0.3, 0.1);
+  opacity->AddPoint(1.0, 0.4);
+  property->SetColor(colors);
+  property->SetScalarOpacity(opacity);
+  EXPECT_EQ(uv::TransferFunctionNodes(property).size(), 4u); // RGB: the nodes' union alone
+
+  colors->SetColorSpaceToDiverging();
+  auto colourError = [&](const std::vector<uv::TransferFunction::Node>& nodes) {
+    const uv::TransferFunction model(nodes);
+    double worst = 0.0;
+    for (int i = 0; i <= 2000; ++i)
+    {
+      const double s = i / 2000.0;
+      double rgb[3];
+      colors->GetColor(s, rgb);
+      const glm::dvec3 followed = model.Color(s);
+      worst = std::max({ worst, std::abs(followed.x - rgb[0]), std::abs(followed.y - rgb[1]), std::abs(followed.z - rgb[2]) });
+    }
+    return worst;
+  };
+  const auto uniform = uv::TransferFunctionNodes(property, 32, 0.0); // every interval in 32
+  const auto adaptive = uv::TransferFunctionNodes(property);         // tolerance 1e-3
+  const auto finer = uv::TransferFunctionNodes(property, 32, 1e-4);
+  std::printf("Diverging colour map: uniform %zu nodes, error %.2e; adaptive %zu nodes, error %.2e; "
+              "tolerance 1e-4: %zu nodes\n", uniform.size(), colourError(uniform), adaptive.size(),
+    colourError(adaptive), finer.size());
+  EXPECT_EQ(uniform.size(), 3u * 32u + 1u);
+  EXPECT_LT(adaptive.size(), uniform.size() / 2);
+  EXPECT_LT(colourError(adaptive), colourError(uniform) + 2e-3);
+  EXPECT_GT(finer.size(), adaptive.size());
 }
