@@ -26,7 +26,7 @@ namespace uv
 /// they bend (every node is a split point of every ray integral, so their number is frame time).
 /// Returns no nodes when the property has no opacity function.
 inline std::vector<TransferFunction::Node> TransferFunctionNodes(
-  vtkVolumeProperty* property, int maximumSubdivisions = 32, double tolerance = 1e-3)
+  vtkVolumeProperty* property, int maximumSubdivisions = 32, double tolerance = 2e-3)
 {
   std::vector<TransferFunction::Node> nodes;
   vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
