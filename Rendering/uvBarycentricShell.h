@@ -110,35 +110,30 @@ bool InsideBarycentric(const glm::vec<4, T>& b, T tolerance = T(0))
   return std::min({ b.x, b.y, b.z, b.w }) >= -tolerance;
 }
 
-/// The eye distance where the ray (eye coordinates `eye`, unit-distance direction `perUnit` = b / l)
-/// crosses `isovalue` of the linear field with vertex values `scalars`; NaN when the field is
-/// constant along the ray. The crossing may lie outside the tetrahedron: test it with
-/// InsideBarycentric(ShellSample(...)).
+/// The eye distance where the ray (unit-distance direction `perUnit` = b / l) crosses `isovalue` of
+/// the linear field with vertex values `scalars`; NaN when the field is constant along the ray. The
+/// crossing may lie outside the tetrahedron: test it with InsideBarycentric(ShellSample(...)).
+/// Computed from any point of the ray with known coordinates `at` and eye distance `length`:
+/// length + (isovalue - f(at)) / slope; from the fragment's face coordinates (see
+/// ShellSampleFromFace) it avoids the eye's large coordinates.
+template <typename T>
+T IsovalueDistanceFromFace(const glm::vec<4, T>& at, const glm::vec<4, T>& perUnit, T length,
+  const glm::vec<4, T>& scalars, T isovalue)
+{
+  const T slope = glm::dot(scalars, perUnit);
+  if (slope == T(0))
+  {
+    return std::numeric_limits<T>::quiet_NaN();
+  }
+  return length + (isovalue - glm::dot(scalars, at)) / slope;
+}
+
+/// The same from the eye's own coordinates.
 template <typename T>
 T IsovalueDistance(const glm::vec<4, T>& eye, const glm::vec<4, T>& perUnit,
   const glm::vec<4, T>& scalars, T isovalue)
 {
-  const T atEye = glm::dot(scalars, eye);
-  const T slope = glm::dot(scalars, perUnit);
-  if (slope == T(0))
-  {
-    return std::numeric_limits<T>::quiet_NaN();
-  }
-  return (isovalue - atEye) / slope;
-}
-
-/// IsovalueDistance from the fragment's face coordinates (see ShellSampleFromFace): the crossing's
-/// distance is l + (isovalue - f_face) / slope, without the eye's large coordinates.
-template <typename T>
-T IsovalueDistanceFromFace(const glm::vec<4, T>& face, const glm::vec<4, T>& perUnit, T length,
-  const glm::vec<4, T>& scalars, T isovalue)
-{
-  const T slope = glm::dot(scalars, perUnit);
-  if (slope == T(0))
-  {
-    return std::numeric_limits<T>::quiet_NaN();
-  }
-  return length + (isovalue - glm::dot(scalars, face)) / slope;
+  return IsovalueDistanceFromFace(eye, perUnit, T(0), scalars, isovalue); // the eye: distance 0
 }
 
 } // namespace uv

@@ -61,19 +61,18 @@ void Composite(vec3 premultiplied, float depth)
 // ---- The current segment (set by the traversal before it integrates a cell)
 vec3 points[8];
 float scalars[8];
+// The loaded cell's isoparametric map, x = p0 + b r + c s + d t + e rs + f rt + g st + h rst (set
+// by LoadCell: the Jacobian, the inverse map and the curved-cell test all read it).
+vec3 mapB, mapC, mapD, mapE, mapF, mapG, mapH;
 vec3 segmentXi0, segmentXi1;  // the segment's ends in the cell's trilinear coordinates
 vec3 segmentStartPoint, segmentEndPoint; // and in model space
 
 /// d(position)/d(r, s, t) of the loaded cell at xi.
 mat3 Jacobian(vec3 xi)
 {
-  vec3 b = points[1] - points[0], c = points[3] - points[0], d = points[4] - points[0];
-  vec3 e = points[0] - points[1] + points[2] - points[3];
-  vec3 f = points[0] - points[1] - points[4] + points[5];
-  vec3 g = points[0] - points[3] - points[4] + points[7];
-  vec3 h = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
   float r = xi.x, s = xi.y, t = xi.z;
-  return mat3(b + e * s + f * t + h * s * t, c + e * r + g * t + h * r * t, d + f * r + g * s + h * r * s);
+  return mat3(mapB + mapE * s + mapF * t + mapH * s * t, mapC + mapE * r + mapG * t + mapH * r * t,
+    mapD + mapF * r + mapG * s + mapH * r * s);
 }
 
 /// The gradient of the loaded cell's trilinear field at xi, in model space.
@@ -377,20 +376,23 @@ void LoadCell(int cell)
     points[k] = data.xyz;
     scalars[k] = data.w;
   }
+  mapB = points[1] - points[0];
+  mapC = points[3] - points[0];
+  mapD = points[4] - points[0];
+  mapE = points[0] - points[1] + points[2] - points[3];
+  mapF = points[0] - points[1] - points[4] + points[5];
+  mapG = points[0] - points[3] - points[4] + points[7];
+  mapH = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
 }
 
 /// Trilinear coordinates of x in the loaded cell: Newton on the isoparametric map from `xi`.
 vec3 InverseTrilinear(vec3 x, vec3 xi)
 {
-  vec3 b = points[1] - points[0], c = points[3] - points[0], d = points[4] - points[0];
-  vec3 e = points[0] - points[1] + points[2] - points[3];
-  vec3 f = points[0] - points[1] - points[4] + points[5];
-  vec3 g = points[0] - points[3] - points[4] + points[7];
-  vec3 h = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
   for (int iteration = 0; iteration < 8; ++iteration)
   {
     float r = xi.x, s = xi.y, t = xi.z;
-    vec3 mapped = points[0] + b * r + c * s + d * t + e * r * s + f * r * t + g * s * t + h * r * s * t;
+    vec3 mapped = points[0] + mapB * r + mapC * s + mapD * t + mapE * r * s + mapF * r * t + mapG * s * t +
+      mapH * r * s * t;
     mat3 jacobian = Jacobian(xi);
     if (abs(determinant(jacobian)) < 1e-30)
       break;
@@ -577,11 +579,7 @@ void main()
         vec3 xi0 = toLocal * (entryPoint - frameOrigin);
         vec3 xi1 = toLocal * (exitPoint - frameOrigin);
         // A parallelepiped's map is its frame (no bilinear terms): the frame's cubic is exact.
-        vec3 twistRS = points[0] - points[1] + points[2] - points[3];
-        vec3 twistRT = points[0] - points[1] - points[4] + points[5];
-        vec3 twistST = points[0] - points[3] - points[4] + points[7];
-        vec3 twistRST = points[1] - points[0] + points[3] - points[2] + points[4] - points[5] + points[6] - points[7];
-        float twist = max(max(length(twistRS), length(twistRT)), max(length(twistST), length(twistRST)));
+        float twist = max(max(length(mapE), length(mapF)), max(length(mapG), length(mapH)));
         bool curved = twist > 1e-5 * (length(r) + length(s) + length(w));
         vec4 field;
         if (exactEnds == 1 && curved)

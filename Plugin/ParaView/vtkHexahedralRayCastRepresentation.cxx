@@ -8,6 +8,7 @@
 #include "vtkMath.h"
 #include "vtkMergeBlocks.h"
 #include "vtkObjectFactory.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
 
@@ -27,7 +28,7 @@ int vtkHexahedralRayCastRepresentation::RequestData(
   // runs on an empty grid, and its output then takes the hexahedra (the superclass delivers that
   // output to the view: redistribution and ordered compositing work on the hexahedra).
   vtkMath::UninitializeBounds(this->DataBounds);
-  this->Hexahedra = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkUnstructuredGrid> hexahedra; // this rank's input as one grid, cells unsplit
   if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
     vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
@@ -46,15 +47,15 @@ int vtkHexahedralRayCastRepresentation::RequestData(
     convert->Update();
     if (auto* grid = vtkUnstructuredGrid::SafeDownCast(convert->GetOutputDataObject(0)))
     {
-      this->Hexahedra->ShallowCopy(grid);
-      this->Hexahedra->RemoveGhostCells();
-      if (this->Hexahedra->GetNumberOfPoints() > 0)
+      hexahedra->ShallowCopy(grid);
+      hexahedra->RemoveGhostCells();
+      if (hexahedra->GetNumberOfPoints() > 0)
       {
-        this->Hexahedra->GetBounds(this->DataBounds);
+        hexahedra->GetBounds(this->DataBounds);
       }
       if (this->UseSeparateOpacityArray)
       {
-        this->AppendOpacityComponent(this->Hexahedra);
+        this->AppendOpacityComponent(hexahedra);
       }
     }
   }
@@ -62,7 +63,7 @@ int vtkHexahedralRayCastRepresentation::RequestData(
   vtkNew<vtkUnstructuredGrid> placeholder;
   this->Preprocessor->SetInputData(0, placeholder);
   this->Preprocessor->Update();
-  vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0))->ShallowCopy(this->Hexahedra);
+  vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0))->ShallowCopy(hexahedra);
   // The superclass's superclass: vtkPVDataRepresentation's bookkeeping.
   return this->vtkVolumeRepresentation::RequestData(request, inputVector, outputVector);
 }

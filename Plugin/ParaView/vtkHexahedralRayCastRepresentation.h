@@ -13,12 +13,10 @@
 #define vtkHexahedralRayCastRepresentation_h
 
 #include "vtkNew.h"          // for vtkNew
-#include "vtkSmartPointer.h" // for vtkSmartPointer
 #include "vtkUnstructuredVolumeParaViewModule.h" // for export macro
 #include "vtkUnstructuredVolumeRepresentation.h"
 
 class vtkHexahedralRayCastMapper;
-class vtkUnstructuredGrid;
 
 class VTKUNSTRUCTUREDVOLUMEPARAVIEW_EXPORT vtkHexahedralRayCastRepresentation
   : public vtkUnstructuredVolumeRepresentation
@@ -45,7 +43,6 @@ protected:
   void AddMapperIsosurface(double value, const double rgb[3], double opacity) override;
 
   vtkNew<vtkHexahedralRayCastMapper> HexahedralMapper;
-  vtkSmartPointer<vtkUnstructuredGrid> Hexahedra; // this rank's input as one grid, cells unsplit
 
 private:
   vtkHexahedralRayCastRepresentation(const vtkHexahedralRayCastRepresentation&) = delete;
