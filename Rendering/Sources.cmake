@@ -22,5 +22,6 @@ set(uv_rendering_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/uvPreIntegration.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvProjectedTetrahedron.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvRayCellGeometry.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvTetrahedralMesh.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvTransferFunctionFromVolumeProperty.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvVisibilitySort.h")

@@ -5,10 +5,12 @@
 #include "uvPreIntegratedTetrahedraPullVS.h"
 #include "uvPreIntegratedTetrahedraVS.h"
 #include "uvProjectedTetrahedronLib.h"
+#include "uvSegmentIntegrationLib.h"
 #include "uvTransferFunctionLib.h"
 #include "uvMapperOpenGL.h"
 #include "uvPreIntegration.h"
 #include "uvTransferFunctionFromVolumeProperty.h"
+#include "uvTetrahedralMesh.h"
 #include "uvVisibilitySort.h"
 
 #include "vtkCamera.h"
@@ -51,44 +53,11 @@
 
 vtkStandardNewMacro(vtkPreIntegratedTetrahedraMapper);
 
-namespace
-{
-/// Closed intervals of normalised scalar where the extinction is zero: the set that decides which
-/// tetrahedra are invisible.
-std::vector<std::pair<double, double>> ZeroExtinctionIntervals(const std::vector<uv::TransferFunction::Node>& nodes)
-{
-  std::vector<std::pair<double, double>> intervals;
-  const double infinity = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-  {
-    if (nodes[i].Extinction > 0.0)
-      continue;
-    const double begin = i == 0 ? -infinity : nodes[i].Scalar;
-    std::size_t j = i;
-    while (j + 1 < nodes.size() && nodes[j + 1].Extinction <= 0.0)
-      ++j;
-    const double end = j + 1 == nodes.size() ? infinity : nodes[j].Scalar;
-    intervals.emplace_back(begin, end);
-    i = j;
-  }
-  return intervals;
-}
-
-} // namespace
-
 class vtkPreIntegratedTetrahedraMapper::Internals
 {
 public:
   // The mesh as the GPU takes it, rebuilt when the input or its scalar changes.
-  std::string MeshKey;
-  vtkSmartPointer<vtkUnstructuredGrid> Tetrahedra; // the input, or its split
-  vtkSmartPointer<vtkDataArray> Scalars;
-  std::vector<std::uint32_t> TetrahedronPoints; // 4 point ids per drawable tetrahedron
-  std::vector<float> PointData;                 // recentred position and normalised scalar
-  std::vector<float> ScalarLow, ScalarHigh;     // per tetrahedron, normalised
-  std::vector<float> Centroids;                 // per tetrahedron, recentred
-  glm::dvec3 Center{ 0.0 };
-  double ScalarOffset = 0.0, ScalarScale = 1.0;
+  uv::TetrahedralMesh Mesh;
 
   std::string GradientKey;
   std::vector<float> Gradients; // 4 floats per point
@@ -206,8 +175,8 @@ int vtkPreIntegratedTetrahedraMapper::GetNumberOfGradientComputations()
 vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
 {
   const Internals& impl = *this->Impl;
-  std::size_t bytes = sizeof(std::uint32_t) * (impl.TetrahedronPoints.size() + impl.Order.size()) +
-    sizeof(float) * impl.PointData.size() + sizeof(std::uint32_t) * 12 * impl.FanIndexCount;
+  std::size_t bytes = sizeof(std::uint32_t) * (impl.Mesh.TetrahedronPoints.size() + impl.Order.size()) +
+    sizeof(float) * impl.Mesh.PointData.size() + sizeof(std::uint32_t) * 12 * impl.FanIndexCount;
   if (impl.GradientsOnGpu)
     bytes += sizeof(float) * impl.Gradients.size();
   return static_cast<vtkIdType>(bytes);
@@ -277,156 +246,39 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     vtkErrorMacro("cell scalars are not supported: convert them to point data (vtkCellDataToPointData)");
     return;
   }
-  const std::string meshKey = std::to_string(reinterpret_cast<std::uintptr_t>(input)) + ":" +
-    std::to_string(input->GetMTime()) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(inputScalars)) +
-    ":" + std::to_string(inputScalars->GetMTime());
-  if (meshKey != impl.MeshKey)
-  {
-    impl.MeshKey.clear();
-    impl.MeshOnGpu = impl.GradientsOnGpu = impl.OrderOnGpu = false;
-    impl.OrderValid = impl.VisibleListValid = false;
-    impl.GradientKey.clear();
-    this->UpdateProgress(0.0); // preparation (split, arrays) can take seconds on large meshes
-    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(input);
-    if (!grid)
-    {
-      grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-      grid->DeepCopy(input);
-    }
-    vtkIdType others = 0;
-    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-    {
-      others += grid->GetCellType(c) != VTK_TETRA ? 1 : 0;
-    }
-    impl.Scalars = inputScalars;
-    if (others > 0)
-    {
-      if (!impl.WarnedSplit)
-      {
-        vtkWarningMacro(<< others << " of " << grid->GetNumberOfCells()
-                        << " cells are not tetrahedra: splitting them with vtkHexahedraToTetrahedra "
-                           "(once per data change; split upstream to skip this)");
-        impl.WarnedSplit = true;
-      }
-      vtkNew<vtkHexahedraToTetrahedra> split;
-      split->SetInputData(grid);
-      split->Update();
-      vtkUnstructuredGrid* tets = vtkUnstructuredGrid::SafeDownCast(split->GetOutputDataObject(0));
-      if (!tets || tets->GetNumberOfCells() == 0)
-      {
-        vtkErrorMacro("the input's cells cannot be split into tetrahedra (quadratic or other non-linear cells?)");
-        return;
-      }
-      grid = tets;
-      this->UpdateProgress(0.5);
+  uv::TetrahedralMesh::Change change;
+  const std::string error = impl.Mesh.Update(
+    input, inputScalars,
+    [this](vtkDataSet* split) {
       int flag = 0;
-      impl.Scalars = vtkAbstractMapper::GetScalars(
-        grid, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, flag);
-      if (!impl.Scalars)
-      {
-        // The scalar had no name to find it by after the split: it is the output's scalars.
-        impl.Scalars = grid->GetPointData()->GetScalars();
-      }
-      if (!impl.Scalars)
-      {
-        vtkErrorMacro("lost the scalar array while splitting the cells");
-        return;
-      }
-    }
-    impl.Tetrahedra = grid;
-
-    // Normalised scalar (first component) and recentred positions, in double then float.
-    const vtkIdType pointCount = grid->GetNumberOfPoints();
-    double low = std::numeric_limits<double>::infinity(), high = -low;
-    for (vtkIdType p = 0; p < pointCount; ++p)
+      return vtkAbstractMapper::GetScalars(split, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, flag);
+    },
+    [this](double progress) { this->UpdateProgress(progress); }, change);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return;
+  }
+  if (change != uv::TetrahedralMesh::Change::Nothing)
+  {
+    impl.MeshOnGpu = impl.GradientsOnGpu = impl.OrderOnGpu = false;
+    impl.OrderValid = false;
+    impl.VisibleListValid = impl.VisibleListValid && change == uv::TetrahedralMesh::Change::Points;
+    impl.GradientKey.clear();
+    if (impl.Mesh.SplitCells > 0 && !impl.WarnedSplit)
     {
-      const double s = impl.Scalars->GetComponent(p, 0);
-      if (std::isfinite(s))
-      {
-        low = std::min(low, s);
-        high = std::max(high, s);
-      }
+      vtkWarningMacro(<< impl.Mesh.SplitCells << " of " << input->GetNumberOfCells()
+                      << " cells are not tetrahedra: splitting them with vtkHexahedraToTetrahedra "
+                         "(once per data change; split upstream to skip this)");
+      impl.WarnedSplit = true;
     }
-    if (!(low <= high))
+    if (impl.Mesh.NaNTetrahedra > 0 && !impl.WarnedNaN)
     {
-      low = high = 0.0; // every scalar is NaN: nothing will be drawn
-    }
-    impl.ScalarOffset = low;
-    impl.ScalarScale = high > low ? 1.0 / (high - low) : 1.0;
-    double bounds[6];
-    grid->GetBounds(bounds);
-    impl.Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
-    impl.PointData.assign(4 * pointCount, 0.0f);
-    vtkPoints* points = grid->GetPoints();
-    const glm::dvec3 center = impl.Center;
-    const double offset = impl.ScalarOffset, scale = impl.ScalarScale;
-    vtkDataArray* scalars = impl.Scalars;
-    vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
-      double x[3];
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        points->GetPoint(p, x);
-        impl.PointData[4 * p + 0] = static_cast<float>(x[0] - center.x);
-        impl.PointData[4 * p + 1] = static_cast<float>(x[1] - center.y);
-        impl.PointData[4 * p + 2] = static_cast<float>(x[2] - center.z);
-        impl.PointData[4 * p + 3] = static_cast<float>((scalars->GetComponent(p, 0) - offset) * scale);
-      }
-    });
-
-    // Tetrahedra: those with a NaN scalar are left out.
-    impl.TetrahedronPoints.clear();
-    impl.TetrahedronPoints.reserve(4 * grid->GetNumberOfCells());
-    vtkIdType withNaN = 0;
-    vtkIdType npts;
-    const vtkIdType* ids;
-    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-    {
-      if (grid->GetCellType(c) != VTK_TETRA)
-        continue;
-      grid->GetCellPoints(c, npts, ids);
-      bool finite = true;
-      for (int k = 0; k < 4; ++k)
-        finite = finite && std::isfinite(impl.PointData[4 * ids[k] + 3]);
-      if (!finite)
-      {
-        ++withNaN;
-        continue;
-      }
-      for (int k = 0; k < 4; ++k)
-        impl.TetrahedronPoints.push_back(static_cast<std::uint32_t>(ids[k]));
-    }
-    if (withNaN > 0 && !impl.WarnedNaN)
-    {
-      vtkWarningMacro(<< withNaN << " tetrahedra touch a NaN scalar and are not drawn");
+      vtkWarningMacro(<< impl.Mesh.NaNTetrahedra << " tetrahedra touch a NaN scalar and are not drawn");
       impl.WarnedNaN = true;
     }
-    const std::size_t tetCount = impl.TetrahedronPoints.size() / 4;
-    impl.ScalarLow.resize(tetCount);
-    impl.ScalarHigh.resize(tetCount);
-    impl.Centroids.resize(3 * tetCount);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(tetCount), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-        float centroid[3] = { 0, 0, 0 };
-        for (int k = 0; k < 4; ++k)
-        {
-          const float* p = &impl.PointData[4 * impl.TetrahedronPoints[4 * t + k]];
-          lo = std::min(lo, p[3]);
-          hi = std::max(hi, p[3]);
-          for (int d = 0; d < 3; ++d)
-            centroid[d] += 0.25f * p[d];
-        }
-        impl.ScalarLow[t] = lo;
-        impl.ScalarHigh[t] = hi;
-        for (int d = 0; d < 3; ++d)
-          impl.Centroids[3 * t + d] = centroid[d];
-      }
-    });
-    impl.MeshKey = meshKey;
-    this->UpdateProgress(1.0);
   }
-  const std::size_t tetCount = impl.TetrahedronPoints.size() / 4;
+  const std::size_t tetCount = impl.Mesh.Size();
   if (tetCount == 0)
   {
     return;
@@ -434,7 +286,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
 
   // ---- Transfer function and isosurfaces, normalised like the scalar.
   vtkVolumeProperty* property = volume->GetProperty();
-  if (property->GetMTime() != impl.TransferFunctionTime || impl.TransferFunctionMeshKey != impl.MeshKey)
+  if (property->GetMTime() != impl.TransferFunctionTime || impl.TransferFunctionMeshKey != impl.Mesh.Key())
   {
     impl.Nodes = uv::TransferFunctionNodes(property);
     if (impl.Nodes.empty())
@@ -444,13 +296,13 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     }
     for (auto& node : impl.Nodes)
     {
-      node.Scalar = (node.Scalar - impl.ScalarOffset) * impl.ScalarScale;
+      node.Scalar = (node.Scalar - impl.Mesh.ScalarOffset) * impl.Mesh.ScalarScale;
     }
     impl.TransferFunctionTime = property->GetMTime();
-    impl.TransferFunctionMeshKey = impl.MeshKey;
+    impl.TransferFunctionMeshKey = impl.Mesh.Key();
     impl.TransferFunctionOnGpu = false;
   }
-  const std::vector<uv::Isosurface> drawnIsosurfaces = impl.Isosurfaces.Drawn(impl.ScalarOffset, impl.ScalarScale);
+  const std::vector<uv::Isosurface> drawnIsosurfaces = impl.Isosurfaces.Drawn(impl.Mesh.ScalarOffset, impl.Mesh.ScalarScale);
   std::vector<double> isovalues;
   for (const uv::Isosurface& s : drawnIsosurfaces)
     isovalues.push_back(s.Value);
@@ -467,16 +319,10 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
       vtkSMPTools::For(0, static_cast<vtkIdType>(tetCount), [&](vtkIdType begin, vtkIdType end) {
         for (vtkIdType t = begin; t < end; ++t)
         {
-          const double lo = impl.ScalarLow[t], hi = impl.ScalarHigh[t];
+          const double lo = impl.Mesh.ScalarLow[t], hi = impl.Mesh.ScalarHigh[t];
           // Invisible when one zero interval holds the whole range, and no isovalue lies in it.
-          auto after = std::upper_bound(zeroSet.begin(), zeroSet.end(), lo,
-            [](double v, const std::pair<double, double>& z) { return v < z.first; });
-          bool invisible = after != zeroSet.begin() && std::prev(after)->second >= hi;
-          if (invisible)
-          {
-            auto iso = std::lower_bound(isovalues.begin(), isovalues.end(), lo);
-            invisible = iso == isovalues.end() || *iso > hi;
-          }
+          const bool invisible =
+            uv::RangeHasZeroExtinction(lo, hi, zeroSet) && !uv::RangeHoldsIsovalue(lo, hi, isovalues);
           keep[t] = invisible ? 0 : 1;
         }
       });
@@ -508,7 +354,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     return;
   }
   const double aspect = static_cast<double>(width) / height;
-  const glm::dmat4 modelToWorld = uv::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
+  const glm::dmat4 modelToWorld = uv::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Mesh.Center);
   const glm::dmat4 worldToEye = uv::ToGlm(camera->GetModelViewTransformMatrix());
   const glm::dmat4 eyeToClip = uv::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1));
   const glm::dmat4 modelToEye = worldToEye * modelToWorld;
@@ -523,9 +369,9 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   if (needGradients)
   {
     vtkDataArray* given = this->GradientArrayName
-      ? impl.Tetrahedra->GetPointData()->GetArray(this->GradientArrayName)
+      ? impl.Mesh.Tetrahedra->GetPointData()->GetArray(this->GradientArrayName)
       : nullptr;
-    const std::string gradientKey = impl.MeshKey + (given ? ":given" : ":computed");
+    const std::string gradientKey = impl.Mesh.Key() + (given ? ":given" : ":computed");
     if (given && given->GetNumberOfComponents() != 3)
     {
       vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
@@ -533,45 +379,8 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     }
     if (gradientKey != impl.GradientKey)
     {
-      vtkSmartPointer<vtkDataArray> gradients = given;
-      if (!given)
-      {
-        vtkNew<vtkUnstructuredGrid> scalarOnly;
-        scalarOnly->CopyStructure(impl.Tetrahedra);
-        vtkSmartPointer<vtkDataArray> named = vtk::TakeSmartPointer(impl.Scalars->NewInstance());
-        if (impl.Scalars->GetNumberOfComponents() == 1)
-        {
-          named->ShallowCopy(impl.Scalars);
-        }
-        else // the rendered scalar is component 0 (e.g. ParaView's "_and_opacity" arrays)
-        {
-          named->SetNumberOfTuples(impl.Scalars->GetNumberOfTuples());
-          named->CopyComponent(0, impl.Scalars, 0);
-        }
-        named->SetName("uvScalar");
-        scalarOnly->GetPointData()->AddArray(named);
-        vtkNew<vtkVertexGradientFilter> filter;
-        filter->SetInputData(scalarOnly);
-        filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "uvScalar");
-        filter->SetResultArrayName("uvGradient");
-        filter->Update();
-        gradients = vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0))->GetPointData()->GetArray("uvGradient");
-        ++impl.GradientComputations;
-      }
-      const vtkIdType pointCount = impl.Tetrahedra->GetNumberOfPoints();
-      impl.Gradients.assign(4 * pointCount, 0.0f);
-      if (gradients)
-      {
-        vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
-          double g[3];
-          for (vtkIdType p = begin; p < end; ++p)
-          {
-            gradients->GetTuple(p, g);
-            for (int d = 0; d < 3; ++d)
-              impl.Gradients[4 * p + d] = std::isfinite(g[d]) ? static_cast<float>(g[d]) : 0.0f;
-          }
-        });
-      }
+      impl.Gradients = uv::VertexGradients(impl.Mesh, given);
+      impl.GradientComputations += given ? 0 : 1;
       impl.GradientKey = gradientKey;
       impl.GradientsOnGpu = false;
     }
@@ -588,7 +397,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const float* c = &impl.Centroids[3 * impl.Order[i]];
+        const float* c = &impl.Mesh.Centroids[3 * impl.Order[i]];
         const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eye;
         const float distance = parallel ? glm::dot(offset, direction) : glm::dot(offset, offset);
         impl.SortKeys[i] = uv::OrderedKey(-distance); // farthest first
@@ -620,16 +429,16 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   vtkOpenGLState* state = window->GetState();
   if (!impl.MeshOnGpu)
   {
-    impl.TetrahedronBuffer->Upload(impl.TetrahedronPoints, vtkOpenGLBufferObject::TextureBuffer);
+    impl.TetrahedronBuffer->Upload(impl.Mesh.TetrahedronPoints, vtkOpenGLBufferObject::TextureBuffer);
     impl.TetrahedronTexture->SetContext(window);
     impl.TetrahedronTexture->SetInternalFormat(GL_RGBA32UI);
     impl.TetrahedronTexture->CreateTextureBuffer(
       static_cast<unsigned int>(tetCount), 4, VTK_UNSIGNED_INT, impl.TetrahedronBuffer);
-    impl.PointBuffer->Upload(impl.PointData, vtkOpenGLBufferObject::TextureBuffer);
+    impl.PointBuffer->Upload(impl.Mesh.PointData, vtkOpenGLBufferObject::TextureBuffer);
     impl.PointTexture->SetContext(window);
     impl.PointTexture->SetInternalFormat(GL_RGBA32F);
     impl.PointTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(impl.PointData.size() / 4), 4, VTK_FLOAT, impl.PointBuffer);
+      static_cast<unsigned int>(impl.Mesh.PointData.size() / 4), 4, VTK_FLOAT, impl.PointBuffer);
     impl.MeshOnGpu = true;
     ++impl.MeshUploads;
   }
@@ -663,7 +472,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     ++impl.TransferFunctionUploads;
   }
   if (impl.UploadedIsosurfaceTime != impl.IsosurfaceTime || !impl.IsosurfaceTexture->GetHandle() ||
-    impl.TransferFunctionMeshKey != impl.MeshKey)
+    impl.TransferFunctionMeshKey != impl.Mesh.Key())
   {
     uv::UploadIsosurfaces(impl.IsosurfaceTexture, window, drawnIsosurfaces);
     impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
@@ -768,7 +577,9 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   const std::string geometrySource =
     pulling ? std::string() : uv::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
   const std::string fragmentSource = uv::ShaderSource(
-    uvPreIntegratedTetrahedraFS, defines, { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib } });
+    uvPreIntegratedTetrahedraFS, defines,
+    { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
+      { "//UV::SegmentIntegration", uvSegmentIntegrationLib } });
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
     vertexSource.c_str(), fragmentSource.c_str(), geometrySource.c_str());
   if (!program)

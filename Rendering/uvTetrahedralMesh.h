@@ -1,0 +1,353 @@
+// The tetrahedra of a mapper's input as the tetrahedral mappers upload them (vtkPreIntegratedTetrahedra-
+// Mapper, vtkBarycentricShellMapper): other linear cells split, a normalised scalar, recentred float
+// positions, per-tetrahedron scalar ranges and centroids; the cells the transfer function makes
+// invisible; vertex gradients. Reads VTK data; the mappers' GPU code is elsewhere.
+#ifndef uvTetrahedralMesh_h
+#define uvTetrahedralMesh_h
+
+#include "uvOpticalModel.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkHexahedraToTetrahedra.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVertexGradientFilter.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace uv
+{
+
+class TetrahedralMesh
+{
+public:
+  /// What the last Update changed.
+  enum class Change
+  {
+    Nothing,
+    Points, ///< only the point positions (a deforming mesh): PointData's xyz and Centroids
+    All
+  };
+
+  vtkSmartPointer<vtkUnstructuredGrid> Tetrahedra; // the input, or its split
+  vtkSmartPointer<vtkDataArray> Scalars;           // the rendered scalar of Tetrahedra
+  std::vector<std::uint32_t> TetrahedronPoints;    // 4 point ids per drawable tetrahedron
+  std::vector<float> PointData;                    // recentred position and normalised scalar
+  std::vector<float> ScalarLow, ScalarHigh;        // per tetrahedron, normalised
+  std::vector<float> Centroids;                    // per tetrahedron, recentred
+  glm::dvec3 Center{ 0.0 };
+  double ScalarOffset = 0.0, ScalarScale = 1.0;
+  vtkIdType SplitCells = 0;       // input cells that were not tetrahedra, as of the last build
+  vtkIdType NaNTetrahedra = 0;    // tetrahedra left out for a NaN scalar
+  int Builds = 0, PointRefreshes = 0;
+
+  std::size_t Size() const { return this->TetrahedronPoints.size() / 4; }
+  /// Identifies the current build (changes whenever anything does).
+  const std::string& Key() const { return this->FullKey; }
+  void Invalidate() { this->TopologyKey.clear(); this->FullKey.clear(); }
+
+  /// Brings the mesh up to date with `input` and its rendered point scalar `inputScalars` (first
+  /// component). When only the points moved (same cells, same scalar array) just the positions and
+  /// centroids are refreshed: a deforming mesh costs no rebuild. `findScalars` finds the scalar again
+  /// on the split grid. Returns an error message, empty on success.
+  std::string Update(vtkUnstructuredGridBase* input, vtkDataArray* inputScalars,
+    const std::function<vtkDataArray*(vtkDataSet*)>& findScalars, const std::function<void(double)>& progress,
+    Change& change)
+  {
+    change = Change::Nothing;
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+    const auto id = [](const void* p) { return std::to_string(reinterpret_cast<std::uintptr_t>(p)); };
+    std::string topologyKey = id(input) + ":" + id(inputScalars) + ":" + std::to_string(inputScalars->GetMTime());
+    std::string pointsKey;
+    if (grid && grid->GetCells() && grid->GetCellTypesArray() && grid->GetPoints())
+    {
+      topologyKey += ":" + id(grid->GetCells()) + ":" + std::to_string(grid->GetCells()->GetMTime()) + ":" +
+        id(grid->GetCellTypesArray()) + ":" + std::to_string(grid->GetCellTypesArray()->GetMTime()) + ":" +
+        std::to_string(grid->GetNumberOfPoints());
+      pointsKey = id(grid->GetPoints()) + ":" + std::to_string(grid->GetPoints()->GetMTime());
+    }
+    else
+    {
+      topologyKey += ":" + std::to_string(input->GetMTime());
+    }
+    const std::string fullKey = topologyKey + "|" + pointsKey;
+    if (fullKey == this->FullKey)
+    {
+      return std::string();
+    }
+    if (topologyKey == this->TopologyKey && this->SplitCells == 0 && grid == this->Tetrahedra)
+    {
+      this->RefreshPoints();
+      this->FullKey = fullKey;
+      change = Change::Points;
+      ++this->PointRefreshes;
+      return std::string();
+    }
+    this->Invalidate();
+    change = Change::All;
+    std::string error = this->Build(input, inputScalars, findScalars, progress);
+    if (error.empty())
+    {
+      this->TopologyKey = topologyKey;
+      this->FullKey = fullKey;
+      ++this->Builds;
+    }
+    return error;
+  }
+
+private:
+  std::string TopologyKey, FullKey;
+
+  std::string Build(vtkUnstructuredGridBase* input, vtkDataArray* inputScalars,
+    const std::function<vtkDataArray*(vtkDataSet*)>& findScalars, const std::function<void(double)>& progress)
+  {
+    progress(0.0); // preparation (split, arrays) can take seconds on large meshes
+    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(input);
+    if (!grid)
+    {
+      grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      grid->DeepCopy(input);
+    }
+    this->SplitCells = 0;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      this->SplitCells += grid->GetCellType(c) != VTK_TETRA ? 1 : 0;
+    }
+    this->Scalars = inputScalars;
+    if (this->SplitCells > 0)
+    {
+      vtkNew<vtkHexahedraToTetrahedra> split;
+      split->SetInputData(grid);
+      split->Update();
+      vtkUnstructuredGrid* tets = vtkUnstructuredGrid::SafeDownCast(split->GetOutputDataObject(0));
+      if (!tets || tets->GetNumberOfCells() == 0)
+      {
+        return "the input's cells cannot be split into tetrahedra (quadratic or other non-linear cells?)";
+      }
+      grid = tets;
+      progress(0.5);
+      this->Scalars = findScalars(grid);
+      if (!this->Scalars)
+      {
+        // The scalar had no name to find it by after the split: it is the output's scalars.
+        this->Scalars = grid->GetPointData()->GetScalars();
+      }
+      if (!this->Scalars)
+      {
+        return "lost the scalar array while splitting the cells";
+      }
+    }
+    this->Tetrahedra = grid;
+
+    // Normalised scalar (first component) and recentred positions, in double then float.
+    const vtkIdType pointCount = grid->GetNumberOfPoints();
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (vtkIdType p = 0; p < pointCount; ++p)
+    {
+      const double s = this->Scalars->GetComponent(p, 0);
+      if (std::isfinite(s))
+      {
+        low = std::min(low, s);
+        high = std::max(high, s);
+      }
+    }
+    if (!(low <= high))
+    {
+      low = high = 0.0; // every scalar is NaN: nothing will be drawn
+    }
+    this->ScalarOffset = low;
+    this->ScalarScale = high > low ? 1.0 / (high - low) : 1.0;
+    double bounds[6];
+    grid->GetBounds(bounds);
+    this->Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
+    this->PointData.assign(4 * pointCount, 0.0f);
+    vtkDataArray* scalars = this->Scalars;
+    const double offset = this->ScalarOffset, scale = this->ScalarScale;
+    vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
+        this->PointData[4 * p + 3] = static_cast<float>((scalars->GetComponent(p, 0) - offset) * scale);
+    });
+    this->WritePositions();
+
+    // Tetrahedra: those with a NaN scalar are left out.
+    this->TetrahedronPoints.clear();
+    this->TetrahedronPoints.reserve(4 * grid->GetNumberOfCells());
+    this->NaNTetrahedra = 0;
+    vtkIdType npts;
+    const vtkIdType* ids;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      if (grid->GetCellType(c) != VTK_TETRA)
+        continue;
+      grid->GetCellPoints(c, npts, ids);
+      bool finite = true;
+      for (int k = 0; k < 4; ++k)
+        finite = finite && std::isfinite(this->PointData[4 * ids[k] + 3]);
+      if (!finite)
+      {
+        ++this->NaNTetrahedra;
+        continue;
+      }
+      for (int k = 0; k < 4; ++k)
+        this->TetrahedronPoints.push_back(static_cast<std::uint32_t>(ids[k]));
+    }
+    const std::size_t tetCount = this->Size();
+    this->ScalarLow.resize(tetCount);
+    this->ScalarHigh.resize(tetCount);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(tetCount), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        for (int k = 0; k < 4; ++k)
+        {
+          const float s = this->PointData[4 * this->TetrahedronPoints[4 * t + k] + 3];
+          lo = std::min(lo, s);
+          hi = std::max(hi, s);
+        }
+        this->ScalarLow[t] = lo;
+        this->ScalarHigh[t] = hi;
+      }
+    });
+    this->WriteCentroids();
+    progress(1.0);
+    return std::string();
+  }
+
+  /// Positions relative to Center (kept from the last full build, so a deforming mesh keeps its frame).
+  void WritePositions()
+  {
+    vtkPoints* points = this->Tetrahedra->GetPoints();
+    const glm::dvec3 center = this->Center;
+    vtkSMPTools::For(0, this->Tetrahedra->GetNumberOfPoints(), [&](vtkIdType begin, vtkIdType end) {
+      double x[3];
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        points->GetPoint(p, x);
+        for (int d = 0; d < 3; ++d)
+          this->PointData[4 * p + d] = static_cast<float>(x[d] - center[d]);
+      }
+    });
+  }
+
+  void WriteCentroids()
+  {
+    const std::size_t tetCount = this->Size();
+    this->Centroids.resize(3 * tetCount);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(tetCount), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType t = begin; t < end; ++t)
+        for (int d = 0; d < 3; ++d)
+        {
+          float sum = 0.0f;
+          for (int k = 0; k < 4; ++k)
+            sum += this->PointData[4 * this->TetrahedronPoints[4 * t + k] + d];
+          this->Centroids[3 * t + d] = 0.25f * sum;
+        }
+    });
+  }
+
+  void RefreshPoints()
+  {
+    this->WritePositions();
+    this->WriteCentroids();
+  }
+};
+
+/// Closed intervals of normalised scalar where the extinction is zero: the set that decides which
+/// tetrahedra are invisible.
+inline std::vector<std::pair<double, double>> ZeroExtinctionIntervals(const std::vector<TransferFunction::Node>& nodes)
+{
+  std::vector<std::pair<double, double>> intervals;
+  const double infinity = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if (nodes[i].Extinction > 0.0)
+      continue;
+    const double begin = i == 0 ? -infinity : nodes[i].Scalar;
+    std::size_t j = i;
+    while (j + 1 < nodes.size() && nodes[j + 1].Extinction <= 0.0)
+      ++j;
+    const double end = j + 1 == nodes.size() ? infinity : nodes[j].Scalar;
+    intervals.emplace_back(begin, end);
+    i = j;
+  }
+  return intervals;
+}
+
+/// True when one zero-extinction interval holds the whole scalar range [low, high].
+inline bool RangeHasZeroExtinction(double low, double high, const std::vector<std::pair<double, double>>& zeroSet)
+{
+  auto after = std::upper_bound(zeroSet.begin(), zeroSet.end(), low,
+    [](double v, const std::pair<double, double>& z) { return v < z.first; });
+  return after != zeroSet.begin() && std::prev(after)->second >= high;
+}
+
+/// True when a sorted isovalue lies in [low, high].
+inline bool RangeHoldsIsovalue(double low, double high, const std::vector<double>& sortedIsovalues)
+{
+  auto iso = std::lower_bound(sortedIsovalues.begin(), sortedIsovalues.end(), low);
+  return iso != sortedIsovalues.end() && *iso <= high;
+}
+
+/// Vertex gradients of the mesh's rendered scalar (component 0), 4 floats per point (w unused):
+/// `given` when it is a 3-component point array, otherwise computed by vtkVertexGradientFilter.
+inline std::vector<float> VertexGradients(const TetrahedralMesh& mesh, vtkDataArray* given)
+{
+  vtkSmartPointer<vtkDataArray> gradients = given;
+  if (!given)
+  {
+    vtkNew<vtkUnstructuredGrid> scalarOnly;
+    scalarOnly->CopyStructure(mesh.Tetrahedra);
+    vtkSmartPointer<vtkDataArray> named = vtk::TakeSmartPointer(mesh.Scalars->NewInstance());
+    if (mesh.Scalars->GetNumberOfComponents() == 1)
+    {
+      named->ShallowCopy(mesh.Scalars);
+    }
+    else // the rendered scalar is component 0 (e.g. ParaView's "_and_opacity" arrays)
+    {
+      named->SetNumberOfTuples(mesh.Scalars->GetNumberOfTuples());
+      named->CopyComponent(0, mesh.Scalars, 0);
+    }
+    named->SetName("uvScalar");
+    scalarOnly->GetPointData()->AddArray(named);
+    vtkNew<vtkVertexGradientFilter> filter;
+    filter->SetInputData(scalarOnly);
+    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "uvScalar");
+    filter->SetResultArrayName("uvGradient");
+    filter->Update();
+    gradients = vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0))->GetPointData()->GetArray("uvGradient");
+  }
+  const vtkIdType pointCount = mesh.Tetrahedra->GetNumberOfPoints();
+  std::vector<float> result(4 * pointCount, 0.0f);
+  if (gradients)
+  {
+    vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
+      double g[3];
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        gradients->GetTuple(p, g);
+        for (int d = 0; d < 3; ++d)
+          result[4 * p + d] = std::isfinite(g[d]) ? static_cast<float>(g[d]) : 0.0f;
+      }
+    });
+  }
+  return result;
+}
+
+} // namespace uv
+
+#endif
