@@ -1,6 +1,7 @@
 # Sources of the Rendering half of the UnstructuredVolume module (included by the root CMakeLists.txt).
 # The GLSL the mappers use is embedded from Shaders/ by the root CMakeLists.txt.
 set(uv_rendering_classes
+  vtkBarycentricShellMapper
   vtkHexahedralRayCastMapper
   vtkPreIntegratedTetrahedraMapper
   vtkUnstructuredVolumeReferenceRenderer
@@ -13,6 +14,7 @@ foreach (class IN LISTS uv_rendering_classes)
 endforeach ()
 # VTK-free math, unit-tested on its own, and the one VTK-reading helper the mappers share.
 set(uv_rendering_private_headers
+  "${CMAKE_CURRENT_LIST_DIR}/uvBarycentricShell.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvChebyshevSeries.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvHexahedronRay.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvImageErrorMetrics.h"

@@ -8,6 +8,7 @@
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvIsosurfaceList.h"
+#include "uvOpticalModel.h"
 #include "uvPhongLib.h"
 #include "uvPreIntegration.h"
 
@@ -77,6 +78,72 @@ inline bool CopySceneDepth(vtkTextureObject* depth, int originX, int originY, in
   std::vector<float> far(static_cast<std::size_t>(width) * height, 1.0f);
   depth->CreateDepthFromRaw(width, height, vtkTextureObject::Float32, VTK_FLOAT, far.data());
   return false;
+}
+
+/// Transfer-function nodes (normalised scalars) as uvTransferFunctionLib.glsl reads them: up to
+/// MaximumUniformNodes as uniforms (cheaper to read than a texture on CPU rasterisers), more from a
+/// texture (then TransferFunctionDefines adds UV_NODE_TEXTURE).
+constexpr int MaximumUniformNodes = 64;
+
+inline bool NodesNeedTexture(const std::vector<TransferFunction::Node>& nodes)
+{
+  return nodes.size() > static_cast<std::size_t>(MaximumUniformNodes);
+}
+
+inline std::string TransferFunctionDefines(const std::vector<TransferFunction::Node>& nodes)
+{
+  std::string defines = "#define UV_MAX_UNIFORM_NODES " + std::to_string(MaximumUniformNodes) + "\n";
+  if (NodesNeedTexture(nodes))
+    defines += "#define UV_NODE_TEXTURE\n";
+  return defines;
+}
+
+/// The node texture: row 0 (r, g, b, extinction), row 1 the scalar; nearest filtering.
+inline void UploadTransferFunctionTexture(
+  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, const std::vector<TransferFunction::Node>& nodes)
+{
+  const int count = static_cast<int>(nodes.size());
+  std::vector<float> texels(8 * count, 0.0f);
+  for (int k = 0; k < count; ++k)
+  {
+    texels[4 * k + 0] = static_cast<float>(nodes[k].Color.r);
+    texels[4 * k + 1] = static_cast<float>(nodes[k].Color.g);
+    texels[4 * k + 2] = static_cast<float>(nodes[k].Color.b);
+    texels[4 * k + 3] = static_cast<float>(nodes[k].Extinction);
+    texels[4 * (count + k)] = static_cast<float>(nodes[k].Scalar);
+  }
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->Create2DFromRaw(count, 2, 4, VTK_FLOAT, texels.data());
+}
+
+/// The uniforms of uvTransferFunctionLib.glsl (nodes, Psi table); `nodeTexture` and `psiTable` must be
+/// active (the node texture is read only when the nodes need it).
+inline void SetTransferFunctionUniforms(vtkShaderProgram* program, const std::vector<TransferFunction::Node>& nodes,
+  vtkTextureObject* nodeTexture, vtkTextureObject* psiTable)
+{
+  program->SetUniformi("nodeCount", static_cast<int>(nodes.size()));
+  if (NodesNeedTexture(nodes))
+  {
+    program->SetUniformi("transferFunction", nodeTexture->GetTextureUnit());
+  }
+  else
+  {
+    std::vector<float> values(4 * MaximumUniformNodes, 0.0f), scalars(MaximumUniformNodes, 0.0f);
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+    {
+      values[4 * k + 0] = static_cast<float>(nodes[k].Color.r);
+      values[4 * k + 1] = static_cast<float>(nodes[k].Color.g);
+      values[4 * k + 2] = static_cast<float>(nodes[k].Color.b);
+      values[4 * k + 3] = static_cast<float>(nodes[k].Extinction);
+      scalars[k] = static_cast<float>(nodes[k].Scalar);
+    }
+    program->SetUniform4fv("nodeValues", MaximumUniformNodes, values.data());
+    program->SetUniform4fv("nodeScalars", MaximumUniformNodes / 4, scalars.data());
+  }
+  program->SetUniformi("psiTable", psiTable->GetTextureUnit());
+  program->SetUniformf("psiTableSize", static_cast<float>(PsiTableSize));
 }
 
 /// Embedded GLSL made ready to compile: `defines` inserted after VTK's version marker, and each

@@ -228,7 +228,7 @@ private:
     return std::string();
   }
 
-  /// Positions relative to Center (kept from the last full build, so a deforming mesh keeps its frame).
+  /// Positions relative to Center.
   void WritePositions()
   {
     vtkPoints* points = this->Tetrahedra->GetPoints();
@@ -262,6 +262,9 @@ private:
 
   void RefreshPoints()
   {
+    double bounds[6]; // recentred on the moved points, so far moves keep float's digits
+    this->Tetrahedra->GetPoints()->GetBounds(bounds);
+    this->Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
     this->WritePositions();
     this->WriteCentroids();
   }

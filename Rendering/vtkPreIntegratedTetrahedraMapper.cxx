@@ -308,7 +308,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     isovalues.push_back(s.Value);
 
   // ---- Visible tetrahedra: rebuilt only when the zero-opacity set (or the isovalues) moved.
-  const auto zeroSet = this->SkipInvisibleCells ? ZeroExtinctionIntervals(impl.Nodes)
+  const auto zeroSet = this->SkipInvisibleCells ? uv::ZeroExtinctionIntervals(impl.Nodes)
                                                 : std::vector<std::pair<double, double>>();
   if (!impl.VisibleListValid || zeroSet != impl.VisibleListZeroSet || isovalues != impl.VisibleListIsovalues ||
     impl.VisibleListSkipped != this->SkipInvisibleCells)
@@ -453,21 +453,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   }
   if (!impl.TransferFunctionOnGpu)
   {
-    const int count = static_cast<int>(impl.Nodes.size());
-    std::vector<float> texels(8 * count);
-    for (int k = 0; k < count; ++k)
-    {
-      const auto& node = impl.Nodes[k];
-      texels[4 * k + 0] = static_cast<float>(node.Color.r);
-      texels[4 * k + 1] = static_cast<float>(node.Color.g);
-      texels[4 * k + 2] = static_cast<float>(node.Color.b);
-      texels[4 * k + 3] = static_cast<float>(node.Extinction);
-      texels[4 * (count + k)] = static_cast<float>(node.Scalar);
-    }
-    impl.TransferTexture->SetContext(window);
-    impl.TransferTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    impl.TransferTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    impl.TransferTexture->Create2DFromRaw(count, 2, 4, VTK_FLOAT, texels.data());
+    uv::UploadTransferFunctionTexture(impl.TransferTexture, window, impl.Nodes);
     impl.TransferFunctionOnGpu = true;
     ++impl.TransferFunctionUploads;
   }
@@ -561,14 +547,9 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
-  // Transfer-function nodes are uniforms when they fit (the common case), a texture otherwise.
-  constexpr int maximumUniformNodes = 64;
-  const bool nodeTexture = impl.Nodes.size() > static_cast<std::size_t>(maximumUniformNodes);
-  std::string defines = "#define UV_MAX_UNIFORM_NODES " + std::to_string(maximumUniformNodes) + "\n";
+  std::string defines = uv::TransferFunctionDefines(impl.Nodes);
   if (needGradients)
     defines += "#define UV_GRADIENTS\n";
-  if (nodeTexture)
-    defines += "#define UV_NODE_TEXTURE\n";
   const std::initializer_list<std::pair<const char*, const char*>> projection = {
     { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
   };
@@ -610,23 +591,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   program->SetUniformi("parallelProjection", parallel ? 1 : 0);
   program->SetUniformi("averageScalar", this->IntegrationMode == AVERAGE_SCALAR ? 1 : 0);
   program->SetUniformi("shadeVolume", shade ? 1 : 0);
-  program->SetUniformi("nodeCount", static_cast<int>(impl.Nodes.size()));
-  if (!nodeTexture)
-  {
-    std::vector<float> values(4 * maximumUniformNodes, 0.0f), scalars(maximumUniformNodes, 0.0f);
-    for (std::size_t k = 0; k < impl.Nodes.size(); ++k)
-    {
-      values[4 * k + 0] = static_cast<float>(impl.Nodes[k].Color.r);
-      values[4 * k + 1] = static_cast<float>(impl.Nodes[k].Color.g);
-      values[4 * k + 2] = static_cast<float>(impl.Nodes[k].Color.b);
-      values[4 * k + 3] = static_cast<float>(impl.Nodes[k].Extinction);
-      scalars[k] = static_cast<float>(impl.Nodes[k].Scalar);
-    }
-    program->SetUniform4fv("nodeValues", maximumUniformNodes, values.data());
-    program->SetUniform4fv("nodeScalars", maximumUniformNodes / 4, scalars.data());
-  }
   program->SetUniformi("isosurfaceCount", static_cast<int>(isovalues.size()));
-  program->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
   uv::SetPhongUniforms(program, renderer, property, worldToEye);
 
   std::vector<vtkTextureObject*> active = { impl.TetrahedronTexture, impl.PointTexture, impl.TransferTexture,
@@ -639,10 +604,8 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     texture->Activate();
   program->SetUniformi("tetrahedronPoints", impl.TetrahedronTexture->GetTextureUnit());
   program->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
-  if (nodeTexture)
-    program->SetUniformi("transferFunction", impl.TransferTexture->GetTextureUnit());
+  uv::SetTransferFunctionUniforms(program, impl.Nodes, impl.TransferTexture, impl.PsiTexture);
   program->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
-  program->SetUniformi("psiTable", impl.PsiTexture->GetTextureUnit());
   program->SetUniformi("opaqueDepth", impl.DepthTexture->GetTextureUnit());
   if (needGradients)
     program->SetUniformi("pointGradients", impl.GradientTexture->GetTextureUnit());

@@ -113,9 +113,10 @@ class SceneTestCase(unittest.TestCase):
 
 
 class Scene:
-    """One mapper in an off-screen window with a transparent black background."""
+    """One mapper (vtkPreIntegratedTetrahedraMapper unless `mapper_class` says otherwise) in an
+    off-screen window with a transparent black background."""
 
-    def __init__(self, mesh, prop, camera, size=128, props=(), **settings):
+    def __init__(self, mesh, prop, camera, size=128, props=(), mapper_class=None, **settings):
         OPEN_SCENES.append(self)
         self.size = size
         self.renderer = vtkRenderer()
@@ -126,7 +127,7 @@ class Scene:
             self.window.RemoveRenderer(other.renderer)  # one scene shows at a time
         self.window.SetSize(size, size)
         self.window.AddRenderer(self.renderer)
-        self.mapper = vtkPreIntegratedTetrahedraMapper()
+        self.mapper = (mapper_class or vtkPreIntegratedTetrahedraMapper)()
         self.mapper.SetInputData(mesh)
         self.mapper.SetKeepFloatImage(True)
         for name, value in settings.items():

@@ -1,0 +1,925 @@
+#include "vtkBarycentricShellMapper.h"
+
+#include "uvBarycentricCellProjectionFS.h"
+#include "uvBarycentricRayLib.h"
+#include "uvBarycentricShellBlendFS.h"
+#include "uvBarycentricShellGS.h"
+#include "uvBarycentricShellIsosurfaceFS.h"
+#include "uvBarycentricShellMaskFS.h"
+#include "uvBarycentricShellSliceFS.h"
+#include "uvFullScreenTriangleVS.h"
+#include "uvMapperOpenGL.h"
+#include "uvPreIntegratedTetrahedraVS.h"
+#include "uvSegmentIntegrationLib.h"
+#include "uvTetrahedralMesh.h"
+#include "uvTransferFunctionFromVolumeProperty.h"
+#include "uvTransferFunctionLib.h"
+#include "uvVisibilitySort.h"
+
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkBarycentricShellMapper);
+
+namespace
+{
+constexpr int MaximumTargets = 8;    // slices: four per target (OpenGL 3.2 guarantees 8 draw buffers)
+constexpr int MaximumShells = 4096;  // beyond it the sample distance is widened (with a warning)
+constexpr float InsideTolerance = 1e-5f; // barycentric slack: no cracks between neighbours
+
+/// The range of eye distances a tetrahedron covers (a lower bound and its maximum): under perspective,
+/// |x| >= x.u for the unit u towards the centroid, and x.u is smallest at a vertex; |x| is largest at
+/// one. Under parallel projection the depth -z, exact at the vertices.
+void DistanceRange(const std::array<glm::vec3, 4>& v, bool parallel, float& low, float& high)
+{
+  if (parallel)
+  {
+    low = std::min({ -v[0].z, -v[1].z, -v[2].z, -v[3].z });
+    high = std::max({ -v[0].z, -v[1].z, -v[2].z, -v[3].z });
+    return;
+  }
+  const glm::vec3 centroid = 0.25f * (v[0] + v[1] + v[2] + v[3]);
+  const float centroidLength = glm::length(centroid);
+  high = 0.0f;
+  low = std::numeric_limits<float>::infinity();
+  for (const glm::vec3& p : v)
+  {
+    high = std::max(high, glm::length(p));
+    low = centroidLength > 0.0f ? std::min(low, glm::dot(p, centroid) / centroidLength) : 0.0f;
+  }
+  low = std::max(low, 0.0f);
+}
+} // namespace
+
+class vtkBarycentricShellMapper::Internals
+{
+public:
+  uv::TetrahedralMesh Mesh;
+
+  vtkMTimeType TransferFunctionTime = 0;
+  std::string TransferFunctionMeshKey;
+  std::vector<uv::TransferFunction::Node> Nodes; // normalised scalars
+  uv::IsosurfaceList Isosurfaces;
+  vtkMTimeType IsosurfaceTime = 0, UploadedIsosurfaceTime = 0;
+
+  // Which tetrahedra matter: the volume's (some extinction in their range), the isosurfaces'
+  // (an isovalue in their range) and either (cell projection).
+  std::string ListKey;
+  std::vector<std::uint32_t> VolumeCells, IsosurfaceCells, DrawnCells;
+
+  std::string GradientKey;
+  std::vector<float> Gradients;
+
+  // Per frame.
+  std::vector<glm::vec3> EyePoints;
+  std::vector<float> Low, High;                     // eye-distance range per volume cell
+  std::vector<std::uint32_t> ShellOffsets, ShellCells; // volume cells per shell, concatenated
+  std::vector<unsigned char> ShellHasIsosurface;
+  std::vector<std::uint32_t> SortKeys, Order, ScratchKeys, ScratchOrder;
+
+  // GPU state, for one context.
+  vtkOpenGLRenderWindow* Context = nullptr;
+  vtkNew<vtkOpenGLBufferObject> TetrahedronBuffer, PointBuffer, GradientBuffer, ShellBuffer, IsosurfaceCellBuffer,
+    OrderBuffer;
+  vtkNew<vtkTextureObject> TetrahedronTexture, PointTexture, GradientTexture, TransferTexture, IsosurfaceTexture,
+    PsiTexture, SceneDepth, MaskDepth, Accumulation, IsosurfaceColor, IsosurfaceDistance, IsosurfaceDepth;
+  std::array<vtkNew<vtkTextureObject>, MaximumTargets> Slices;
+  vtkNew<vtkOpenGLFramebufferObject> SliceFramebuffer, AccumulationFramebuffer, IsosurfaceFramebuffer;
+  vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
+  bool MeshOnGpu = false, PointsOnGpu = false, GradientsOnGpu = false, TransferFunctionOnGpu = false,
+       IsosurfaceCellsOnGpu = false;
+  int ImageSize[2] = { 0, 0 };
+  int AllocatedTargets = 0;
+
+  vtkSmartPointer<vtkImageData> FloatImage;
+  int Shells = 0, SkippedShells = 0;
+  vtkIdType DrawnTetrahedra = 0;
+  double LastSampleDistance = 0.0;
+  bool WarnedSplit = false, WarnedNaN = false, WarnedMultisample = false, WarnedShells = false;
+
+  void ReleaseGraphics()
+  {
+    if (this->Context)
+    {
+      for (vtkTextureObject* texture : { this->TetrahedronTexture.Get(), this->PointTexture.Get(),
+             this->GradientTexture.Get(), this->TransferTexture.Get(), this->IsosurfaceTexture.Get(),
+             this->PsiTexture.Get(), this->SceneDepth.Get(), this->MaskDepth.Get(), this->Accumulation.Get(),
+             this->IsosurfaceColor.Get(), this->IsosurfaceDistance.Get(), this->IsosurfaceDepth.Get() })
+      {
+        texture->ReleaseGraphicsResources(this->Context);
+      }
+      for (auto& slice : this->Slices)
+        slice->ReleaseGraphicsResources(this->Context);
+      for (vtkOpenGLBufferObject* buffer : { this->TetrahedronBuffer.Get(), this->PointBuffer.Get(),
+             this->GradientBuffer.Get(), this->ShellBuffer.Get(), this->IsosurfaceCellBuffer.Get(),
+             this->OrderBuffer.Get() })
+      {
+        buffer->ReleaseGraphicsResources();
+      }
+      for (vtkOpenGLFramebufferObject* framebuffer :
+        { this->SliceFramebuffer.Get(), this->AccumulationFramebuffer.Get(), this->IsosurfaceFramebuffer.Get() })
+      {
+        framebuffer->ReleaseGraphicsResources(this->Context);
+      }
+      this->NoAttributes->ReleaseGraphicsResources();
+    }
+    this->Context = nullptr;
+    this->MeshOnGpu = this->PointsOnGpu = this->GradientsOnGpu = this->TransferFunctionOnGpu = false;
+    this->IsosurfaceCellsOnGpu = false;
+    this->UploadedIsosurfaceTime = 0;
+    this->ImageSize[0] = this->ImageSize[1] = 0;
+    this->AllocatedTargets = 0;
+  }
+
+  /// Rebuilds the three cell lists when the mesh, the zero-extinction set or the isovalues changed.
+  void UpdateLists(bool skipInvisible, const std::vector<double>& isovalues)
+  {
+    const auto zeroSet = skipInvisible ? uv::ZeroExtinctionIntervals(this->Nodes)
+                                       : std::vector<std::pair<double, double>>();
+    std::string key = this->Mesh.Key() + "|";
+    for (const auto& [begin, end] : zeroSet)
+      key += std::to_string(begin) + "," + std::to_string(end) + ";";
+    key += "|";
+    for (double value : isovalues)
+      key += std::to_string(value) + ";";
+    if (key == this->ListKey)
+    {
+      return;
+    }
+    const std::size_t count = this->Mesh.Size();
+    std::vector<unsigned char> flags(count, 0);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const double low = this->Mesh.ScalarLow[t], high = this->Mesh.ScalarHigh[t];
+        flags[t] = (uv::RangeHasZeroExtinction(low, high, zeroSet) ? 0 : 1) |
+          (uv::RangeHoldsIsovalue(low, high, isovalues) ? 2 : 0);
+      }
+    });
+    this->VolumeCells.clear();
+    this->IsosurfaceCells.clear();
+    this->DrawnCells.clear();
+    for (std::size_t t = 0; t < count; ++t)
+    {
+      const auto id = static_cast<std::uint32_t>(t);
+      if (flags[t] & 1)
+        this->VolumeCells.push_back(id);
+      if (flags[t] & 2)
+        this->IsosurfaceCells.push_back(id);
+      if (flags[t])
+        this->DrawnCells.push_back(id);
+    }
+    this->ListKey = key;
+    this->IsosurfaceCellsOnGpu = false;
+  }
+
+  /// (Re)creates the screen-sized textures and the framebuffers around them.
+  void EnsureImages(vtkOpenGLRenderWindow* window, int width, int height, int targets)
+  {
+    if (this->ImageSize[0] == width && this->ImageSize[1] == height && this->AllocatedTargets == targets)
+    {
+      return;
+    }
+    auto floatImage = [&](vtkTextureObject* texture, int components) {
+      texture->SetContext(window);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->Allocate2D(width, height, components, VTK_FLOAT);
+    };
+    for (vtkTextureObject* depth : { this->SceneDepth.Get(), this->MaskDepth.Get(), this->IsosurfaceDepth.Get() })
+    {
+      depth->SetContext(window);
+      depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    }
+    floatImage(this->Accumulation, 4);
+    floatImage(this->IsosurfaceColor, 4);
+    floatImage(this->IsosurfaceDistance, 1);
+    for (int t = 0; t < targets; ++t)
+      floatImage(this->Slices[t], 4);
+
+    auto assemble = [&](vtkOpenGLFramebufferObject* framebuffer, std::vector<vtkTextureObject*> colors,
+                      vtkTextureObject* depth) {
+      framebuffer->SetContext(window);
+      framebuffer->SaveCurrentBindingsAndBuffers();
+      framebuffer->Bind();
+      framebuffer->RemoveColorAttachments(MaximumTargets);
+      for (std::size_t c = 0; c < colors.size(); ++c)
+        framebuffer->AddColorAttachment(static_cast<unsigned int>(c), colors[c]);
+      framebuffer->AddDepthAttachment(depth);
+      framebuffer->ActivateDrawBuffers(static_cast<unsigned int>(colors.size()));
+      framebuffer->RestorePreviousBindingsAndBuffers();
+    };
+    std::vector<vtkTextureObject*> slices;
+    for (int t = 0; t < targets; ++t)
+      slices.push_back(this->Slices[t]);
+    assemble(this->SliceFramebuffer, slices, this->MaskDepth);
+    assemble(this->AccumulationFramebuffer, { this->Accumulation }, this->MaskDepth);
+    assemble(this->IsosurfaceFramebuffer, { this->IsosurfaceColor, this->IsosurfaceDistance }, this->IsosurfaceDepth);
+    this->ImageSize[0] = width;
+    this->ImageSize[1] = height;
+    this->AllocatedTargets = targets;
+  }
+};
+
+vtkBarycentricShellMapper::vtkBarycentricShellMapper()
+  : Impl(new Internals)
+{
+  this->SetGradientArrayName("Gradients");
+}
+
+vtkBarycentricShellMapper::~vtkBarycentricShellMapper()
+{
+  this->SetGradientArrayName(nullptr);
+}
+
+void vtkBarycentricShellMapper::AddIsosurface(double value, double red, double green, double blue, double opacity)
+{
+  this->Impl->Isosurfaces.Add(value, red, green, blue, opacity);
+  this->Modified();
+  this->Impl->IsosurfaceTime = this->GetMTime();
+}
+
+void vtkBarycentricShellMapper::RemoveAllIsosurfaces()
+{
+  if (this->Impl->Isosurfaces.Clear())
+  {
+    this->Modified();
+    this->Impl->IsosurfaceTime = this->GetMTime();
+  }
+}
+
+int vtkBarycentricShellMapper::GetNumberOfIsosurfaces()
+{
+  return this->Impl->Isosurfaces.Size();
+}
+
+vtkImageData* vtkBarycentricShellMapper::GetFloatImage()
+{
+  return this->Impl->FloatImage;
+}
+
+int vtkBarycentricShellMapper::GetNumberOfShells()
+{
+  return this->Impl->Shells;
+}
+int vtkBarycentricShellMapper::GetNumberOfSkippedShells()
+{
+  return this->Impl->SkippedShells;
+}
+vtkIdType vtkBarycentricShellMapper::GetNumberOfDrawnTetrahedra()
+{
+  return this->Impl->DrawnTetrahedra;
+}
+double vtkBarycentricShellMapper::GetLastSampleDistance()
+{
+  return this->Impl->LastSampleDistance;
+}
+int vtkBarycentricShellMapper::GetNumberOfMeshBuilds()
+{
+  return this->Impl->Mesh.Builds;
+}
+int vtkBarycentricShellMapper::GetNumberOfPointRefreshes()
+{
+  return this->Impl->Mesh.PointRefreshes;
+}
+vtkIdType vtkBarycentricShellMapper::GetMeshMemoryInBytes()
+{
+  const Internals& impl = *this->Impl;
+  std::size_t bytes = sizeof(std::uint32_t) * impl.Mesh.TetrahedronPoints.size() +
+    sizeof(float) * impl.Mesh.PointData.size() +
+    sizeof(std::uint32_t) * (impl.ShellCells.size() + impl.IsosurfaceCells.size() + impl.Order.size());
+  if (impl.GradientsOnGpu)
+    bytes += sizeof(float) * impl.Gradients.size();
+  return static_cast<vtkIdType>(bytes);
+}
+
+void vtkBarycentricShellMapper::ReleaseGraphicsResources(vtkWindow*)
+{
+  this->Impl->ReleaseGraphics();
+}
+
+void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RenderMode: " << (this->RenderMode == SHELLS ? "Shells" : "CellProjection") << "\n";
+  os << indent << "SampleDistance: " << this->SampleDistance << "\n";
+  os << indent << "AutomaticSamplesAcross: " << this->AutomaticSamplesAcross << "\n";
+  os << indent << "SlicesPerShell: " << this->SlicesPerShell << "\n";
+  os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
+  os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.Size() << "\n";
+  os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
+  os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
+  os << indent << "KeepFloatImage: " << this->KeepFloatImage << "\n";
+}
+
+void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+{
+  Internals& impl = *this->Impl;
+  impl.Shells = impl.SkippedShells = 0;
+  impl.DrawnTetrahedra = 0;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkUnstructuredGridBase* input = this->GetInput();
+  if (!window || !volume || !volume->GetProperty())
+  {
+    vtkErrorMacro("needs an OpenGL render window and a volume with a property");
+    return;
+  }
+  if (!input)
+  {
+    vtkErrorMacro("no input");
+    return;
+  }
+  if (input->GetNumberOfCells() == 0 || input->GetNumberOfPoints() == 0)
+  {
+    return; // an empty grid draws nothing
+  }
+
+  // ---- The mesh: rebuilt when the cells or the scalar changed, positions only when the points moved.
+  int cellFlag = 0;
+  vtkDataArray* inputScalars = vtkAbstractMapper::GetScalars(
+    input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (!inputScalars)
+  {
+    vtkErrorMacro("the input has no point scalar to render (set one, or select an array with SelectScalarArray)");
+    return;
+  }
+  if (cellFlag != 0)
+  {
+    vtkErrorMacro("cell scalars are not supported: convert them to point data (vtkCellDataToPointData)");
+    return;
+  }
+  uv::TetrahedralMesh::Change change;
+  const std::string error = impl.Mesh.Update(
+    input, inputScalars,
+    [this](vtkDataSet* split) {
+      int flag = 0;
+      return vtkAbstractMapper::GetScalars(split, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, flag);
+    },
+    [this](double progress) { this->UpdateProgress(progress); }, change);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return;
+  }
+  if (change == uv::TetrahedralMesh::Change::All)
+  {
+    impl.MeshOnGpu = impl.GradientsOnGpu = false;
+    if (impl.Mesh.SplitCells > 0 && !impl.WarnedSplit)
+    {
+      vtkWarningMacro(<< impl.Mesh.SplitCells << " of " << input->GetNumberOfCells()
+                      << " cells are not tetrahedra: splitting them with vtkHexahedraToTetrahedra "
+                         "(once per data change; split upstream to skip this)");
+      impl.WarnedSplit = true;
+    }
+    if (impl.Mesh.NaNTetrahedra > 0 && !impl.WarnedNaN)
+    {
+      vtkWarningMacro(<< impl.Mesh.NaNTetrahedra << " tetrahedra touch a NaN scalar and are not drawn");
+      impl.WarnedNaN = true;
+    }
+  }
+  if (change == uv::TetrahedralMesh::Change::Points)
+  {
+    impl.PointsOnGpu = false;
+  }
+  if (impl.Mesh.Size() == 0)
+  {
+    return;
+  }
+
+  // ---- Transfer function and isosurfaces, normalised like the scalar.
+  vtkVolumeProperty* property = volume->GetProperty();
+  const std::string scalarKey = std::to_string(impl.Mesh.ScalarOffset) + ":" + std::to_string(impl.Mesh.ScalarScale);
+  if (property->GetMTime() != impl.TransferFunctionTime || impl.TransferFunctionMeshKey != scalarKey)
+  {
+    impl.Nodes = uv::TransferFunctionNodes(property);
+    if (impl.Nodes.empty())
+    {
+      vtkErrorMacro("the volume property has no scalar opacity function");
+      return;
+    }
+    for (auto& node : impl.Nodes)
+    {
+      node.Scalar = (node.Scalar - impl.Mesh.ScalarOffset) * impl.Mesh.ScalarScale;
+    }
+    impl.TransferFunctionTime = property->GetMTime();
+    impl.TransferFunctionMeshKey = scalarKey;
+    impl.TransferFunctionOnGpu = false;
+    impl.UploadedIsosurfaceTime = 0; // isovalues are normalised the same way
+  }
+  const std::vector<uv::Isosurface> drawnIsosurfaces =
+    impl.Isosurfaces.Drawn(impl.Mesh.ScalarOffset, impl.Mesh.ScalarScale);
+  std::vector<double> isovalues;
+  for (const uv::Isosurface& s : drawnIsosurfaces)
+    isovalues.push_back(s.Value);
+  impl.UpdateLists(this->SkipInvisibleCells, isovalues);
+  const bool cellProjection = this->RenderMode == CELL_PROJECTION;
+  if (impl.DrawnCells.empty())
+  {
+    return;
+  }
+
+  // ---- Camera, in the recentred model frame.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  int width, height, originX, originY;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
+  if (width < 1 || height < 1)
+  {
+    return;
+  }
+  const double aspect = static_cast<double>(width) / height;
+  const glm::dmat4 modelToWorld =
+    uv::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Mesh.Center);
+  const glm::dmat4 worldToEye = uv::ToGlm(camera->GetModelViewTransformMatrix());
+  const glm::dmat4 eyeToClip = uv::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  const glm::dmat4 modelToEye = worldToEye * modelToWorld;
+  const bool parallel = camera->GetParallelProjection() != 0;
+
+  // ---- Gradients, for isosurfaces (both modes) and shading (cell projection).
+  const bool shade = cellProjection && property->GetShade() != 0;
+  const bool needGradients = shade || !isovalues.empty();
+  if (needGradients)
+  {
+    vtkDataArray* given = this->GradientArrayName
+      ? impl.Mesh.Tetrahedra->GetPointData()->GetArray(this->GradientArrayName)
+      : nullptr;
+    if (given && given->GetNumberOfComponents() != 3)
+    {
+      vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
+      given = nullptr;
+    }
+    const std::string gradientKey = impl.Mesh.Key() + (given ? ":given" : ":computed");
+    if (gradientKey != impl.GradientKey)
+    {
+      impl.Gradients = uv::VertexGradients(impl.Mesh, given);
+      impl.GradientKey = gradientKey;
+      impl.GradientsOnGpu = false;
+    }
+  }
+
+  // ---- Shells (front to back) and the volume cells overlapping each, or the back-to-front order.
+  const int slicesPerShell = this->SlicesPerShell;
+  const int targets = (slicesPerShell + 1 + 3) / 4;
+  double sampleDistance = this->SampleDistance;
+  if (!(sampleDistance > 0.0))
+  {
+    double bounds[6];
+    volume->GetBounds(bounds);
+    const double diagonal =
+      std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+    sampleDistance = diagonal / this->AutomaticSamplesAcross;
+  }
+  double firstDistance = 0.0;
+  int shellCount = 0;
+  if (!cellProjection)
+  {
+    // Eye-space positions once per point, then each cell's distance range.
+    const std::size_t pointCount = impl.Mesh.PointData.size() / 4;
+    impl.EyePoints.resize(pointCount);
+    const glm::mat4 toEye(modelToEye);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(pointCount), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        const float* x = &impl.Mesh.PointData[4 * p];
+        impl.EyePoints[p] = glm::vec3(toEye * glm::vec4(x[0], x[1], x[2], 1.0f));
+      }
+    });
+    auto ranges = [&](const std::vector<std::uint32_t>& cells, std::vector<float>& low, std::vector<float>& high) {
+      low.resize(cells.size());
+      high.resize(cells.size());
+      vtkSMPTools::For(0, static_cast<vtkIdType>(cells.size()), [&](vtkIdType begin, vtkIdType end) {
+        std::array<glm::vec3, 4> v;
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          for (int k = 0; k < 4; ++k)
+            v[k] = impl.EyePoints[impl.Mesh.TetrahedronPoints[4 * cells[i] + k]];
+          DistanceRange(v, parallel, low[i], high[i]);
+        }
+      });
+    };
+    std::vector<float> isoLow, isoHigh;
+    ranges(impl.VolumeCells, impl.Low, impl.High);
+    ranges(impl.IsosurfaceCells, isoLow, isoHigh);
+    float nearest = std::numeric_limits<float>::infinity(), farthest = -nearest;
+    for (const auto* range : { &impl.Low, &isoLow })
+      for (float d : *range)
+        nearest = std::min(nearest, d);
+    for (const auto* range : { &impl.High, &isoHigh })
+      for (float d : *range)
+        farthest = std::max(farthest, d);
+    if (!(farthest >= nearest))
+    {
+      return;
+    }
+    firstDistance = nearest;
+    double thickness = slicesPerShell * sampleDistance;
+    if ((farthest - nearest) / thickness > MaximumShells)
+    {
+      thickness = (farthest - nearest) / MaximumShells;
+      sampleDistance = thickness / slicesPerShell;
+      if (!impl.WarnedShells)
+      {
+        vtkWarningMacro("the sample distance would need more than " << MaximumShells
+                                                                    << " shells here: widened to " << sampleDistance);
+        impl.WarnedShells = true;
+      }
+    }
+    shellCount = std::max(1, static_cast<int>(std::ceil((farthest - nearest) / thickness)));
+    auto shellOf = [&](float d) {
+      return std::clamp(static_cast<int>(std::floor((d - firstDistance) / thickness)), 0, shellCount - 1);
+    };
+    // A cell goes into every shell its range overlaps (slack of a thousandth of a shell at the ends).
+    const float slack = static_cast<float>(1e-3 * thickness);
+    impl.ShellOffsets.assign(shellCount + 1, 0);
+    for (std::size_t i = 0; i < impl.VolumeCells.size(); ++i)
+      for (int s = shellOf(impl.Low[i] - slack); s <= shellOf(impl.High[i] + slack); ++s)
+        ++impl.ShellOffsets[s + 1];
+    for (int s = 0; s < shellCount; ++s)
+      impl.ShellOffsets[s + 1] += impl.ShellOffsets[s];
+    impl.ShellCells.resize(impl.ShellOffsets[shellCount]);
+    std::vector<std::uint32_t> fill(impl.ShellOffsets.begin(), impl.ShellOffsets.end() - 1);
+    for (std::size_t i = 0; i < impl.VolumeCells.size(); ++i)
+      for (int s = shellOf(impl.Low[i] - slack); s <= shellOf(impl.High[i] + slack); ++s)
+        impl.ShellCells[fill[s]++] = impl.VolumeCells[i];
+    impl.ShellHasIsosurface.assign(shellCount, 0);
+    for (std::size_t i = 0; i < impl.IsosurfaceCells.size(); ++i)
+      for (int s = shellOf(isoLow[i] - slack); s <= shellOf(isoHigh[i] + slack); ++s)
+        impl.ShellHasIsosurface[s] = 1;
+  }
+  else
+  {
+    // Back to front by centroid distance (as vtkPreIntegratedTetrahedraMapper).
+    const glm::dmat4 eyeToModel = glm::inverse(modelToEye);
+    const glm::vec3 eye(eyeToModel * glm::dvec4(0, 0, 0, 1));
+    const glm::vec3 direction(glm::normalize(glm::dvec3(eyeToModel * glm::dvec4(0, 0, -1, 0))));
+    const std::size_t n = impl.DrawnCells.size();
+    impl.SortKeys.resize(n);
+    impl.Order = impl.DrawnCells;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const float* c = &impl.Mesh.Centroids[3 * impl.Order[i]];
+        const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eye;
+        const float distance = parallel ? glm::dot(offset, direction) : glm::dot(offset, offset);
+        impl.SortKeys[i] = uv::OrderedKey(-distance); // farthest first
+      }
+    });
+    auto parallelChunks = [](int count, const auto& function) {
+      vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType chunk = begin; chunk < end; ++chunk)
+          function(static_cast<int>(chunk));
+      });
+    };
+    uv::RadixSortPairs(impl.SortKeys, impl.Order, impl.ScratchKeys, impl.ScratchOrder, parallelChunks);
+  }
+  impl.LastSampleDistance = sampleDistance;
+
+  // ---- GPU resources.
+  if (impl.Context != window)
+  {
+    impl.ReleaseGraphics();
+    impl.Context = window;
+  }
+  window->MakeCurrent();
+  vtkOpenGLClearErrorMacro();
+  vtkOpenGLState* state = window->GetState();
+  if (!impl.MeshOnGpu)
+  {
+    impl.TetrahedronBuffer->Upload(impl.Mesh.TetrahedronPoints, vtkOpenGLBufferObject::TextureBuffer);
+    impl.TetrahedronTexture->SetContext(window);
+    impl.TetrahedronTexture->SetInternalFormat(GL_RGBA32UI);
+    impl.TetrahedronTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(impl.Mesh.Size()), 4, VTK_UNSIGNED_INT, impl.TetrahedronBuffer);
+    impl.MeshOnGpu = true;
+    impl.PointsOnGpu = false;
+  }
+  if (!impl.PointsOnGpu)
+  {
+    // A deforming mesh pays this upload and nothing else.
+    impl.PointBuffer->Upload(impl.Mesh.PointData, vtkOpenGLBufferObject::TextureBuffer);
+    impl.PointTexture->SetContext(window);
+    impl.PointTexture->SetInternalFormat(GL_RGBA32F);
+    impl.PointTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(impl.Mesh.PointData.size() / 4), 4, VTK_FLOAT, impl.PointBuffer);
+    impl.PointsOnGpu = true;
+  }
+  if (needGradients && !impl.GradientsOnGpu)
+  {
+    impl.GradientBuffer->Upload(impl.Gradients, vtkOpenGLBufferObject::TextureBuffer);
+    impl.GradientTexture->SetContext(window);
+    impl.GradientTexture->SetInternalFormat(GL_RGBA32F);
+    impl.GradientTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(impl.Gradients.size() / 4), 4, VTK_FLOAT, impl.GradientBuffer);
+    impl.GradientsOnGpu = true;
+  }
+  if (!impl.TransferFunctionOnGpu)
+  {
+    uv::UploadTransferFunctionTexture(impl.TransferTexture, window, impl.Nodes);
+    impl.TransferFunctionOnGpu = true;
+  }
+  if (impl.UploadedIsosurfaceTime != impl.IsosurfaceTime || !impl.IsosurfaceTexture->GetHandle())
+  {
+    uv::UploadIsosurfaces(impl.IsosurfaceTexture, window, drawnIsosurfaces);
+    impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
+  }
+  uv::EnsurePsiTexture(impl.PsiTexture, window);
+  if (cellProjection)
+  {
+    impl.OrderBuffer->Upload(impl.Order, vtkOpenGLBufferObject::ElementArrayBuffer);
+  }
+  else
+  {
+    impl.ShellBuffer->Upload(impl.ShellCells, vtkOpenGLBufferObject::ElementArrayBuffer);
+    if (!impl.IsosurfaceCellsOnGpu && !impl.IsosurfaceCells.empty())
+    {
+      impl.IsosurfaceCellBuffer->Upload(impl.IsosurfaceCells, vtkOpenGLBufferObject::ElementArrayBuffer);
+      impl.IsosurfaceCellsOnGpu = true;
+    }
+  }
+  impl.EnsureImages(window, width, height, targets);
+
+  // ---- The depth of what VTK drew so far (opaque geometry), from the current framebuffer.
+  if (!uv::CopySceneDepth(impl.SceneDepth, originX, originY, width, height) && !impl.WarnedMultisample)
+  {
+    vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
+    impl.WarnedMultisample = true;
+  }
+
+  // ---- Programs.
+  std::string defines = uv::TransferFunctionDefines(impl.Nodes) + "#define UV_SLICES " +
+    std::to_string(slicesPerShell + 1) + "\n#define UV_TARGETS " + std::to_string(targets) + "\n";
+  if (needGradients)
+    defines += "#define UV_GRADIENTS\n";
+  const std::initializer_list<std::pair<const char*, const char*>> libraries = {
+    { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
+    { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib }
+  };
+  const std::string cellVertex = uv::ShaderSource(uvPreIntegratedTetrahedraVS, defines);
+  const std::string cellGeometry = uv::ShaderSource(uvBarycentricShellGS, defines);
+  const std::string screenVertex = uv::ShaderSource(uvFullScreenTriangleVS, defines);
+  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  auto ready = [&](const std::string& vertex, const char* fragment, const std::string& geometry) {
+    const std::string fragmentSource = uv::ShaderSource(fragment, defines, libraries);
+    return cache->ReadyShaderProgram(vertex.c_str(), fragmentSource.c_str(), geometry.c_str());
+  };
+  const glm::mat4 clipToEye(glm::inverse(eyeToClip));
+  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
+  const glm::mat3 normals(glm::transpose(glm::inverse(glm::dmat3(modelToEye))));
+  // Uniforms every program over the tetrahedra takes (geometry stage and uvBarycentricRayLib).
+  auto setCellUniforms = [&](vtkShaderProgram* program) {
+    const glm::mat4 toEye(modelToEye), toClip(eyeToClip);
+    program->SetUniformMatrix4x4("modelToEye", const_cast<float*>(glm::value_ptr(toEye)));
+    program->SetUniformMatrix4x4("eyeToClip", const_cast<float*>(glm::value_ptr(toClip)));
+    program->SetUniformMatrix4x4("clipToEye", const_cast<float*>(glm::value_ptr(clipToEye)));
+    program->SetUniform2f("viewportSize", viewport);
+    program->SetUniformi("parallelProjection", parallel ? 1 : 0);
+    program->SetUniformi("tetrahedronPoints", impl.TetrahedronTexture->GetTextureUnit());
+    program->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
+    program->SetUniformi("opaqueDepth", impl.SceneDepth->GetTextureUnit());
+    program->SetUniformf("insideTolerance", InsideTolerance);
+    if (needGradients)
+    {
+      program->SetUniformi("pointGradients", impl.GradientTexture->GetTextureUnit());
+      program->SetUniformMatrix3x3("modelToEyeNormals", const_cast<float*>(glm::value_ptr(normals)));
+    }
+  };
+  auto setIntegrationUniforms = [&](vtkShaderProgram* program, int isosurfaceCount) {
+    uv::SetTransferFunctionUniforms(program, impl.Nodes, impl.TransferTexture, impl.PsiTexture);
+    program->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
+    program->SetUniformi("isosurfaceCount", isosurfaceCount);
+    program->SetUniformi("averageScalar", 0);
+    program->SetUniformi("shadeVolume", shade ? 1 : 0);
+    uv::SetPhongUniforms(program, renderer, property, worldToEye);
+  };
+
+  // ---- Render into the float image.
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunctionSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFunctionSaver(state);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+
+  std::vector<vtkTextureObject*> common = { impl.TetrahedronTexture, impl.PointTexture, impl.TransferTexture,
+    impl.IsosurfaceTexture, impl.PsiTexture, impl.SceneDepth };
+  if (needGradients)
+    common.push_back(impl.GradientTexture);
+  for (vtkTextureObject* texture : common)
+    texture->Activate();
+
+  impl.AccumulationFramebuffer->SaveCurrentBindingsAndBuffers();
+  impl.AccumulationFramebuffer->Bind();
+  impl.AccumulationFramebuffer->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT); // the image, and the mask: nothing opaque yet
+  bool failed = false;
+  impl.NoAttributes->Bind();
+
+  if (cellProjection)
+  {
+    vtkShaderProgram* program = ready(cellVertex, uvBarycentricCellProjectionFS, cellGeometry);
+    if (program)
+    {
+      setCellUniforms(program);
+      setIntegrationUniforms(program, static_cast<int>(isovalues.size()));
+      state->vtkglDisable(GL_DEPTH_TEST);
+      state->vtkglDepthMask(GL_FALSE);
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+      impl.OrderBuffer->Bind();
+      glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.Order.size()), GL_UNSIGNED_INT, nullptr);
+      impl.OrderBuffer->Release();
+      impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.size());
+    }
+    failed = !program;
+  }
+  else
+  {
+    // Isosurfaces first: each pixel's nearest hit, its colour and distance.
+    const bool isosurfaces = !impl.IsosurfaceCells.empty();
+    if (isosurfaces)
+    {
+      vtkShaderProgram* program = ready(cellVertex, uvBarycentricShellIsosurfaceFS, cellGeometry);
+      failed = !program;
+      if (program)
+      {
+        impl.IsosurfaceFramebuffer->Bind();
+        impl.IsosurfaceFramebuffer->ActivateDrawBuffers(2);
+        const float noColor[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, noHit[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
+        glClearBufferfv(GL_COLOR, 0, noColor);
+        glClearBufferfv(GL_COLOR, 1, noHit);
+        state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+        state->vtkglEnable(GL_DEPTH_TEST);
+        state->vtkglDepthFunc(GL_LESS);
+        state->vtkglDepthMask(GL_TRUE);
+        state->vtkglDisable(GL_BLEND);
+        setCellUniforms(program);
+        program->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
+        program->SetUniformi("isosurfaceCount", static_cast<int>(isovalues.size()));
+        uv::SetPhongUniforms(program, renderer, property, worldToEye);
+        impl.IsosurfaceCellBuffer->Bind();
+        glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.IsosurfaceCells.size()), GL_UNSIGNED_INT, nullptr);
+        impl.IsosurfaceCellBuffer->Release();
+        impl.DrawnTetrahedra += static_cast<vtkIdType>(impl.IsosurfaceCells.size());
+      }
+    }
+    vtkShaderProgram* slice = failed ? nullptr : ready(cellVertex, uvBarycentricShellSliceFS, cellGeometry);
+    vtkShaderProgram* blend = slice ? ready(screenVertex, uvBarycentricShellBlendFS, "") : nullptr;
+    vtkShaderProgram* mask = blend ? ready(screenVertex, uvBarycentricShellMaskFS, "") : nullptr;
+    failed = !mask;
+    if (!failed)
+    {
+      cache->ReadyShaderProgram(slice); // uniforms go to the bound program
+      setCellUniforms(slice);
+      slice->SetUniformf("sampleDistance", static_cast<float>(sampleDistance));
+      cache->ReadyShaderProgram(blend);
+      setIntegrationUniforms(blend, 0); // isosurfaces come from their own pass
+      blend->SetUniformf("sampleDistance", static_cast<float>(sampleDistance));
+      blend->SetUniformi("drawIsosurfaces", isosurfaces ? 1 : 0);
+      impl.IsosurfaceColor->Activate();
+      impl.IsosurfaceDistance->Activate();
+      blend->SetUniformi("isosurfaceColor", impl.IsosurfaceColor->GetTextureUnit());
+      blend->SetUniformi("isosurfaceDistance", impl.IsosurfaceDistance->GetTextureUnit());
+      const bool terminateEarly = this->OpacityThreshold < 1.0;
+      if (terminateEarly)
+      {
+        cache->ReadyShaderProgram(mask);
+        mask->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
+      }
+      state->vtkglEnable(GL_DEPTH_TEST);
+      state->vtkglDepthFunc(GL_LESS);
+      impl.ShellBuffer->Bind();
+      for (int s = 0; s < shellCount; ++s)
+      {
+        const std::uint32_t first = impl.ShellOffsets[s], count = impl.ShellOffsets[s + 1] - first;
+        if (count == 0 && !(isosurfaces && impl.ShellHasIsosurface[s]))
+        {
+          ++impl.SkippedShells; // nothing overlaps it
+          continue;
+        }
+        ++impl.Shells;
+        state->vtkglDepthMask(GL_FALSE); // the mask is only read, except by the mask pass
+        const float shellStart = static_cast<float>(firstDistance + s * slicesPerShell * sampleDistance);
+        // Slices: cleared to "outside", then every overlapping cell's samples, MAX-blended.
+        impl.SliceFramebuffer->Bind();
+        impl.SliceFramebuffer->ActivateDrawBuffers(static_cast<unsigned int>(targets));
+        state->vtkglClear(GL_COLOR_BUFFER_BIT);
+        if (count > 0)
+        {
+          cache->ReadyShaderProgram(slice);
+          slice->SetUniformf("shellStart", shellStart);
+          state->vtkglEnable(GL_BLEND);
+          state->vtkglBlendEquation(GL_MAX);
+          glDrawElements(GL_POINTS, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(std::uint32_t)));
+          state->vtkglBlendEquation(GL_FUNC_ADD);
+          impl.DrawnTetrahedra += count;
+        }
+        // Blend: the shell's samples integrated, under what nearer shells left.
+        impl.AccumulationFramebuffer->Bind();
+        impl.AccumulationFramebuffer->ActivateDrawBuffers(1);
+        cache->ReadyShaderProgram(blend);
+        blend->SetUniformf("shellStart", shellStart);
+        for (int t = 0; t < targets; ++t)
+        {
+          impl.Slices[t]->Activate();
+          blend->SetUniformi(("slices" + std::to_string(t)).c_str(), impl.Slices[t]->GetTextureUnit());
+        }
+        state->vtkglEnable(GL_BLEND);
+        state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        for (int t = 0; t < targets; ++t)
+          impl.Slices[t]->Deactivate();
+        // Mask: pixels now opaque enough get depth 0, and later shells pass them by.
+        if (terminateEarly && s + 1 < shellCount)
+        {
+          impl.SliceFramebuffer->Bind();
+          impl.SliceFramebuffer->ActivateDrawBuffers(static_cast<unsigned int>(targets));
+          cache->ReadyShaderProgram(mask);
+          impl.Accumulation->Activate();
+          mask->SetUniformi("accumulated", impl.Accumulation->GetTextureUnit());
+          state->vtkglDisable(GL_BLEND);
+          state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+          state->vtkglDepthMask(GL_TRUE);
+          state->vtkglDepthFunc(GL_ALWAYS);
+          glDrawArrays(GL_TRIANGLES, 0, 3);
+          state->vtkglDepthFunc(GL_LESS);
+          state->vtkglDepthMask(GL_FALSE);
+          state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+          impl.Accumulation->Deactivate();
+        }
+      }
+      impl.ShellBuffer->Release();
+      impl.IsosurfaceColor->Deactivate();
+      impl.IsosurfaceDistance->Deactivate();
+    }
+  }
+  impl.NoAttributes->Release();
+  for (vtkTextureObject* texture : common)
+    texture->Deactivate();
+
+  impl.AccumulationFramebuffer->Bind();
+  if (this->KeepFloatImage && !failed)
+  {
+    if (!impl.FloatImage)
+      impl.FloatImage = vtkSmartPointer<vtkImageData>::New();
+    impl.FloatImage->SetDimensions(width, height, 1);
+    impl.FloatImage->AllocateScalars(VTK_FLOAT, 4);
+    impl.AccumulationFramebuffer->ActivateReadBuffer(0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, impl.FloatImage->GetScalarPointer());
+    impl.FloatImage->GetPointData()->GetScalars()->Modified();
+  }
+  impl.AccumulationFramebuffer->RestorePreviousBindingsAndBuffers();
+  if (failed)
+  {
+    vtkErrorMacro("the barycentric shell shaders failed to compile or link");
+    return;
+  }
+
+  // ---- Blend the float image into VTK's scene.
+  state->vtkglDisable(GL_DEPTH_TEST);
+  if (!uv::CompositeIntoScene(window, impl.Accumulation, impl.NoAttributes, originX, originY, width, height))
+  {
+    vtkErrorMacro("the composite shaders failed to compile or link");
+    return;
+  }
+  vtkOpenGLCheckErrorMacro("failed after rendering the tetrahedra");
+}

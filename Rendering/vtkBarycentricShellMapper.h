@@ -1,0 +1,157 @@
+/**
+ * @class vtkBarycentricShellMapper
+ * @brief Tetrahedra sampled in barycentric coordinates on spherical shells; no preprocessing.
+ *
+ * After "A Generic and Scalable Pipeline for GPU Tetrahedral Grid Rendering" (Georgii and
+ * Westermann). Nothing is computed per tetrahedron ahead of a frame: a geometry shader fed one point
+ * per tetrahedron computes its eye-to-barycentric transform (only the eye's coordinates b_eye are
+ * needed) and emits its back faces with each vertex's coordinates and barycentric ray direction; a
+ * fragment then walks its ray inside the tetrahedron without leaving barycentric space
+ * (uvBarycentricShell.h is the math, unit-tested). A mesh whose points move every frame
+ * (vtkWarpVector, simulation output) therefore costs what a static one does: only the positions are
+ * refreshed and uploaded.
+ *
+ * Render modes:
+ * - SHELLS (default): the space in front of the eye is cut into spherical shells (planar slabs under
+ *   parallel projection) of SlicesPerShell sample distances each, processed front to back. For each
+ *   shell the tetrahedra overlapping it (bucketed on the CPU by their eye-distance range, every frame)
+ *   sample the shell's slices into float render targets (four slices each) blended with MAX, a slice
+ *   holding the scalar + 1 where it is inside the mesh and 0 outside; a full-screen pass then
+ *   integrates each pixel's samples front to back (the scalar linear between samples, each segment
+ *   pre-integrated exactly) and blends them under the image. Error falls with SampleDistance.
+ * - CELL_PROJECTION: every visible tetrahedron, sorted back to front, integrates its whole segment:
+ *   entry and exit points found in barycentric coordinates from the back face, integrated exactly as
+ *   vtkPreIntegratedTetrahedraMapper does (the same shader library). Needs the sort, not the shells.
+ *
+ * Isosurfaces (any number, colour and opacity each): in SHELLS mode a separate pass finds each
+ * pixel's nearest crossing in closed form per tetrahedron, depth-tested, Phong-lit with the vertex
+ * gradients interpolated at the hit, and the shells composite it at its exact distance (the volume
+ * behind a translucent surface continues; a second sheet behind the first is not drawn). In
+ * CELL_PROJECTION every crossing is drawn. Volume shading (vtkVolumeProperty::Shade) applies to
+ * CELL_PROJECTION only.
+ *
+ * Skipped work: tetrahedra the transfer function makes transparent (and holding no isovalue) are in
+ * no shell; shells nothing overlaps are skipped; between shells, pixels whose opacity reached
+ * OpacityThreshold are masked in the depth buffer so later shells neither sample nor blend them.
+ *
+ * Input, errors and opaque geometry as vtkPreIntegratedTetrahedraMapper: tetrahedra with a point
+ * scalar (first component); other linear cells split once with a warning; NaN tetrahedra left out.
+ */
+#ifndef vtkBarycentricShellMapper_h
+#define vtkBarycentricShellMapper_h
+
+#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkUnstructuredVolumeModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkImageData;
+
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkBarycentricShellMapper : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  static vtkBarycentricShellMapper* New();
+  vtkTypeMacro(vtkBarycentricShellMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum RenderModes
+  {
+    SHELLS = 0,
+    CELL_PROJECTION = 1
+  };
+  ///@{
+  vtkSetClampMacro(RenderMode, int, SHELLS, CELL_PROJECTION);
+  vtkGetMacro(RenderMode, int);
+  void SetRenderModeToShells() { this->SetRenderMode(SHELLS); }
+  void SetRenderModeToCellProjection() { this->SetRenderMode(CELL_PROJECTION); }
+  ///@}
+
+  ///@{
+  /// Distance between samples along a ray in SHELLS mode, in world units. 0 (default): automatic,
+  /// AutomaticSamplesAcross samples across the mesh's bounding box diagonal.
+  vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SampleDistance, double);
+  vtkSetClampMacro(AutomaticSamplesAcross, int, 2, 100000);
+  vtkGetMacro(AutomaticSamplesAcross, int);
+  ///@}
+
+  ///@{
+  /// Sample distances per shell (3 to 31, default 15): each shell writes SlicesPerShell + 1 slices
+  /// (its last is the next shell's first) into (SlicesPerShell + 4) / 4 float render targets. More
+  /// means fewer passes and fewer tetrahedra drawn twice, but more work per fragment.
+  vtkSetClampMacro(SlicesPerShell, int, 3, 31);
+  vtkGetMacro(SlicesPerShell, int);
+  ///@}
+
+  ///@{
+  /// Pixels stop being shaded once their opacity reaches this (default 0.99; 1 disables).
+  vtkSetClampMacro(OpacityThreshold, double, 0.0, 1.0);
+  vtkGetMacro(OpacityThreshold, double);
+  ///@}
+
+  ///@{
+  /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each.
+  void AddIsosurface(double value, double red, double green, double blue, double opacity);
+  void RemoveAllIsosurfaces();
+  int GetNumberOfIsosurfaces();
+  ///@}
+
+  ///@{
+  /// A point array of scalar gradients to light isosurfaces with; when the input has no array of
+  /// this name (default "Gradients"), vtkVertexGradientFilter computes one.
+  vtkSetStringMacro(GradientArrayName);
+  vtkGetStringMacro(GradientArrayName);
+  ///@}
+
+  ///@{
+  /// Leave out tetrahedra the transfer function makes invisible (default on).
+  vtkSetMacro(SkipInvisibleCells, bool);
+  vtkGetMacro(SkipInvisibleCells, bool);
+  vtkBooleanMacro(SkipInvisibleCells, bool);
+  ///@}
+
+  ///@{
+  /// Keep a copy of the last frame's premultiplied float RGBA image (tests, benchmark).
+  vtkSetMacro(KeepFloatImage, bool);
+  vtkGetMacro(KeepFloatImage, bool);
+  vtkImageData* GetFloatImage();
+  ///@}
+
+  ///@{
+  /// What the last frame did, for tests: shells processed and skipped (empty), tetrahedra drawn
+  /// summed over passes, the sample distance used; and since creation: full mesh builds, point-only
+  /// refreshes (deformation), GPU bytes of the mesh.
+  int GetNumberOfShells();
+  int GetNumberOfSkippedShells();
+  vtkIdType GetNumberOfDrawnTetrahedra();
+  double GetLastSampleDistance();
+  int GetNumberOfMeshBuilds();
+  int GetNumberOfPointRefreshes();
+  vtkIdType GetMeshMemoryInBytes();
+  ///@}
+
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkBarycentricShellMapper();
+  ~vtkBarycentricShellMapper() override;
+
+  int RenderMode = SHELLS;
+  double SampleDistance = 0.0;
+  int AutomaticSamplesAcross = 256;
+  int SlicesPerShell = 15;
+  double OpacityThreshold = 0.99;
+  char* GradientArrayName = nullptr;
+  bool SkipInvisibleCells = true;
+  bool KeepFloatImage = false;
+
+private:
+  vtkBarycentricShellMapper(const vtkBarycentricShellMapper&) = delete;
+  void operator=(const vtkBarycentricShellMapper&) = delete;
+
+  class Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif

@@ -1,0 +1,61 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+// vtkBarycentricShellMapper, isosurface stage: per back-face fragment, the distance where the ray
+// crosses each isovalue in this tetrahedron (closed form in barycentric coordinates, uvBarycentricShell.h
+// IsovalueDistanceFromFace), kept when inside the tetrahedron and in front of opaque geometry; the
+// nearest is written with its depth, so the depth test leaves each pixel's nearest hit of any
+// tetrahedron. Lit (Phong) with the vertex gradients interpolated at the hit: target 0 the
+// premultiplied colour, target 1 the hit's distance (the blending stage composites it in place).
+//UV::BarycentricRay
+
+uniform sampler2D isosurfaces;      // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
+uniform int isosurfaceCount;
+uniform usamplerBuffer tetrahedronPoints;
+uniform samplerBuffer pointGradients; // scalar gradient, model coordinates
+uniform mat3 modelToEyeNormals;
+uniform mat4 eyeToClip;
+uniform float insideTolerance;
+
+//UV::Phong
+
+void main()
+{
+  BarycentricRay ray = FragmentRay();
+  float slope = dot(cellScalars, ray.perUnit);
+  if (slope == 0.0)
+  {
+    discard;
+  }
+  float limit = OpaqueDistance();
+  float at = dot(cellScalars, ray.face);
+  float nearest = 3.0e38;
+  int which = -1;
+  for (int i = 0; i < isosurfaceCount; ++i)
+  {
+    float value = texelFetch(isosurfaces, ivec2(i, 1), 0).r;
+    float z = ray.length + (value - at) / slope;
+    if (z >= 0.0 && z < nearest && z <= limit &&
+      SmallestCoordinate(CoordinatesAt(ray, z)) >= -insideTolerance)
+    {
+      nearest = z;
+      which = i;
+    }
+  }
+  if (which < 0)
+  {
+    discard;
+  }
+  vec4 b = CoordinatesAt(ray, nearest);
+  uvec4 ids = texelFetch(tetrahedronPoints, cellId);
+  vec3 gradient = vec3(0.0);
+  for (int k = 0; k < 4; ++k)
+    gradient += b[k] * texelFetch(pointGradients, int(ids[k])).xyz;
+  vec3 point = EyePointAt(nearest);
+  vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-point);
+  vec4 surface = texelFetch(isosurfaces, ivec2(which, 0), 0);
+  vec3 lit = Light(surface.rgb, modelToEyeNormals * gradient, toEye);
+  vec4 clip = eyeToClip * vec4(point, 1.0);
+  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+  gl_FragData[0] = vec4(lit * surface.a, surface.a);
+  gl_FragData[1] = vec4(nearest, 0.0, 0.0, 0.0);
+}

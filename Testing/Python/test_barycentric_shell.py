@@ -1,0 +1,452 @@
+"""vtkBarycentricShellMapper: accuracy against the reference renderer (shells: error falls with the
+sample distance; cell projection: exact), deformation, isosurfaces, image baselines, what it skips,
+bad input and stress cases. Run by ctest under Xvfb with /usr/bin/python3."""
+import math
+import os
+import sys
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import uvrender  # noqa: E402
+import test_preintegrated_tetrahedra as pt  # noqa: E402  (its test classes stay in their own module)
+from test_preintegrated_tetrahedra import (ML, STEINER, Scene, SceneTestCase, analytic, camera_for,  # noqa: E402
+                                           finite_image, reference, rmse, spike_property, vtkImageDataCopy)
+from test_hexahedral_ray_cast import transparent_property  # noqa: E402
+
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
+                                vtkVolumeImageErrorMetrics)
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints  # noqa: E402
+from vtkmodules.vtkCommonDataModel import VTK_QUADRATIC_TETRA, vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper  # noqa: E402
+
+SHELLS, CELL_PROJECTION = vtkBarycentricShellMapper.SHELLS, vtkBarycentricShellMapper.CELL_PROJECTION
+
+
+def shell_scene(mesh, prop, camera, size=128, props=(), **settings):
+    return Scene(mesh, prop, camera, size, props, mapper_class=vtkBarycentricShellMapper, **settings)
+
+
+def inside_camera():
+    camera = vtkCamera()
+    camera.SetPosition(0.05, -0.3, 0.1)
+    camera.SetFocalPoint(0.2, 1.0, 0.0)
+    camera.SetViewUp(0, 0, 1)
+    camera.SetViewAngle(60)
+    camera.SetClippingRange(0.01, 10)
+    return camera
+
+
+class AccuracyTests(SceneTestCase):
+    """Against the exact reference, on the float image before it is quantised into the window."""
+
+    def error(self, mesh, prop, camera, size=128, **settings):
+        scene = shell_scene(mesh, prop, camera, size, **settings)
+        image = scene.render()
+        self.assertEqual(scene.events.errors, 0)
+        self.assertEqual(scene.window_events.errors, 0)
+        self.assertTrue(finite_image(image))
+        return rmse(image, reference(mesh, prop, camera, size))[0], scene
+
+    def test_shell_error_falls_with_the_sample_distance(self):
+        mesh = analytic(12)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        camera = camera_for(mesh)
+        expected = reference(mesh, prop, camera, 128)
+        errors = []
+        for distance in (0.1, 0.05, 0.02, 0.01):
+            scene = shell_scene(mesh, prop, camera, SampleDistance=distance)
+            errors.append(rmse(scene.render(), expected)[0])
+            self.assertEqual(scene.events.errors, 0)
+        print("\n  RMSE at sample distance 0.1, 0.05, 0.02, 0.01: " + ", ".join(f"{e:.3g}" for e in errors), end="")
+        for coarse, fine in zip(errors, errors[1:]):
+            self.assertLess(fine, 0.8 * coarse)
+        self.assertLess(errors[-1], errors[0] / 5)
+        # Measured 1.1e-2 at 0.1 down to 1.2e-3 at 0.01 (first order: rays entering and leaving the mesh
+        # between two samples).
+        self.assertLess(errors[-1], 2e-3)
+
+    def test_default_sample_distance(self):
+        # Automatic: 256 samples across the bounding box diagonal. Measured 1.7e-3.
+        mesh = analytic(12)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        error, scene = self.error(mesh, prop, camera_for(mesh))
+        print(f"\n  RMSE {error:.3g} at sample distance {scene.mapper.GetLastSampleDistance():.3g}", end="")
+        self.assertAlmostEqual(scene.mapper.GetLastSampleDistance(), mesh.GetLength() / 256, 9)
+        self.assertLess(error, 3e-3)
+
+    def test_cell_projection_is_exact(self):
+        # The whole segment per tetrahedron, pre-integrated: measured 3.8e-7.
+        mesh = analytic(12)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        error, _ = self.error(mesh, prop, camera_for(mesh), RenderMode=CELL_PROJECTION)
+        self.assertLess(error, 1e-5)
+
+    def test_spike_transfer_function_parallel(self):
+        # A thin opaque spike: the samples' segments are pre-integrated across it, so sampling does
+        # not miss it.
+        mesh = analytic(7, STEINER, vtkAnalyticMeshSource.JITTER)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        prop = spike_property(low, high, 0.05)
+        camera = camera_for(mesh, 10, 40, parallel=True)
+        shells, _ = self.error(mesh, prop, camera)
+        projected, _ = self.error(mesh, prop, camera, RenderMode=CELL_PROJECTION)
+        print(f"\n  shells {shells:.3g}, cell projection {projected:.3g}", end="")
+        self.assertLess(shells, 1e-2)
+        self.assertLess(projected, 5e-5)
+
+    def test_camera_inside_the_mesh(self):
+        mesh = analytic(6)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        shells, _ = self.error(mesh, prop, inside_camera(), 96)
+        projected, _ = self.error(mesh, prop, inside_camera(), 96, RenderMode=CELL_PROJECTION)
+        print(f"\n  shells {shells:.3g}, cell projection {projected:.3g}", end="")
+        self.assertLess(shells, 1e-2)
+        self.assertLess(projected, 5e-3)
+
+
+
+class IsosurfaceTests(SceneTestCase):
+    def test_position_against_an_opaque_shell_in_the_reference(self):
+        # An unlit opaque isosurface is the limit of a thin, very opaque shell of the transfer function
+        # around the isovalue: the reference renders that shell. Only rays grazing the surface (its rim)
+        # may differ.
+        mesh = analytic(8, distortion=vtkAnalyticMeshSource.JITTER)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        value = low + 0.55 * (high - low)
+        color = (0.9, 0.6, 0.2)
+        camera = camera_for(mesh, 35, 20, distance=1.5)
+        shell = transparent_property(color)
+        opacity = shell.GetScalarOpacity()
+        opacity.RemoveAllPoints()
+        width = 1e-4 * (high - low)
+        for s, a in ((low, 0.0), (value - width, 0.0), (value - 0.5 * width, 0.999), (value + 0.5 * width, 0.999),
+                     (value + width, 0.0), (high, 0.0)):
+            opacity.AddPoint(s, a)
+        shell.SetScalarOpacityUnitDistance(1e-7 * mesh.GetLength())
+        expected = reference(mesh, shell, camera, 128)
+        for mode in (SHELLS, CELL_PROJECTION):
+            scene = shell_scene(mesh, transparent_property(color), camera, RenderMode=mode)
+            scene.mapper.AddIsosurface(value, *color, 1.0)
+            image = scene.render()
+            metrics = vtkVolumeImageErrorMetrics()
+            metrics.SetChannels(4)
+            self.assertTrue(metrics.Compare(image, expected))
+            print(f"\n  mode {mode}: RMSE {metrics.GetRMSE():.3g}, 99th percentile "
+                  f"{metrics.GetPercentile99Error():.3g}, {metrics.GetNumberOfCoveredPixels()} covered pixels", end="")
+            self.assertEqual(scene.events.errors, 0)
+            self.assertGreater(metrics.GetNumberOfCoveredPixels(), 1500)
+            self.assertLess(metrics.GetRMSE(), 0.03)
+            self.assertLess(metrics.GetPercentile99Error(), 1e-3)
+            # The volume is transparent everywhere: only the isosurface's cells are drawn.
+            self.assertLess(scene.mapper.GetNumberOfDrawnTetrahedra(), 0.5 * mesh.GetNumberOfCells())
+
+    def test_exact_phong_on_a_plane(self):
+        # A linear field of position: its isosurface is a plane, its vertex gradients exact, so under a
+        # parallel headlight every covered pixel has the same analytic Phong colour, in both modes.
+        mesh = analytic(4, distortion=vtkAnalyticMeshSource.JITTER)
+        gradient = (0.3, -0.5, 0.8)
+        values = vtkDoubleArray()
+        values.SetName("plane")
+        for i in range(mesh.GetNumberOfPoints()):
+            values.InsertNextValue(sum(g * x for g, x in zip(gradient, mesh.GetPoint(i))))
+        mesh.GetPointData().SetScalars(values)
+        camera = camera_for(mesh, 30, 25, parallel=True)
+        prop = transparent_property()
+        prop.SetAmbient(0.15)
+        prop.SetDiffuse(0.7)
+        prop.SetSpecular(0.3)
+        prop.SetSpecularPower(8)
+        color = (0.2, 0.6, 1.0)
+        view = camera.GetDirectionOfProjection()
+        norm = math.sqrt(sum(g * g for g in gradient))
+        lambert = abs(sum(g * v for g, v in zip(gradient, view))) / norm
+        highlight = max(2 * lambert * lambert - 1, 0.0) ** 8
+        expected = [c * (0.15 + 0.7 * lambert) + 0.3 * highlight for c in color]
+        for mode in (SHELLS, CELL_PROJECTION):
+            scene = shell_scene(mesh, prop, camera, RenderMode=mode)
+            scene.mapper.AddIsosurface(0.1, *color, 1.0)
+            rgba = scene.render().GetPointData().GetScalars()
+            covered, worst = 0, 0.0
+            for i in range(rgba.GetNumberOfTuples()):
+                pixel = rgba.GetTuple4(i)
+                if pixel[3] > 0.999:
+                    covered += 1
+                    worst = max(worst, max(abs(pixel[k] - expected[k]) for k in range(3)))
+            print(f"\n  mode {mode}: {covered} covered pixels, worst colour error {worst:.3g}", end="")
+            self.assertEqual(scene.events.errors, 0)
+            self.assertGreater(covered, 2000)
+            self.assertLess(worst, 2e-3)
+
+
+class DeformationTests(SceneTestCase):
+    def test_each_frame_of_a_deforming_mesh_matches_the_reference(self):
+        # A time-varying displacement moves the points in place each frame: the mapper refreshes
+        # positions only (no rebuild), and every frame is as accurate as a static mesh's.
+        import math
+        mesh = analytic(8)
+        rest = [mesh.GetPoint(i) for i in range(mesh.GetNumberOfPoints())]
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        camera = camera_for(mesh)
+        scene = shell_scene(mesh, prop, camera, 96)
+        points = mesh.GetPoints()
+        for frame in range(4):
+            t = 0.5 * frame
+            for i, (x, y, z) in enumerate(rest):
+                points.SetPoint(i, x + 0.08 * math.sin(3 * y + t), y + 0.05 * math.cos(2 * z - t), z)
+            points.Modified()
+            image = scene.render()
+            error = rmse(image, reference(mesh, prop, camera, 96))[0]
+            print(f"\n  frame {frame}: RMSE {error:.3g}", end="")
+            self.assertLess(error, 3e-3)
+        self.assertEqual(scene.mapper.GetNumberOfMeshBuilds(), 1)
+        self.assertEqual(scene.mapper.GetNumberOfPointRefreshes(), 3)
+        self.assertEqual(scene.events.errors, 0)
+
+
+class ShellBaselineTests(pt.BaselineTests):
+    def scene(self, mesh, prop, camera, size=256, props=(), **settings):
+        return super().scene(mesh, prop, camera, size, props, mapper_class=vtkBarycentricShellMapper, **settings)
+
+    def test_default_dataset(self):
+        mesh = analytic(16, ML, vtkAnalyticMeshSource.TWIST)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        scene = self.scene(mesh, prop, camera_for(mesh, distance=1.7))
+        self.compare(scene.window, "barycentric_shells_twisted_perspective.png")
+
+    def test_cell_projection(self):
+        # Shaded volume (cell projection lights it with the vertex gradients) and a translucent
+        # isosurface, every crossing of which is drawn in this mode.
+        mesh = analytic(10, ML, vtkAnalyticMeshSource.JITTER)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        prop = uvrender.volume_property((low, high))
+        prop.ShadeOn()
+        prop.SetSpecular(0.3)
+        prop.SetSpecularPower(16)
+        scene = Scene(mesh, prop, camera_for(mesh, 20, 30), 256, mapper_class=vtkBarycentricShellMapper,
+                      RenderMode=CELL_PROJECTION)
+        scene.mapper.AddIsosurface(low + 0.4 * (high - low), 0.3, 0.9, 0.5, 0.35)
+        scene.renderer.SetBackground(0.1, 0.1, 0.12)
+        scene.mapper.SetKeepFloatImage(False)
+        scene.render()
+        self.assertEqual(scene.events.errors, 0)
+        self.compare(scene.window, "barycentric_cell_projection_shaded.png")
+
+    def test_isosurfaces_opaque_sphere_parallel(self):
+        mesh = analytic(10)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        prop = uvrender.volume_property((low, high))
+        prop.SetAmbient(0.2)
+        prop.SetDiffuse(0.7)
+        prop.SetSpecular(0.4)
+        prop.SetSpecularPower(20)
+        sphere = vtkSphereSource()
+        sphere.SetRadius(0.45)
+        sphere.SetCenter(0.4, -0.4, 0.3)
+        sphere.SetThetaResolution(32)
+        sphere.SetPhiResolution(32)
+        sphere_mapper = vtkPolyDataMapper()
+        sphere_mapper.SetInputConnection(sphere.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(sphere_mapper)
+        actor.GetProperty().SetColor(0.8, 0.8, 0.3)
+        scene = shell_scene(mesh, prop, camera_for(mesh, parallel=True), 256, (actor,))
+        scene.mapper.AddIsosurface(low + 0.3 * (high - low), 0.2, 0.5, 1.0, 0.6)
+        scene.mapper.AddIsosurface(low + 0.75 * (high - low), 1.0, 0.4, 0.2, 1.0)
+        scene.renderer.SetBackground(0.1, 0.1, 0.12)
+        scene.mapper.SetKeepFloatImage(False)
+        scene.render()
+        self.assertEqual(scene.events.errors, 0)
+        self.compare(scene.window, "barycentric_shells_isosurfaces_opaque_parallel.png")
+
+    def test_super_phoenix(self):
+        mesh = self.legacy(os.path.join("spx", "spx.vtk"), None)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        prop.SetScalarOpacityUnitDistance(0.05 * mesh.GetLength())
+        scene = self.scene(mesh, prop, camera_for(mesh, 40, 20, distance=2.4))
+        self.compare(scene.window, "barycentric_shells_spx_perspective.png")
+
+    test_lox_post_isosurface = None  # the tetrahedra mapper's scenes, not repeated here
+
+
+class SkippingTests(SceneTestCase):
+    def test_invisible_cells_are_in_no_shell(self):
+        mesh = analytic(10)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        prop = uvrender.volume_property((low, high))
+        # Zero opacity over the lower 70%: those tetrahedra are in no shell, and the image is the same
+        # as when they are drawn.
+        opacity = prop.GetScalarOpacity()
+        opacity.RemoveAllPoints()
+        opacity.AddPoint(low + 0.7 * (high - low), 0.0)
+        opacity.AddPoint(high, 0.8)
+        scene = shell_scene(mesh, prop, camera_for(mesh), 96)
+        skipped = vtkImageDataCopy(scene.render())
+        drawn_visible = scene.mapper.GetNumberOfDrawnTetrahedra()
+        scene.mapper.SkipInvisibleCellsOff()
+        everything = scene.render()
+        print(f"\n  tetrahedra drawn {drawn_visible} of {scene.mapper.GetNumberOfDrawnTetrahedra()}", end="")
+        self.assertLess(drawn_visible, 0.6 * scene.mapper.GetNumberOfDrawnTetrahedra())
+        # Where a visible cell meets a skipped one, the samples in the skipped one read as outside: a
+        # half segment at the visible end instead of the pre-integrated whole (zero opacity there).
+        self.assertLess(rmse(everything, skipped)[0], 2e-3)
+        self.assertEqual(scene.events.errors, 0)
+
+    def test_empty_shells_between_two_blobs_are_skipped(self):
+        # Two small meshes far apart along the view: the shells between them hold nothing.
+        from vtkmodules.vtkFiltersCore import vtkAppendFilter
+        from vtkmodules.vtkCommonTransforms import vtkTransform
+        from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
+        near = analytic(4)
+        shift = vtkTransform()
+        shift.Translate(0, 20, 0)
+        far = vtkTransformFilter()
+        far.SetInputData(analytic(4))
+        far.SetTransform(shift)
+        append = vtkAppendFilter()
+        append.AddInputData(near)
+        append.AddInputConnection(far.GetOutputPort())
+        append.Update()
+        mesh = append.GetOutput()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        camera = camera_for(near, 0, 0)
+        camera.SetClippingRange(0.01, 100)
+        scene = shell_scene(mesh, prop, camera, 64, SampleDistance=0.05)
+        scene.render()
+        print(f"\n  shells drawn {scene.mapper.GetNumberOfShells()}, skipped {scene.mapper.GetNumberOfSkippedShells()}",
+              end="")
+        self.assertGreater(scene.mapper.GetNumberOfSkippedShells(), scene.mapper.GetNumberOfShells())
+        self.assertEqual(scene.events.errors, 0)
+
+    def test_early_ray_termination(self):
+        # Threshold 0: every pixel with any opacity is masked after its first shell, so less is drawn;
+        # 0.99 (default) stays within a hundredth of no termination at all.
+        mesh = analytic(10)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        prop = uvrender.volume_property((low, high))
+        prop.SetScalarOpacityUnitDistance(0.02)
+        camera = camera_for(mesh)
+        images = {}
+        for threshold in (0.0, 0.99, 1.0):
+            scene = shell_scene(mesh, prop, camera, 96, OpacityThreshold=threshold)
+            images[threshold] = vtkImageDataCopy(scene.render())
+            self.assertEqual(scene.events.errors, 0)
+        self.assertLess(rmse(images[0.99], images[1.0])[1], 0.011)
+        self.assertGreater(rmse(images[0.0], images[1.0])[1], 0.05)
+
+
+class InputTests(SceneTestCase):
+    def scene(self, mesh, prop=None, **settings):
+        prop = prop or uvrender.volume_property((0.0, 1.0))
+        return shell_scene(mesh, prop, camera_for(analytic(2)), 48, **settings)
+
+    def test_missing_and_cell_scalars_are_errors(self):
+        mesh = analytic(3)
+        no_scalars = vtkUnstructuredGrid()
+        no_scalars.CopyStructure(mesh)
+        scene = self.scene(no_scalars)
+        scene.render()
+        self.assertEqual(scene.events.errors, 1)
+        cells = vtkUnstructuredGrid()
+        cells.CopyStructure(mesh)
+        values = vtkDoubleArray()
+        values.SetNumberOfTuples(mesh.GetNumberOfCells())
+        values.Fill(0.5)
+        cells.GetCellData().SetScalars(values)
+        scene = self.scene(cells)
+        scene.mapper.SetScalarModeToUseCellData()
+        scene.render()
+        self.assertEqual(scene.events.errors, 1)
+
+    def test_empty_grid_draws_nothing_quietly(self):
+        scene = self.scene(vtkUnstructuredGrid())
+        scene.render()
+        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+
+    def test_quadratic_cells_are_an_error(self):
+        grid = vtkUnstructuredGrid()
+        points = vtkPoints()
+        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (.5, 0, 0), (.5, .5, 0), (0, .5, 0), (0, 0, .5),
+                  (.5, 0, .5), (0, .5, .5)):
+            points.InsertNextPoint(*p)
+        grid.SetPoints(points)
+        grid.InsertNextCell(VTK_QUADRATIC_TETRA, 10, list(range(10)))
+        values = vtkDoubleArray()
+        values.SetNumberOfTuples(10)
+        values.Fill(0.5)
+        grid.GetPointData().SetScalars(values)
+        scene = self.scene(grid)
+        scene.render()
+        self.assertGreaterEqual(scene.events.errors, 1)
+
+    def test_hexahedra_are_split_with_one_warning(self):
+        hexes = analytic(4, ML, 0, vtkAnalyticMeshSource.HEXAHEDRA)
+        scene = self.scene(hexes, uvrender.volume_property(hexes.GetPointData().GetScalars().GetRange()))
+        image = scene.render()
+        scene.render()
+        self.assertEqual((scene.events.errors, scene.events.warnings), (0, 1))
+        self.assertTrue(finite_image(image))
+
+    def test_nan_scalars_leave_out_their_tetrahedra(self):
+        mesh = analytic(4)
+        scalars = mesh.GetPointData().GetScalars()
+        scalars.SetValue(30, float("nan"))
+        for mode in (SHELLS, CELL_PROJECTION):
+            scene = self.scene(mesh, uvrender.volume_property(scalars.GetRange()), RenderMode=mode)
+            image = scene.render()
+            self.assertEqual(scene.events.errors, 0)
+            self.assertEqual(scene.events.warnings, 1)
+            self.assertTrue(finite_image(image))
+
+
+class StressTests(SceneTestCase):
+    def finite(self, mesh, prop, camera, size=96, **settings):
+        scene = shell_scene(mesh, prop, camera, size, **settings)
+        image = scene.render()
+        self.assertEqual(scene.events.errors, 0)
+        self.assertEqual(scene.window_events.errors, 0)
+        self.assertTrue(finite_image(image))
+        return image
+
+    def test_slivers_and_flat_tetrahedra(self):
+        mesh = analytic(5)
+        points = mesh.GetPoints()
+        for i in range(points.GetNumberOfPoints()):
+            x, y, z = points.GetPoint(i)
+            if abs(z - 0.2) < 1e-9:
+                points.SetPoint(i, x, y, 0.2 + 1e-7 * x)
+        points.SetPoint(40, *points.GetPoint(41))
+        points.Modified()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        for mode in (SHELLS, CELL_PROJECTION):
+            image = self.finite(mesh, prop, camera_for(mesh), RenderMode=mode)
+            self.assertLess(rmse(image, reference(mesh, prop, camera_for(mesh), 96))[0], 5e-3)
+
+    def test_edge_on_and_close_views_and_huge_offset(self):
+        mesh = analytic(4)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        for camera in (camera_for(mesh, 0, 0), camera_for(mesh, 0, 0, parallel=True),
+                       camera_for(mesh, 10, 5, distance=0.52)):
+            for mode in (SHELLS, CELL_PROJECTION):
+                self.finite(mesh, prop, camera, RenderMode=mode)
+        expected = self.finite(mesh, prop, camera_for(mesh))
+        points = mesh.GetPoints()
+        for i in range(points.GetNumberOfPoints()):
+            x, y, z = points.GetPoint(i)
+            points.SetPoint(i, x + 1e6, y - 1e6, z + 1e6)
+        points.Modified()
+        shifted = self.finite(mesh, prop, camera_for(mesh))
+        self.assertLess(rmse(shifted, expected)[0], 1e-3)
+
+    def test_tiny_sample_distance_is_widened_with_a_warning(self):
+        mesh = analytic(4)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        scene = shell_scene(mesh, prop, camera_for(mesh), 32, SampleDistance=1e-6)
+        image = scene.render()
+        self.assertEqual((scene.events.errors, scene.events.warnings), (0, 1))
+        self.assertGreater(scene.mapper.GetLastSampleDistance(), 1e-6)
+        self.assertTrue(finite_image(image))
+
+
+if __name__ == "__main__":
+    unittest.main()
