@@ -110,17 +110,18 @@ public:
   vtkNew<vtkOpenGLBufferObject> TetrahedronBuffer, PointBuffer, GradientBuffer, ShellBuffer, IsosurfaceCellBuffer,
     OrderBuffer;
   vtkNew<vtkTextureObject> TetrahedronTexture, PointTexture, GradientTexture, TransferTexture, IsosurfaceTexture,
-    PsiTexture, SceneDepth, MaskDepth, Accumulation, IsosurfaceColor, IsosurfaceDistance, IsosurfaceDepth;
+    PsiTexture, SceneDepth, MaskDepth, Accumulation, IsosurfaceColor, IsosurfaceDistance, IsosurfaceDepth,
+    PreviousLayer;
   std::array<vtkNew<vtkTextureObject>, MaximumTargets> Slices;
   vtkNew<vtkOpenGLFramebufferObject> SliceFramebuffer, AccumulationFramebuffer, IsosurfaceFramebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
   bool MeshOnGpu = false, PointsOnGpu = false, GradientsOnGpu = false, TransferFunctionOnGpu = false,
        IsosurfaceCellsOnGpu = false;
   int ImageSize[2] = { 0, 0 };
-  int AllocatedTargets = 0;
+  int AllocatedTargets = 0, AllocatedLayers = 0;
 
   vtkSmartPointer<vtkImageData> FloatImage;
-  int Shells = 0, SkippedShells = 0;
+  int Shells = 0, SkippedShells = 0, IsosurfaceLayers = 0;
   vtkIdType DrawnTetrahedra = 0;
   double LastSampleDistance = 0.0;
   bool WarnedSplit = false, WarnedNaN = false, WarnedMultisample = false, WarnedShells = false;
@@ -132,7 +133,8 @@ public:
       for (vtkTextureObject* texture : { this->TetrahedronTexture.Get(), this->PointTexture.Get(),
              this->GradientTexture.Get(), this->TransferTexture.Get(), this->IsosurfaceTexture.Get(),
              this->PsiTexture.Get(), this->SceneDepth.Get(), this->MaskDepth.Get(), this->Accumulation.Get(),
-             this->IsosurfaceColor.Get(), this->IsosurfaceDistance.Get(), this->IsosurfaceDepth.Get() })
+             this->IsosurfaceColor.Get(), this->IsosurfaceDistance.Get(), this->IsosurfaceDepth.Get(),
+             this->PreviousLayer.Get() })
       {
         texture->ReleaseGraphicsResources(this->Context);
       }
@@ -156,7 +158,7 @@ public:
     this->IsosurfaceCellsOnGpu = false;
     this->UploadedIsosurfaceTime = 0;
     this->ImageSize[0] = this->ImageSize[1] = 0;
-    this->AllocatedTargets = 0;
+    this->AllocatedTargets = this->AllocatedLayers = 0;
   }
 
   /// Rebuilds the three cell lists when the mesh, the zero-extinction set or the isovalues changed.
@@ -202,9 +204,10 @@ public:
   }
 
   /// (Re)creates the screen-sized textures and the framebuffers around them.
-  void EnsureImages(vtkOpenGLRenderWindow* window, int width, int height, int targets)
+  void EnsureImages(vtkOpenGLRenderWindow* window, int width, int height, int targets, int layers)
   {
-    if (this->ImageSize[0] == width && this->ImageSize[1] == height && this->AllocatedTargets == targets)
+    if (this->ImageSize[0] == width && this->ImageSize[1] == height && this->AllocatedTargets == targets &&
+      this->AllocatedLayers == layers)
     {
       return;
     }
@@ -220,8 +223,16 @@ public:
       depth->AllocateDepth(width, height, vtkTextureObject::Float32);
     }
     floatImage(this->Accumulation, 4);
-    floatImage(this->IsosurfaceColor, 4);
-    floatImage(this->IsosurfaceDistance, 1);
+    floatImage(this->PreviousLayer, 1);
+    for (auto [texture, components] : { std::make_pair(this->IsosurfaceColor.Get(), 4),
+           std::make_pair(this->IsosurfaceDistance.Get(), 1) })
+    {
+      // One layer per isosurface peel.
+      texture->SetContext(window);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->Allocate3D(width, height, layers, components, VTK_FLOAT);
+    }
     for (int t = 0; t < targets; ++t)
       floatImage(this->Slices[t], 4);
 
@@ -242,10 +253,11 @@ public:
       slices.push_back(this->Slices[t]);
     assemble(this->SliceFramebuffer, slices, this->MaskDepth);
     assemble(this->AccumulationFramebuffer, { this->Accumulation }, this->MaskDepth);
-    assemble(this->IsosurfaceFramebuffer, { this->IsosurfaceColor, this->IsosurfaceDistance }, this->IsosurfaceDepth);
+    this->IsosurfaceFramebuffer->SetContext(window); // its layers are attached pass by pass
     this->ImageSize[0] = width;
     this->ImageSize[1] = height;
     this->AllocatedTargets = targets;
+    this->AllocatedLayers = layers;
   }
 };
 
@@ -289,6 +301,10 @@ vtkImageData* vtkBarycentricShellMapper::GetFloatImage()
 int vtkBarycentricShellMapper::GetNumberOfShells()
 {
   return this->Impl->Shells;
+}
+int vtkBarycentricShellMapper::GetNumberOfDrawnIsosurfaceLayers()
+{
+  return this->Impl->IsosurfaceLayers;
 }
 int vtkBarycentricShellMapper::GetNumberOfSkippedShells()
 {
@@ -334,6 +350,7 @@ void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticSamplesAcross: " << this->AutomaticSamplesAcross << "\n";
   os << indent << "SlicesPerShell: " << this->SlicesPerShell << "\n";
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
+  os << indent << "IsosurfaceLayers: " << this->IsosurfaceLayers << "\n";
   os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.Size() << "\n";
   os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
@@ -343,7 +360,7 @@ void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
 void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   Internals& impl = *this->Impl;
-  impl.Shells = impl.SkippedShells = 0;
+  impl.Shells = impl.SkippedShells = impl.IsosurfaceLayers = 0;
   impl.DrawnTetrahedra = 0;
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkUnstructuredGridBase* input = this->GetInput();
@@ -538,11 +555,10 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     {
       return;
     }
-    firstDistance = nearest;
     double thickness = slicesPerShell * sampleDistance;
-    if ((farthest - nearest) / thickness > MaximumShells)
+    if ((farthest - nearest) / thickness > MaximumShells - 1)
     {
-      thickness = (farthest - nearest) / MaximumShells;
+      thickness = (farthest - nearest) / (MaximumShells - 1);
       sampleDistance = thickness / slicesPerShell;
       if (!impl.WarnedShells)
       {
@@ -551,7 +567,10 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
         impl.WarnedShells = true;
       }
     }
-    shellCount = std::max(1, static_cast<int>(std::ceil((farthest - nearest) / thickness)));
+    // Samples at whole multiples of the sample distance from the eye: the same places whatever the
+    // nearest cell, so frames (and ranks of a parallel render, each with its own piece) agree.
+    firstDistance = std::floor(nearest / sampleDistance) * sampleDistance;
+    shellCount = std::max(1, static_cast<int>(std::ceil((farthest - firstDistance) / thickness)));
     auto shellOf = [&](float d) {
       return std::clamp(static_cast<int>(std::floor((d - firstDistance) / thickness)), 0, shellCount - 1);
     };
@@ -663,7 +682,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       impl.IsosurfaceCellsOnGpu = true;
     }
   }
-  impl.EnsureImages(window, width, height, targets);
+  const int layers = this->IsosurfaceLayers;
+  impl.EnsureImages(window, width, height, targets, layers);
 
   // ---- The depth of what VTK drew so far (opaque geometry), from the current framebuffer.
   if (!uv::CopySceneDepth(impl.SceneDepth, originX, originY, width, height) && !impl.WarnedMultisample)
@@ -674,7 +694,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // ---- Programs.
   std::string defines = uv::TransferFunctionDefines(impl.Nodes) + "#define UV_SLICES " +
-    std::to_string(slicesPerShell + 1) + "\n#define UV_TARGETS " + std::to_string(targets) + "\n";
+    std::to_string(slicesPerShell + 1) + "\n#define UV_TARGETS " + std::to_string(targets) +
+    "\n#define UV_MAX_LAYERS " + std::to_string(layers) + "\n";
   if (needGradients)
     defines += "#define UV_GRADIENTS\n";
   const std::initializer_list<std::pair<const char*, const char*>> libraries = {
@@ -772,32 +793,65 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   else
   {
-    // Isosurfaces first: each pixel's nearest hit, its colour and distance.
+    // Isosurfaces first: each pixel's crossings, nearest first, one layer per pass (depth peeling),
+    // until a pass finds none or IsosurfaceLayers are drawn.
     const bool isosurfaces = !impl.IsosurfaceCells.empty();
+    int drawnLayers = 0;
     if (isosurfaces)
     {
       vtkShaderProgram* program = ready(cellVertex, uvBarycentricShellIsosurfaceFS, cellGeometry);
       failed = !program;
       if (program)
       {
-        impl.IsosurfaceFramebuffer->Bind();
-        impl.IsosurfaceFramebuffer->ActivateDrawBuffers(2);
-        const float noColor[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, noHit[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
-        glClearBufferfv(GL_COLOR, 0, noColor);
-        glClearBufferfv(GL_COLOR, 1, noHit);
-        state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-        state->vtkglEnable(GL_DEPTH_TEST);
-        state->vtkglDepthFunc(GL_LESS);
-        state->vtkglDepthMask(GL_TRUE);
-        state->vtkglDisable(GL_BLEND);
         setCellUniforms(program);
         program->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
         program->SetUniformi("isosurfaceCount", static_cast<int>(isovalues.size()));
         uv::SetPhongUniforms(program, renderer, property, worldToEye);
+        impl.PreviousLayer->Activate();
+        program->SetUniformi("previousLayer", impl.PreviousLayer->GetTextureUnit());
+        state->vtkglEnable(GL_DEPTH_TEST);
+        state->vtkglDepthFunc(GL_LESS);
+        state->vtkglDisable(GL_BLEND);
+        GLuint query = 0;
+        glGenQueries(1, &query);
         impl.IsosurfaceCellBuffer->Bind();
-        glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.IsosurfaceCells.size()), GL_UNSIGNED_INT, nullptr);
+        const float noColor[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, noHit[4] = { 3.0e38f, 0.0f, 0.0f, 0.0f };
+        for (int layer = 0; layer < layers; ++layer)
+        {
+          impl.IsosurfaceFramebuffer->Bind();
+          // Removed first: re-adding the same texture with another layer would keep the old layer.
+          impl.IsosurfaceFramebuffer->RemoveColorAttachments(2);
+          impl.IsosurfaceFramebuffer->AddColorAttachment(0, impl.IsosurfaceColor, layer);
+          impl.IsosurfaceFramebuffer->AddColorAttachment(1, impl.IsosurfaceDistance, layer);
+          impl.IsosurfaceFramebuffer->AddDepthAttachment(impl.IsosurfaceDepth);
+          impl.IsosurfaceFramebuffer->ActivateDrawBuffers(2);
+          glClearBufferfv(GL_COLOR, 0, noColor);
+          glClearBufferfv(GL_COLOR, 1, noHit);
+          state->vtkglDepthMask(GL_TRUE);
+          state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+          program->SetUniformi("layer", layer);
+          glBeginQuery(GL_SAMPLES_PASSED, query);
+          glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.IsosurfaceCells.size()), GL_UNSIGNED_INT, nullptr);
+          glEndQuery(GL_SAMPLES_PASSED);
+          impl.DrawnTetrahedra += static_cast<vtkIdType>(impl.IsosurfaceCells.size());
+          GLuint samples = 0;
+          glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+          if (samples == 0)
+          {
+            break; // no pixel has another crossing
+          }
+          ++drawnLayers;
+          if (layer + 1 < layers)
+          {
+            // The next pass starts beyond this layer's hits.
+            impl.IsosurfaceFramebuffer->ActivateReadBuffer(1);
+            impl.PreviousLayer->CopyFromFrameBuffer(0, 0, 0, 0, width, height);
+          }
+        }
         impl.IsosurfaceCellBuffer->Release();
-        impl.DrawnTetrahedra += static_cast<vtkIdType>(impl.IsosurfaceCells.size());
+        glDeleteQueries(1, &query);
+        impl.IsosurfaceLayers = drawnLayers;
+        impl.PreviousLayer->Deactivate();
       }
     }
     vtkShaderProgram* slice = failed ? nullptr : ready(cellVertex, uvBarycentricShellSliceFS, cellGeometry);
@@ -812,7 +866,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       cache->ReadyShaderProgram(blend);
       setIntegrationUniforms(blend, 0); // isosurfaces come from their own pass
       blend->SetUniformf("sampleDistance", static_cast<float>(sampleDistance));
-      blend->SetUniformi("drawIsosurfaces", isosurfaces ? 1 : 0);
+      blend->SetUniformi("isosurfaceLayers", drawnLayers);
       impl.IsosurfaceColor->Activate();
       impl.IsosurfaceDistance->Activate();
       blend->SetUniformi("isosurfaceColor", impl.IsosurfaceColor->GetTextureUnit());

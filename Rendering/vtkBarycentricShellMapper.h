@@ -23,10 +23,10 @@
  *   entry and exit points found in barycentric coordinates from the back face, integrated exactly as
  *   vtkPreIntegratedTetrahedraMapper does (the same shader library). Needs the sort, not the shells.
  *
- * Isosurfaces (any number, colour and opacity each): in SHELLS mode a separate pass finds each
- * pixel's nearest crossing in closed form per tetrahedron, depth-tested, Phong-lit with the vertex
- * gradients interpolated at the hit, and the shells composite it at its exact distance (the volume
- * behind a translucent surface continues; a second sheet behind the first is not drawn). In
+ * Isosurfaces (any number, colour and opacity each): in SHELLS mode, passes over the tetrahedra that
+ * hold an isovalue find each pixel's crossings in closed form per tetrahedron, nearest first, one
+ * per pass (depth peeling, up to IsosurfaceLayers, stopping when a pass finds none), Phong-lit with
+ * the vertex gradients interpolated at the hit; the shells composite each at its exact distance. In
  * CELL_PROJECTION every crossing is drawn. Volume shading (vtkVolumeProperty::Shade) applies to
  * CELL_PROJECTION only.
  *
@@ -90,6 +90,13 @@ public:
   ///@}
 
   ///@{
+  /// SHELLS mode: how many isosurface crossings per pixel are drawn at most, nearest first (1 to 8,
+  /// default 4). Crossings beyond are left out (behind translucent surfaces only).
+  vtkSetClampMacro(IsosurfaceLayers, int, 1, 8);
+  vtkGetMacro(IsosurfaceLayers, int);
+  ///@}
+
+  ///@{
   /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each.
   void AddIsosurface(double value, double red, double green, double blue, double opacity);
   void RemoveAllIsosurfaces();
@@ -118,10 +125,12 @@ public:
   ///@}
 
   ///@{
-  /// What the last frame did, for tests: shells processed and skipped (empty), tetrahedra drawn
-  /// summed over passes, the sample distance used; and since creation: full mesh builds, point-only
-  /// refreshes (deformation), GPU bytes of the mesh.
+  /// What the last frame did, for tests: shells processed and skipped (empty), isosurface layers
+  /// drawn (passes that found a crossing), tetrahedra drawn summed over passes, the sample distance
+  /// used; and since creation: full mesh builds, point-only refreshes (deformation), GPU bytes of
+  /// the mesh.
   int GetNumberOfShells();
+  int GetNumberOfDrawnIsosurfaceLayers();
   int GetNumberOfSkippedShells();
   vtkIdType GetNumberOfDrawnTetrahedra();
   double GetLastSampleDistance();
@@ -142,6 +151,7 @@ protected:
   int AutomaticSamplesAcross = 256;
   int SlicesPerShell = 15;
   double OpacityThreshold = 0.99;
+  int IsosurfaceLayers = 4;
   char* GradientArrayName = nullptr;
   bool SkipInvisibleCells = true;
   bool KeepFloatImage = false;

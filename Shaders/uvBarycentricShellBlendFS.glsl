@@ -5,9 +5,9 @@
 // to back. Between two inside samples the scalar is taken as linear and the segment integrated with
 // the transfer function exactly (pre-integrated, uvSegmentIntegrationLib.glsl); a segment with one
 // inside end is counted as half a segment at that end's scalar (where the ray enters or leaves the
-// mesh between samples). The nearest isosurface hit of the pixel (uvBarycentricShellIsosurfaceFS.glsl)
-// is composited inside the segment that holds it. The result is blended under what earlier shells
-// left (front to back: ONE_MINUS_DST_ALPHA, ONE).
+// mesh between samples). The pixel's isosurface hits (uvBarycentricShellIsosurfaceFS.glsl, one layer
+// each, nearest first) are composited in place, inside the segments that hold them. The result is
+// blended under what earlier shells left (front to back: ONE_MINUS_DST_ALPHA, ONE).
 in vec2 texCoord;
 
 uniform sampler2D slices0;
@@ -32,9 +32,9 @@ uniform sampler2D slices6;
 #if UV_TARGETS > 7
 uniform sampler2D slices7;
 #endif
-uniform sampler2D isosurfaceColor;    // premultiplied, lit
-uniform sampler2D isosurfaceDistance; // r: distance of the hit, or a negative value for none
-uniform int drawIsosurfaces;
+uniform sampler3D isosurfaceColor;    // per layer: premultiplied, lit
+uniform sampler3D isosurfaceDistance; // per layer: r, the hit's distance (3e38: none)
+uniform int isosurfaceLayers;         // layers drawn (0: no isosurface)
 uniform float shellStart;
 uniform float sampleDistance;
 
@@ -79,46 +79,52 @@ void main()
 #if UV_TARGETS > 7
   slice[7] = texelFetch(slices7, pixel, 0);
 #endif
-  float hit = -1.0;
-  vec4 surface = vec4(0.0);
-  if (drawIsosurfaces == 1)
+  float hits[UV_MAX_LAYERS];
+  vec4 surfaces[UV_MAX_LAYERS];
+  int hitCount = 0;
+  for (int layer = 0; layer < isosurfaceLayers; ++layer)
   {
-    hit = texelFetch(isosurfaceDistance, pixel, 0).r;
-    surface = texelFetch(isosurfaceColor, pixel, 0);
+    float distance = texelFetch(isosurfaceDistance, ivec3(pixel, layer), 0).r;
+    // Hits before this shell were composited by an earlier one.
+    if (distance >= shellStart && distance < 1e37)
+    {
+      hits[hitCount] = distance;
+      surfaces[hitCount] = texelFetch(isosurfaceColor, ivec3(pixel, layer), 0);
+      ++hitCount;
+    }
   }
+  int hit = 0; // the next hit, in distance order
   const vec3 zero = vec3(0.0), toEye = vec3(0.0, 0.0, 1.0); // the volume is not lit here
   float previous = slice[0].x;
   for (int k = 0; k + 1 < UV_SLICES; ++k)
   {
     float next = slice[(k + 1) >> 2][(k + 1) & 3];
-    float near = shellStart + float(k) * sampleDistance;
+    float near = shellStart + float(k) * sampleDistance, far = near + sampleDistance;
     bool previousInside = previous > 0.5, nextInside = next > 0.5;
-    bool holdsHit = hit >= near && hit < near + sampleDistance;
     if (previousInside && nextInside)
     {
-      float a = previous - 1.0, b = next - 1.0;
-      if (holdsHit)
+      // The scalar linear between the samples; cut at each hit inside the segment.
+      float a = previous - 1.0, b = next - 1.0, from = 0.0;
+      for (; hit < hitCount && hits[hit] < far; ++hit)
       {
-        float f = (hit - near) / sampleDistance, middle = mix(a, b, f);
-        Add(IntegrateSegment(a, middle, zero, zero, f * sampleDistance, toEye));
-        Add(surface);
-        Add(IntegrateSegment(middle, b, zero, zero, (1.0 - f) * sampleDistance, toEye));
+        float to = clamp((hits[hit] - near) / sampleDistance, from, 1.0);
+        Add(IntegrateSegment(mix(a, b, from), mix(a, b, to), zero, zero, (to - from) * sampleDistance, toEye));
+        Add(surfaces[hit]);
+        from = to;
       }
-      else
-      {
-        Add(IntegrateSegment(a, b, zero, zero, sampleDistance, toEye));
-      }
+      Add(IntegrateSegment(mix(a, b, from), b, zero, zero, (1.0 - from) * sampleDistance, toEye));
     }
     else
     {
+      // Half a segment at the inside end's scalar; hits are composited before it when the ray enters
+      // here, after it when it leaves.
       float inside = previousInside ? previous - 1.0 : next - 1.0;
-      bool partial = previousInside || nextInside;
-      if (holdsHit && !previousInside)
-        Add(surface);
-      if (partial)
+      if (previousInside)
         Add(IntegrateSegment(inside, inside, zero, zero, 0.5 * sampleDistance, toEye));
-      if (holdsHit && previousInside)
-        Add(surface);
+      for (; hit < hitCount && hits[hit] < far; ++hit)
+        Add(surfaces[hit]);
+      if (nextInside)
+        Add(IntegrateSegment(inside, inside, zero, zero, 0.5 * sampleDistance, toEye));
     }
     previous = next;
   }

@@ -1,11 +1,13 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// vtkBarycentricShellMapper, isosurface stage: per back-face fragment, the distance where the ray
-// crosses each isovalue in this tetrahedron (closed form in barycentric coordinates, uvBarycentricShell.h
-// IsovalueDistanceFromFace), kept when inside the tetrahedron and in front of opaque geometry; the
-// nearest is written with its depth, so the depth test leaves each pixel's nearest hit of any
-// tetrahedron. Lit (Phong) with the vertex gradients interpolated at the hit: target 0 the
-// premultiplied colour, target 1 the hit's distance (the blending stage composites it in place).
+// vtkBarycentricShellMapper, isosurface stage (one pass per layer): per back-face fragment, the
+// distance where the ray crosses each isovalue in this tetrahedron (closed form in barycentric
+// coordinates, uvBarycentricShell.h IsovalueDistanceFromFace), kept when inside the tetrahedron, in
+// front of opaque geometry and beyond the previous layer's hit; the nearest is written with its depth,
+// so the depth test leaves each pixel's nearest such hit of any tetrahedron (depth peeling: layer k
+// holds the pixel's k-th crossing). Lit (Phong) with the vertex gradients interpolated at the hit:
+// target 0 the premultiplied colour, target 1 the hit's distance (the blending stage composites each
+// in place).
 //UV::BarycentricRay
 
 uniform sampler2D isosurfaces;      // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
@@ -15,6 +17,8 @@ uniform samplerBuffer pointGradients; // scalar gradient, model coordinates
 uniform mat3 modelToEyeNormals;
 uniform mat4 eyeToClip;
 uniform float insideTolerance;
+uniform int layer;
+uniform sampler2D previousLayer; // r: the previous layer's hit distance (layer > 0)
 
 //UV::Phong
 
@@ -30,11 +34,19 @@ void main()
   float at = dot(cellScalars, ray.face);
   float nearest = 3.0e38;
   int which = -1;
+  float after = -1.0;
+  if (layer > 0)
+  {
+    // Beyond the previous layer's hit, by a relative margin: a crossing on a face shared by two
+    // tetrahedra is found by both, a float rounding apart.
+    float previous = texelFetch(previousLayer, ivec2(gl_FragCoord.xy), 0).r;
+    after = previous + 1e-5 * max(previous, 1e-3);
+  }
   for (int i = 0; i < isosurfaceCount; ++i)
   {
     float value = texelFetch(isosurfaces, ivec2(i, 1), 0).r;
     float z = ray.length + (value - at) / slope;
-    if (z >= 0.0 && z < nearest && z <= limit &&
+    if (z >= 0.0 && z > after && z < nearest && z <= limit &&
       SmallestCoordinate(CoordinatesAt(ray, z)) >= -insideTolerance)
     {
       nearest = z;

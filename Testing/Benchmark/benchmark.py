@@ -27,8 +27,8 @@ import statistics
 import sys
 import time
 
-from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra, vtkHexahedralRayCastMapper,
-                                vtkPreIntegratedTetrahedraMapper,
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper, vtkHexahedraToTetrahedra,
+                                vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
                                 vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
@@ -72,6 +72,12 @@ MAPPERS = [
     # Accurate without early ray termination: what stopping at opacity 0.99 saves and costs.
     ("UV HexRayCast Accurate, no early stop", lambda: configured(vtkHexahedralRayCastMapper, OpacityThreshold=1.0),
      "hexahedra"),
+    # Barycentric shells from coarse to fine sampling (samples across the mesh's bounding box diagonal;
+    # 256 is the default), and the same pipeline's cell projection.
+    *[(f"UV BarycentricShells {n}", (lambda n=n: configured(vtkBarycentricShellMapper, AutomaticSamplesAcross=n)),
+       "tets") for n in (64, 128, 256, 512)],
+    ("UV BarycentricCellProjection", lambda: configured(vtkBarycentricShellMapper, RenderModeToCellProjection=None),
+     "tets"),
 ]
 
 

@@ -28,6 +28,7 @@ fi
 cat "$output/gui_entries.txt"
 grep -q "representation: Volume (Pre-integrated Tetrahedra)" "$output/gui_entries.txt" || exit 1
 grep -q "representation: Volume (Hexahedral Ray Cast)" "$output/gui_entries.txt" || exit 1
+grep -q "representation: Volume (Barycentric Shells)" "$output/gui_entries.txt" || exit 1
 grep -q "filter: HexahedraToTetrahedra in Unstructured Volume" "$output/gui_entries.txt" || exit 1
 [ -s "$output/paraview_gui.png" ] || { echo "no screenshot"; exit 1; }
 echo "paraview GUI OK: screenshot $output/paraview_gui.png"

@@ -1,12 +1,12 @@
 """The plugin's representations from pvbatch / pvpython (and mpiexec -np N pvbatch): select one
 ("preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray
-Cast)") on image data, check it is offered on unstructured, structured and multiblock data, drive it
+Cast)", "barycentric": "Volume (Barycentric Shells)") on image data, check it is offered on unstructured, structured and multiblock data, drive it
 with the colour map, opacity editor and the mapper's own properties, render, write the image and
 compare it with the baseline: vtkImageDifference's thresholded error at most <threshold>, and at
 most <fraction> of the pixels more than 2 levels off in some channel (the 2-rank run composites two
 halves with IceT).
 
-    pvbatch test_plugin_representation.py <plugin> <preintegrated|hexahedral> <output.png> \
+    pvbatch test_plugin_representation.py <plugin> <preintegrated|hexahedral|barycentric> <output.png> \
         [<baseline.png> <threshold> <fraction>]
 
 With UV_SERVER=host:port in the environment (pvpython only) it first connects to that pvserver and
@@ -29,6 +29,9 @@ ENTRY, SETTINGS = {
     "hexahedral": ("Volume (Hexahedral Ray Cast)",
                    {"HexahedralIsovalues": [200.0], "HexahedralIsosurfaceOpacity": 0.8,
                     "HexahedralIntegrationMode": "Accurate", "OpacityThreshold": 0.99}),
+    "barycentric": ("Volume (Barycentric Shells)",
+                    {"ShellIsovalues": [200.0], "ShellIsosurfaceOpacity": 0.8, "ShellRenderMode": "Shells",
+                     "AutomaticSamplesAcross": 256, "ShellOpacityThreshold": 0.99}),
 }[mapper]
 server = os.environ.get("UV_SERVER")
 if server:

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # pvserver on 2 MPI ranks, a pvpython client: the client selects the representation, the server
 # renders (ordered compositing), the client saves the image and compares it with the baseline.
-# Usage: test_pvserver.sh <mpiexec> "<mpiexec flags>" <pvpython> <plugin.so> <preintegrated|hexahedral>
+# Usage: test_pvserver.sh <mpiexec> "<mpiexec flags>" <pvpython> <plugin.so> <preintegrated|hexahedral|barycentric>
 #          <output.png> <baseline.png>
 set -uo pipefail
 mpiexec="$1"; flags="$2"; pvpython="$3"; plugin="$4"; mapper="$5"; output="$6"; baseline="$7"

@@ -1,0 +1,59 @@
+#include "vtkBarycentricShellRepresentation.h"
+
+#include "vtkBarycentricShellMapper.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkBarycentricShellRepresentation);
+
+vtkBarycentricShellRepresentation::vtkBarycentricShellRepresentation()
+{
+  this->PinMapper("Barycentric shells", this->ShellMapper);
+}
+
+vtkBarycentricShellRepresentation::~vtkBarycentricShellRepresentation() = default;
+
+void vtkBarycentricShellRepresentation::SetRenderMode(int mode)
+{
+  this->ShellMapper->SetRenderMode(mode);
+  this->MarkModified();
+}
+
+void vtkBarycentricShellRepresentation::SetSampleDistance(double distance)
+{
+  this->ShellMapper->SetSampleDistance(distance);
+  this->MarkModified();
+}
+
+void vtkBarycentricShellRepresentation::SetAutomaticSamplesAcross(int samples)
+{
+  this->ShellMapper->SetAutomaticSamplesAcross(samples);
+  this->MarkModified();
+}
+
+void vtkBarycentricShellRepresentation::SetSlicesPerShell(int slices)
+{
+  this->ShellMapper->SetSlicesPerShell(slices);
+  this->MarkModified();
+}
+
+void vtkBarycentricShellRepresentation::SetOpacityThreshold(double threshold)
+{
+  this->ShellMapper->SetOpacityThreshold(threshold);
+  this->MarkModified();
+}
+
+void vtkBarycentricShellRepresentation::SetSkipInvisibleCells(int skip)
+{
+  this->ShellMapper->SetSkipInvisibleCells(skip != 0);
+  this->MarkModified();
+}
+
+void vtkBarycentricShellRepresentation::ClearMapperIsosurfaces()
+{
+  this->ShellMapper->RemoveAllIsosurfaces();
+}
+
+void vtkBarycentricShellRepresentation::AddMapperIsosurface(double value, const double rgb[3], double opacity)
+{
+  this->ShellMapper->AddIsosurface(value, rgb[0], rgb[1], rgb[2], opacity);
+}
