@@ -3,13 +3,15 @@
 #include "uvBarycentricCellProjectionFS.h"
 #include "uvBarycentricRayLib.h"
 #include "uvBarycentricShellBlendFS.h"
+#include "uvBarycentricCellListVS.h"
+#include "uvBarycentricPullVS.h"
 #include "uvBarycentricShellGS.h"
+#include "uvBarycentricTetrahedronLib.h"
 #include "uvBarycentricShellIsosurfaceFS.h"
 #include "uvBarycentricShellMaskFS.h"
 #include "uvBarycentricShellSliceFS.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvMapperOpenGL.h"
-#include "uvPreIntegratedTetrahedraVS.h"
 #include "uvSegmentIntegrationLib.h"
 #include "uvTetrahedralMesh.h"
 #include "uvTransferFunctionFromVolumeProperty.h"
@@ -54,6 +56,19 @@ namespace
 constexpr int MaximumTargets = 8;    // slices: four per target (OpenGL 3.2 guarantees 8 draw buffers)
 constexpr int MaximumShells = 4096;  // beyond it the sample distance is widened (with a warning)
 constexpr float InsideTolerance = 1e-5f; // barycentric slack: no cracks between neighbours
+constexpr int PullChunk = 16384;         // tetrahedra per draw of the vertex-pulling route
+
+/// The four faces of tetrahedron q as vertices 4q + k, wound outwards when v1 - v0, v2 - v0, v3 - v0
+/// are positively oriented (so the rasteriser can cull front faces).
+std::vector<std::uint32_t> FaceIndexPattern(int tetrahedra)
+{
+  static const int faces[12] = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+  std::vector<std::uint32_t> indices(12 * static_cast<std::size_t>(tetrahedra));
+  for (int q = 0; q < tetrahedra; ++q)
+    for (int i = 0; i < 12; ++i)
+      indices[12 * q + i] = static_cast<std::uint32_t>(4 * q + faces[i]);
+  return indices;
+}
 
 /// The range of eye distances a tetrahedron covers (a lower bound and its maximum): under perspective,
 /// |x| >= x.u for the unit u towards the centroid, and x.u is smallest at a vertex; |x| is largest at
@@ -77,12 +92,38 @@ void DistanceRange(const std::array<glm::vec3, 4>& v, bool parallel, float& low,
   }
   low = std::max(low, 0.0f);
 }
+/// The pixels the box `bounds` (world) can cover: its corners projected, as x, y, width, height in a
+/// width x height viewport. The whole viewport when a corner is not in front of the eye.
+std::array<int, 4> ScreenRectangle(const double bounds[6], const glm::dmat4& worldToClip, int width, int height)
+{
+  double low[2] = { 1.0, 1.0 }, high[2] = { -1.0, -1.0 };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec4 clip =
+      worldToClip * glm::dvec4(bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + (corner >> 2)], 1.0);
+    if (!(clip.w > 1e-12))
+    {
+      return { 0, 0, width, height };
+    }
+    for (int axis = 0; axis < 2; ++axis)
+    {
+      low[axis] = std::min(low[axis], clip[axis] / clip.w);
+      high[axis] = std::max(high[axis], clip[axis] / clip.w);
+    }
+  }
+  const int x0 = std::clamp(static_cast<int>(std::floor((low[0] + 1.0) * 0.5 * width)) - 1, 0, width);
+  const int y0 = std::clamp(static_cast<int>(std::floor((low[1] + 1.0) * 0.5 * height)) - 1, 0, height);
+  const int x1 = std::clamp(static_cast<int>(std::ceil((high[0] + 1.0) * 0.5 * width)) + 1, 0, width);
+  const int y1 = std::clamp(static_cast<int>(std::ceil((high[1] + 1.0) * 0.5 * height)) + 1, 0, height);
+  return { x0, y0, x1 - x0, y1 - y0 };
+}
 } // namespace
 
 class vtkBarycentricShellMapper::Internals
 {
 public:
   uv::TetrahedralMesh Mesh;
+  std::vector<std::uint32_t> OrientedPoints; // Mesh.TetrahedronPoints, each positively oriented
 
   vtkMTimeType TransferFunctionTime = 0;
   std::string TransferFunctionMeshKey;
@@ -108,15 +149,15 @@ public:
   // GPU state, for one context.
   vtkOpenGLRenderWindow* Context = nullptr;
   vtkNew<vtkOpenGLBufferObject> TetrahedronBuffer, PointBuffer, GradientBuffer, ShellBuffer, IsosurfaceCellBuffer,
-    OrderBuffer;
+    OrderBuffer, FaceIndexBuffer;
   vtkNew<vtkTextureObject> TetrahedronTexture, PointTexture, GradientTexture, TransferTexture, IsosurfaceTexture,
     PsiTexture, SceneDepth, MaskDepth, Accumulation, IsosurfaceColor, IsosurfaceDistance, IsosurfaceDepth,
-    PreviousLayer;
+    PreviousLayer, ShellList, IsosurfaceList, OrderList;
   std::array<vtkNew<vtkTextureObject>, MaximumTargets> Slices;
   vtkNew<vtkOpenGLFramebufferObject> SliceFramebuffer, AccumulationFramebuffer, IsosurfaceFramebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
   bool MeshOnGpu = false, PointsOnGpu = false, GradientsOnGpu = false, TransferFunctionOnGpu = false,
-       IsosurfaceCellsOnGpu = false;
+       IsosurfaceCellsOnGpu = false, FaceIndicesOnGpu = false;
   int ImageSize[2] = { 0, 0 };
   int AllocatedTargets = 0, AllocatedLayers = 0;
 
@@ -134,7 +175,7 @@ public:
              this->GradientTexture.Get(), this->TransferTexture.Get(), this->IsosurfaceTexture.Get(),
              this->PsiTexture.Get(), this->SceneDepth.Get(), this->MaskDepth.Get(), this->Accumulation.Get(),
              this->IsosurfaceColor.Get(), this->IsosurfaceDistance.Get(), this->IsosurfaceDepth.Get(),
-             this->PreviousLayer.Get() })
+             this->PreviousLayer.Get(), this->ShellList.Get(), this->IsosurfaceList.Get(), this->OrderList.Get() })
       {
         texture->ReleaseGraphicsResources(this->Context);
       }
@@ -142,7 +183,7 @@ public:
         slice->ReleaseGraphicsResources(this->Context);
       for (vtkOpenGLBufferObject* buffer : { this->TetrahedronBuffer.Get(), this->PointBuffer.Get(),
              this->GradientBuffer.Get(), this->ShellBuffer.Get(), this->IsosurfaceCellBuffer.Get(),
-             this->OrderBuffer.Get() })
+             this->OrderBuffer.Get(), this->FaceIndexBuffer.Get() })
       {
         buffer->ReleaseGraphicsResources();
       }
@@ -155,7 +196,7 @@ public:
     }
     this->Context = nullptr;
     this->MeshOnGpu = this->PointsOnGpu = this->GradientsOnGpu = this->TransferFunctionOnGpu = false;
-    this->IsosurfaceCellsOnGpu = false;
+    this->IsosurfaceCellsOnGpu = this->FaceIndicesOnGpu = false;
     this->UploadedIsosurfaceTime = 0;
     this->ImageSize[0] = this->ImageSize[1] = 0;
     this->AllocatedTargets = this->AllocatedLayers = 0;
@@ -346,6 +387,7 @@ void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderMode: " << (this->RenderMode == SHELLS ? "Shells" : "CellProjection") << "\n";
+  os << indent << "ProjectionRoute: " << (this->ProjectionRoute == VERTEX_PULLING ? "VertexPulling" : "GeometryShader") << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "AutomaticSamplesAcross: " << this->AutomaticSamplesAcross << "\n";
   os << indent << "SlicesPerShell: " << this->SlicesPerShell << "\n";
@@ -425,6 +467,28 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (change == uv::TetrahedralMesh::Change::Points)
   {
     impl.PointsOnGpu = false;
+  }
+  if (change != uv::TetrahedralMesh::Change::Nothing)
+  {
+    // Vertex order with a positive orientation, for the pulling route's culling; moving points can
+    // turn a tetrahedron inside out, so this is redone (and re-uploaded only if it changed).
+    std::vector<std::uint32_t> oriented = impl.Mesh.TetrahedronPoints;
+    const std::vector<float>& points = impl.Mesh.PointData;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(impl.Mesh.Size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        glm::vec3 v[4];
+        for (int k = 0; k < 4; ++k)
+          v[k] = glm::make_vec3(&points[4 * oriented[4 * t + k]]);
+        if (glm::determinant(glm::mat3(v[1] - v[0], v[2] - v[0], v[3] - v[0])) < 0.0f)
+          std::swap(oriented[4 * t + 1], oriented[4 * t + 2]);
+      }
+    });
+    if (oriented != impl.OrientedPoints)
+    {
+      impl.OrientedPoints.swap(oriented);
+      impl.MeshOnGpu = false;
+    }
   }
   if (impl.Mesh.Size() == 0)
   {
@@ -631,7 +695,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   vtkOpenGLState* state = window->GetState();
   if (!impl.MeshOnGpu)
   {
-    impl.TetrahedronBuffer->Upload(impl.Mesh.TetrahedronPoints, vtkOpenGLBufferObject::TextureBuffer);
+    impl.TetrahedronBuffer->Upload(impl.OrientedPoints, vtkOpenGLBufferObject::TextureBuffer);
     impl.TetrahedronTexture->SetContext(window);
     impl.TetrahedronTexture->SetInternalFormat(GL_RGBA32UI);
     impl.TetrahedronTexture->CreateTextureBuffer(
@@ -669,18 +733,33 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
   }
   uv::EnsurePsiTexture(impl.PsiTexture, window);
+  // Cell lists as buffer textures: both routes read a list entry by vertex id.
+  auto uploadList = [window](vtkOpenGLBufferObject* buffer, vtkTextureObject* texture,
+                      const std::vector<std::uint32_t>& cells) {
+    buffer->Upload(cells, vtkOpenGLBufferObject::TextureBuffer);
+    texture->SetContext(window);
+    texture->SetInternalFormat(GL_R32UI);
+    texture->CreateTextureBuffer(static_cast<unsigned int>(cells.size()), 1, VTK_UNSIGNED_INT, buffer);
+  };
   if (cellProjection)
   {
-    impl.OrderBuffer->Upload(impl.Order, vtkOpenGLBufferObject::ElementArrayBuffer);
+    uploadList(impl.OrderBuffer, impl.OrderList, impl.Order);
   }
   else
   {
-    impl.ShellBuffer->Upload(impl.ShellCells, vtkOpenGLBufferObject::ElementArrayBuffer);
+    if (!impl.ShellCells.empty())
+      uploadList(impl.ShellBuffer, impl.ShellList, impl.ShellCells);
     if (!impl.IsosurfaceCellsOnGpu && !impl.IsosurfaceCells.empty())
     {
-      impl.IsosurfaceCellBuffer->Upload(impl.IsosurfaceCells, vtkOpenGLBufferObject::ElementArrayBuffer);
+      uploadList(impl.IsosurfaceCellBuffer, impl.IsosurfaceList, impl.IsosurfaceCells);
       impl.IsosurfaceCellsOnGpu = true;
     }
+  }
+  const bool pulling = this->ProjectionRoute == VERTEX_PULLING;
+  if (pulling && !impl.FaceIndicesOnGpu)
+  {
+    impl.FaceIndexBuffer->Upload(FaceIndexPattern(PullChunk), vtkOpenGLBufferObject::ElementArrayBuffer);
+    impl.FaceIndicesOnGpu = true;
   }
   const int layers = this->IsosurfaceLayers;
   impl.EnsureImages(window, width, height, targets, layers);
@@ -702,8 +781,12 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
     { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib }
   };
-  const std::string cellVertex = uv::ShaderSource(uvPreIntegratedTetrahedraVS, defines);
-  const std::string cellGeometry = uv::ShaderSource(uvBarycentricShellGS, defines);
+  const std::initializer_list<std::pair<const char*, const char*>> tetrahedron = {
+    { "//UV::BarycentricTetrahedron", uvBarycentricTetrahedronLib }
+  };
+  const std::string cellVertex =
+    uv::ShaderSource(pulling ? uvBarycentricPullVS : uvBarycentricCellListVS, defines, tetrahedron);
+  const std::string cellGeometry = pulling ? std::string() : uv::ShaderSource(uvBarycentricShellGS, defines, tetrahedron);
   const std::string screenVertex = uv::ShaderSource(uvFullScreenTriangleVS, defines);
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
   auto ready = [&](const std::string& vertex, const char* fragment, const std::string& geometry) {
@@ -740,6 +823,30 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     uv::SetPhongUniforms(program, renderer, property, worldToEye);
   };
 
+  // Draws the tetrahedra at places [first, first + count) of a cell list, by the chosen route.
+  auto drawCells = [&](vtkShaderProgram* program, vtkTextureObject* list, std::size_t first, std::size_t count) {
+    program->SetUniformi("cellList", list->GetTextureUnit());
+    // The list position rides in a uniform, not in gl_VertexID's base (drivers differ on whether a
+    // base vertex shows there).
+    if (!pulling)
+    {
+      program->SetUniformi("listOffset", static_cast<int>(first));
+      glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+      return;
+    }
+    // Culling only here: the full-screen passes' triangle is a front face.
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_FRONT); // back faces: each ray leaves a tetrahedron through one
+    for (std::size_t done = 0; done < count; done += PullChunk)
+    {
+      const std::size_t chunk = std::min<std::size_t>(PullChunk, count - done);
+      program->SetUniformi("listOffset", static_cast<int>(first + done));
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(12 * chunk), GL_UNSIGNED_INT, nullptr);
+    }
+    state->vtkglCullFace(GL_BACK);
+    state->vtkglDisable(GL_CULL_FACE);
+  };
+
   // ---- Render into the float image.
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
@@ -750,10 +857,16 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   vtkOpenGLState::ScopedglDepthFunc depthFunctionSaver(state);
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglScissor scissorBoxSaver(state);
   vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
 
   std::vector<vtkTextureObject*> common = { impl.TetrahedronTexture, impl.PointTexture, impl.TransferTexture,
     impl.IsosurfaceTexture, impl.PsiTexture, impl.SceneDepth };
+  for (vtkTextureObject* list : { impl.ShellList.Get(), impl.IsosurfaceList.Get(), impl.OrderList.Get() })
+  {
+    if (list->GetHandle())
+      common.push_back(list);
+  }
   if (needGradients)
     common.push_back(impl.GradientTexture);
   for (vtkTextureObject* texture : common)
@@ -764,7 +877,6 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   impl.AccumulationFramebuffer->ActivateDrawBuffers(1);
   state->vtkglViewport(0, 0, width, height);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_CULL_FACE);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
@@ -772,6 +884,19 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT); // the image, and the mask: nothing opaque yet
   bool failed = false;
   impl.NoAttributes->Bind();
+  state->vtkglDisable(GL_CULL_FACE);
+  if (pulling)
+  {
+    impl.FaceIndexBuffer->Bind();
+  }
+  // The passes below touch only the pixels the volume's bounds can cover (the full-screen ones too).
+  {
+    double bounds[6];
+    volume->GetBounds(bounds);
+    const auto rectangle = ScreenRectangle(bounds, eyeToClip * worldToEye, width, height);
+    state->vtkglScissor(rectangle[0], rectangle[1], rectangle[2], rectangle[3]);
+    state->vtkglEnable(GL_SCISSOR_TEST);
+  }
 
   if (cellProjection)
   {
@@ -784,9 +909,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       state->vtkglDepthMask(GL_FALSE);
       state->vtkglEnable(GL_BLEND);
       state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-      impl.OrderBuffer->Bind();
-      glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.Order.size()), GL_UNSIGNED_INT, nullptr);
-      impl.OrderBuffer->Release();
+      drawCells(program, impl.OrderList, 0, impl.Order.size());
       impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.size());
     }
     failed = !program;
@@ -814,7 +937,6 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
         state->vtkglDisable(GL_BLEND);
         GLuint query = 0;
         glGenQueries(1, &query);
-        impl.IsosurfaceCellBuffer->Bind();
         const float noColor[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, noHit[4] = { 3.0e38f, 0.0f, 0.0f, 0.0f };
         for (int layer = 0; layer < layers; ++layer)
         {
@@ -831,7 +953,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
           state->vtkglClear(GL_DEPTH_BUFFER_BIT);
           program->SetUniformi("layer", layer);
           glBeginQuery(GL_SAMPLES_PASSED, query);
-          glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.IsosurfaceCells.size()), GL_UNSIGNED_INT, nullptr);
+          drawCells(program, impl.IsosurfaceList, 0, impl.IsosurfaceCells.size());
           glEndQuery(GL_SAMPLES_PASSED);
           impl.DrawnTetrahedra += static_cast<vtkIdType>(impl.IsosurfaceCells.size());
           GLuint samples = 0;
@@ -848,7 +970,6 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
             impl.PreviousLayer->CopyFromFrameBuffer(0, 0, 0, 0, width, height);
           }
         }
-        impl.IsosurfaceCellBuffer->Release();
         glDeleteQueries(1, &query);
         impl.IsosurfaceLayers = drawnLayers;
         impl.PreviousLayer->Deactivate();
@@ -879,7 +1000,6 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       }
       state->vtkglEnable(GL_DEPTH_TEST);
       state->vtkglDepthFunc(GL_LESS);
-      impl.ShellBuffer->Bind();
       for (int s = 0; s < shellCount; ++s)
       {
         const std::uint32_t first = impl.ShellOffsets[s], count = impl.ShellOffsets[s + 1] - first;
@@ -901,8 +1021,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
           slice->SetUniformf("shellStart", shellStart);
           state->vtkglEnable(GL_BLEND);
           state->vtkglBlendEquation(GL_MAX);
-          glDrawElements(GL_POINTS, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
-            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(std::uint32_t)));
+          drawCells(slice, impl.ShellList, first, count);
           state->vtkglBlendEquation(GL_FUNC_ADD);
           impl.DrawnTetrahedra += count;
         }
@@ -940,10 +1059,13 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
           impl.Accumulation->Deactivate();
         }
       }
-      impl.ShellBuffer->Release();
       impl.IsosurfaceColor->Deactivate();
       impl.IsosurfaceDistance->Deactivate();
     }
+  }
+  if (pulling)
+  {
+    impl.FaceIndexBuffer->Release();
   }
   impl.NoAttributes->Release();
   for (vtkTextureObject* texture : common)

@@ -3,10 +3,11 @@
  * @brief Tetrahedra sampled in barycentric coordinates on spherical shells; no preprocessing.
  *
  * After "A Generic and Scalable Pipeline for GPU Tetrahedral Grid Rendering" (Georgii and
- * Westermann). Nothing is computed per tetrahedron ahead of a frame: a geometry shader fed one point
- * per tetrahedron computes its eye-to-barycentric transform (only the eye's coordinates b_eye are
- * needed) and emits its back faces with each vertex's coordinates and barycentric ray direction; a
- * fragment then walks its ray inside the tetrahedron without leaving barycentric space
+ * Westermann). Nothing is computed per tetrahedron ahead of a frame: on the GPU each tetrahedron's
+ * eye-to-barycentric transform is computed (only the eye's coordinates b_eye are needed) and its back
+ * faces are rasterised with each vertex's coordinates and barycentric ray direction (by a geometry
+ * shader fed one point per tetrahedron, or by vertex pulling: see ProjectionRoute); a fragment then
+ * walks its ray inside the tetrahedron without leaving barycentric space
  * (uvBarycentricShell.h is the math, unit-tested). A mesh whose points move every frame
  * (vtkWarpVector, simulation output) therefore costs what a static one does: only the positions are
  * refreshed and uploaded.
@@ -64,6 +65,23 @@ public:
   vtkGetMacro(RenderMode, int);
   void SetRenderModeToShells() { this->SetRenderMode(SHELLS); }
   void SetRenderModeToCellProjection() { this->SetRenderMode(CELL_PROJECTION); }
+  ///@}
+
+  enum ProjectionRoutes
+  {
+    VERTEX_PULLING = 0,
+    GEOMETRY_SHADER = 1
+  };
+  ///@{
+  /// How tetrahedra reach the fragment stages. VERTEX_PULLING (default): four vertices per
+  /// tetrahedron pulled from buffer textures under a fixed index pattern of its four faces, front
+  /// faces culled (each vertex computes its tetrahedron's transform). GEOMETRY_SHADER: one point per
+  /// tetrahedron, a geometry shader computing the transform once and emitting the back faces (the
+  /// paper's route). Same image; the benchmark compares their speed.
+  vtkSetClampMacro(ProjectionRoute, int, VERTEX_PULLING, GEOMETRY_SHADER);
+  vtkGetMacro(ProjectionRoute, int);
+  void SetProjectionRouteToVertexPulling() { this->SetProjectionRoute(VERTEX_PULLING); }
+  void SetProjectionRouteToGeometryShader() { this->SetProjectionRoute(GEOMETRY_SHADER); }
   ///@}
 
   ///@{
@@ -147,6 +165,7 @@ protected:
   ~vtkBarycentricShellMapper() override;
 
   int RenderMode = SHELLS;
+  int ProjectionRoute = VERTEX_PULLING;
   double SampleDistance = 0.0;
   int AutomaticSamplesAcross = 256;
   int SlicesPerShell = 15;

@@ -1,9 +1,9 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// vtkBarycentricShellMapper, cell projection: from the back-face fragment, the ray's entry into the
-// tetrahedron in barycentric coordinates (going back towards the eye, where the first coordinate
-// reaches 0; the eye itself when inside), the segment's scalars and gradients at both ends, and its
-// colour integrated exactly as vtkPreIntegratedTetrahedraMapper does (uvSegmentIntegrationLib.glsl).
+// vtkBarycentricShellMapper, cell projection: from the back-face fragment, the ray's entry into and
+// exit from the tetrahedron in barycentric coordinates, the segment's scalars and gradients at both
+// ends, and its colour integrated exactly as vtkPreIntegratedTetrahedraMapper does
+// (uvSegmentIntegrationLib.glsl).
 // Drawn back to front, blended with ONE, ONE_MINUS_SRC_ALPHA.
 //UV::BarycentricRay
 
@@ -22,14 +22,8 @@ uniform mat3 modelToEyeNormals;
 void main()
 {
   BarycentricRay ray = FragmentRay();
-  float entry = 0.0;
-  for (int i = 0; i < 4; ++i)
-  {
-    // Coordinates growing along the ray were zero where it entered.
-    if (ray.perUnit[i] > 0.0)
-      entry = max(entry, ray.length - ray.face[i] / ray.perUnit[i]);
-  }
-  float exit = min(ray.length, OpaqueDistance());
+  float entry = EntryDistance(ray);
+  float exit = min(ExitDistance(ray), OpaqueDistance());
   if (!(entry < exit))
   {
     discard;

@@ -1,5 +1,5 @@
 // vtkBarycentricShellMapper: a fragment's ray in its tetrahedron's barycentric coordinates, from the
-// attributes uvBarycentricShellGS.glsl emits (marker //UV::BarycentricRay). The GLSL twin of
+// attributes uvBarycentricTetrahedronLib.glsl emits (marker //UV::BarycentricRay). The GLSL twin of
 // uvBarycentricShell.h: samples are taken from the face's own coordinates, b(z) = b_face + (z - l) b / l
 // (ShellSampleFromFace), which keeps float's digits that the eye's large coordinates would cost.
 // "Distance" z is the eye distance under perspective (spherical shells) and the depth -z_eye under
@@ -18,9 +18,9 @@ uniform vec2 viewportSize;
 
 struct BarycentricRay
 {
-  vec4 face;    // coordinates at the back face
+  vec4 face;    // coordinates at the fragment's point on the face
   vec4 perUnit; // their change per unit of distance
-  float length; // the back face's distance
+  float length; // that point's distance
 };
 
 BarycentricRay FragmentRay()
@@ -35,6 +35,32 @@ BarycentricRay FragmentRay()
 vec4 CoordinatesAt(BarycentricRay ray, float z)
 {
   return ray.face + (z - ray.length) * ray.perUnit;
+}
+
+/// Where the ray enters the tetrahedron: the last distance at which a coordinate growing along the
+/// ray is 0 (0 when the eye is inside).
+float EntryDistance(BarycentricRay ray)
+{
+  float entry = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (ray.perUnit[i] > 0.0)
+      entry = max(entry, ray.length - ray.face[i] / ray.perUnit[i]);
+  }
+  return entry;
+}
+
+/// Where it leaves: the first distance at which a falling coordinate reaches 0. The fragment's own
+/// distance on a back face, up to rounding; computed so any face of the tetrahedron will do.
+float ExitDistance(BarycentricRay ray)
+{
+  float exit = 3.0e38;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (ray.perUnit[i] < 0.0)
+      exit = min(exit, ray.length - ray.face[i] / ray.perUnit[i]);
+  }
+  return exit;
 }
 
 float SmallestCoordinate(vec4 b)

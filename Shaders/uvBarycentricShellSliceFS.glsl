@@ -2,7 +2,7 @@
 //VTK::Output::Dec
 // vtkBarycentricShellMapper, slicing stage: this fragment's ray sampled at the shell's equidistant
 // slices (UV_SLICES of them, four per float render target) in its tetrahedron's barycentric
-// coordinates. A sample inside the tetrahedron, and in front of the opaque geometry, writes its
+// coordinates, only at the slices inside the tetrahedron's stretch of the ray. A sample inside the tetrahedron, and in front of the opaque geometry, writes its
 // normalised scalar plus one (>= 1); the targets are cleared to 0 and blended with MAX, so across all
 // tetrahedra of the shell each slice ends with the scalar of the one holding it, and 0 means
 // "outside the mesh" for any scalar range.
@@ -19,7 +19,11 @@ void main()
   vec4 values[8];
   for (int t = 0; t < 8; ++t)
     values[t] = vec4(0.0);
-  for (int k = 0; k < UV_SLICES; ++k)
+  // Only the slices between where the ray enters this tetrahedron and its back face.
+  float entry = EntryDistance(ray);
+  int first = max(0, int(ceil((entry - shellStart) / sampleDistance - 1e-3)));
+  int last = min(UV_SLICES - 1, int(floor((ExitDistance(ray) - shellStart) / sampleDistance + 1e-3)));
+  for (int k = first; k <= last; ++k)
   {
     float z = shellStart + float(k) * sampleDistance;
     vec4 b = CoordinatesAt(ray, z);

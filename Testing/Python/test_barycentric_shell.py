@@ -95,6 +95,16 @@ class AccuracyTests(SceneTestCase):
         self.assertLess(shells, 1e-2)
         self.assertLess(projected, 5e-5)
 
+    def test_both_routes_draw_the_same_image(self):
+        # Vertex pulling (culled faces) and the geometry shader (back faces emitted): same fragments.
+        mesh = analytic(6, STEINER, vtkAnalyticMeshSource.JITTER)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        for camera in (camera_for(mesh), camera_for(mesh, 50, -20, parallel=True), inside_camera()):
+            for mode in (SHELLS, CELL_PROJECTION):
+                images = [vtkImageDataCopy(shell_scene(mesh, prop, camera, 64, RenderMode=mode,
+                                                       ProjectionRoute=route).render()) for route in (0, 1)]
+                self.assertLess(rmse(images[0], images[1])[1], 1e-5)
+
     def test_camera_inside_the_mesh(self):
         mesh = analytic(6)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())

@@ -1,0 +1,63 @@
+// vtkBarycentricShellMapper: one tetrahedron made ready for barycentric ray sampling in eye space, by
+// either route that feeds the fragment stages (uvBarycentricShellGS.glsl, uvBarycentricPullVS.glsl;
+// marker //UV::BarycentricTetrahedron). The eye's barycentric coordinates b_eye come from the edge
+// inverse about v0 (uvBarycentricShell.h: the 4x4 inverse in float loses the digits the eye's distance
+// costs); a vertex k then carries its own coordinates e_k and the direction attribute e_k - b_eye, both
+// linear in the eye-space point, so perspective-correct interpolation makes them exact everywhere on
+// a face.
+uniform usamplerBuffer tetrahedronPoints; // 4 point ids per tetrahedron
+uniform samplerBuffer pointData;          // model position (recentred) and normalised scalar
+uniform mat4 modelToEye;
+uniform mat4 eyeToClip;
+uniform int parallelProjection;
+
+out vec3 eyePosition;          // the fragment's eye-space point on the face
+out vec4 faceCoordinates;      // its barycentric coordinates
+out vec4 rayDirection;         // perspective: M^-1 (x, 0), the direction attribute b
+flat out vec4 cellScalars;     // normalised scalar at the four vertices
+flat out vec4 parallelPerUnit; // parallel projection: the coordinates' change per unit along -z
+flat out int cellId;
+
+struct EyeTetrahedron
+{
+  vec3 v[4];
+  vec4 scalars;
+  vec4 eyeCoordinates;
+  vec4 parallelPerUnit;
+  bool valid; // false when flat (no inverse)
+};
+
+EyeTetrahedron LoadEyeTetrahedron(int id)
+{
+  EyeTetrahedron tet;
+  uvec4 ids = texelFetch(tetrahedronPoints, id);
+  for (int k = 0; k < 4; ++k)
+  {
+    vec4 data = texelFetch(pointData, int(ids[k]));
+    tet.v[k] = (modelToEye * vec4(data.xyz, 1.0)).xyz;
+    tet.scalars[k] = data.w;
+  }
+  mat3 edges = mat3(tet.v[1] - tet.v[0], tet.v[2] - tet.v[0], tet.v[3] - tet.v[0]);
+  float scale = max(length(edges[0]), max(length(edges[1]), length(edges[2])));
+  tet.valid = abs(determinant(edges)) > 16.0 * 1.1920929e-7 * scale * scale * scale;
+  mat3 edgeInverse = tet.valid ? inverse(edges) : mat3(0.0);
+  vec3 q = edgeInverse * -tet.v[0];
+  tet.eyeCoordinates = vec4(1.0 - q.x - q.y - q.z, q);
+  vec3 p = edgeInverse * vec3(0.0, 0.0, -1.0);
+  tet.parallelPerUnit = vec4(-p.x - p.y - p.z, p);
+  return tet;
+}
+
+/// Sets every output for vertex k of the tetrahedron.
+void EmitAttributes(EyeTetrahedron tet, int k, int id)
+{
+  vec4 unit = vec4(0.0);
+  unit[k] = 1.0;
+  eyePosition = tet.v[k];
+  faceCoordinates = unit;
+  rayDirection = unit - tet.eyeCoordinates;
+  cellScalars = tet.scalars;
+  parallelPerUnit = tet.parallelPerUnit;
+  cellId = id;
+  gl_Position = eyeToClip * vec4(tet.v[k], 1.0);
+}
