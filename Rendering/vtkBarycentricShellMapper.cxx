@@ -1,6 +1,7 @@
 #include "vtkBarycentricShellMapper.h"
 
 #include "uvBarycentricCellProjectionFS.h"
+#include "uvBarycentricOpaqueDistanceFS.h"
 #include "uvBarycentricRayLib.h"
 #include "uvBarycentricShellBlendFS.h"
 #include "uvBarycentricCellListVS.h"
@@ -57,6 +58,8 @@ constexpr int MaximumTargets = 8;    // slices: four per target (OpenGL 3.2 guar
 constexpr int MaximumShells = 4096;  // beyond it the sample distance is widened (with a warning)
 constexpr float InsideTolerance = 1e-5f; // barycentric slack: no cracks between neighbours
 constexpr int PullChunk = 16384;         // tetrahedra per draw of the vertex-pulling route
+constexpr int SegmentTableSize = 256;    // texels per side of the fixed-length segment table
+constexpr double TableTexelsPerNodeGap = 4.0; // AUTOMATIC: the table when every node gap spans this many
 
 /// The four faces of tetrahedron q as vertices 4q + k, wound outwards when v1 - v0, v2 - v0, v3 - v0
 /// are positively oriented (so the rasteriser can cull front faces).
@@ -144,6 +147,8 @@ public:
   std::vector<float> Low, High;                     // eye-distance range per volume cell
   std::vector<std::uint32_t> ShellOffsets, ShellCells; // volume cells per shell, concatenated
   std::vector<unsigned char> ShellHasIsosurface;
+  std::string SegmentTableKey; // the nodes and length the uploaded table is for
+  int SegmentTableBuilds = 0;
   std::vector<std::uint32_t> SortKeys, Order, ScratchKeys, ScratchOrder;
 
   // GPU state, for one context.
@@ -152,9 +157,10 @@ public:
     OrderBuffer, FaceIndexBuffer;
   vtkNew<vtkTextureObject> TetrahedronTexture, PointTexture, GradientTexture, TransferTexture, IsosurfaceTexture,
     PsiTexture, SceneDepth, MaskDepth, Accumulation, IsosurfaceColor, IsosurfaceDistance, IsosurfaceDepth,
-    PreviousLayer, ShellList, IsosurfaceList, OrderList;
+    PreviousLayer, ShellList, IsosurfaceList, OrderList, SegmentTableTexture, OpaqueDistances;
   std::array<vtkNew<vtkTextureObject>, MaximumTargets> Slices;
-  vtkNew<vtkOpenGLFramebufferObject> SliceFramebuffer, AccumulationFramebuffer, IsosurfaceFramebuffer;
+  vtkNew<vtkOpenGLFramebufferObject> SliceFramebuffer, AccumulationFramebuffer, IsosurfaceFramebuffer,
+    OpaqueFramebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
   bool MeshOnGpu = false, PointsOnGpu = false, GradientsOnGpu = false, TransferFunctionOnGpu = false,
        IsosurfaceCellsOnGpu = false, FaceIndicesOnGpu = false;
@@ -175,7 +181,8 @@ public:
              this->GradientTexture.Get(), this->TransferTexture.Get(), this->IsosurfaceTexture.Get(),
              this->PsiTexture.Get(), this->SceneDepth.Get(), this->MaskDepth.Get(), this->Accumulation.Get(),
              this->IsosurfaceColor.Get(), this->IsosurfaceDistance.Get(), this->IsosurfaceDepth.Get(),
-             this->PreviousLayer.Get(), this->ShellList.Get(), this->IsosurfaceList.Get(), this->OrderList.Get() })
+             this->PreviousLayer.Get(), this->ShellList.Get(), this->IsosurfaceList.Get(), this->OrderList.Get(),
+             this->SegmentTableTexture.Get(), this->OpaqueDistances.Get() })
       {
         texture->ReleaseGraphicsResources(this->Context);
       }
@@ -188,7 +195,8 @@ public:
         buffer->ReleaseGraphicsResources();
       }
       for (vtkOpenGLFramebufferObject* framebuffer :
-        { this->SliceFramebuffer.Get(), this->AccumulationFramebuffer.Get(), this->IsosurfaceFramebuffer.Get() })
+        { this->SliceFramebuffer.Get(), this->AccumulationFramebuffer.Get(), this->IsosurfaceFramebuffer.Get(),
+          this->OpaqueFramebuffer.Get() })
       {
         framebuffer->ReleaseGraphicsResources(this->Context);
       }
@@ -198,6 +206,7 @@ public:
     this->MeshOnGpu = this->PointsOnGpu = this->GradientsOnGpu = this->TransferFunctionOnGpu = false;
     this->IsosurfaceCellsOnGpu = this->FaceIndicesOnGpu = false;
     this->UploadedIsosurfaceTime = 0;
+    this->SegmentTableKey.clear();
     this->ImageSize[0] = this->ImageSize[1] = 0;
     this->AllocatedTargets = this->AllocatedLayers = 0;
   }
@@ -265,6 +274,7 @@ public:
     }
     floatImage(this->Accumulation, 4);
     floatImage(this->PreviousLayer, 1);
+    floatImage(this->OpaqueDistances, 1);
     for (auto [texture, components] : { std::make_pair(this->IsosurfaceColor.Get(), 4),
            std::make_pair(this->IsosurfaceDistance.Get(), 1) })
     {
@@ -294,6 +304,7 @@ public:
       slices.push_back(this->Slices[t]);
     assemble(this->SliceFramebuffer, slices, this->MaskDepth);
     assemble(this->AccumulationFramebuffer, { this->Accumulation }, this->MaskDepth);
+    assemble(this->OpaqueFramebuffer, { this->OpaqueDistances }, this->IsosurfaceDepth);
     this->IsosurfaceFramebuffer->SetContext(window); // its layers are attached pass by pass
     this->ImageSize[0] = width;
     this->ImageSize[1] = height;
@@ -359,6 +370,10 @@ double vtkBarycentricShellMapper::GetLastSampleDistance()
 {
   return this->Impl->LastSampleDistance;
 }
+int vtkBarycentricShellMapper::GetNumberOfSegmentTableBuilds()
+{
+  return this->Impl->SegmentTableBuilds;
+}
 int vtkBarycentricShellMapper::GetNumberOfMeshBuilds()
 {
   return this->Impl->Mesh.Builds;
@@ -391,6 +406,9 @@ void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "AutomaticSamplesAcross: " << this->AutomaticSamplesAcross << "\n";
   os << indent << "SlicesPerShell: " << this->SlicesPerShell << "\n";
+  os << indent << "SegmentIntegration: "
+     << (this->SegmentIntegration == AUTOMATIC ? "Automatic" : this->SegmentIntegration == TABLE ? "Table" : "Exact")
+     << "\n";
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
   os << indent << "IsosurfaceLayers: " << this->IsosurfaceLayers << "\n";
   os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.Size() << "\n";
@@ -733,6 +751,38 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
   }
   uv::EnsurePsiTexture(impl.PsiTexture, window);
+  // Shells integrate segments of one length: a table lookup each, where the transfer function is
+  // smooth enough for the table's bilinear reads (or as the user chose).
+  const bool segmentTable = !cellProjection &&
+    (this->SegmentIntegration == TABLE ||
+      (this->SegmentIntegration == AUTOMATIC &&
+        uv::NarrowestNodeGap(impl.Nodes) * (SegmentTableSize - 1) >= TableTexelsPerNodeGap));
+  if (segmentTable)
+  {
+    std::string key = std::to_string(sampleDistance) + "|";
+    for (const auto& node : impl.Nodes)
+      key += std::to_string(node.Scalar) + "," + std::to_string(node.Extinction) + "," +
+        std::to_string(node.Color.r) + "," + std::to_string(node.Color.g) + "," + std::to_string(node.Color.b) + ";";
+    if (key != impl.SegmentTableKey)
+    {
+      const uv::TransferFunction tf(impl.Nodes);
+      std::vector<float> texels = uv::SegmentTable(tf, sampleDistance, SegmentTableSize,
+        [](int count, const auto& function) {
+          vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
+            for (vtkIdType row = begin; row < end; ++row)
+              function(static_cast<int>(row));
+          });
+        });
+      impl.SegmentTableTexture->SetContext(window);
+      impl.SegmentTableTexture->SetMinificationFilter(vtkTextureObject::Linear);
+      impl.SegmentTableTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+      impl.SegmentTableTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+      impl.SegmentTableTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+      impl.SegmentTableTexture->Create2DFromRaw(SegmentTableSize, SegmentTableSize, 4, VTK_FLOAT, texels.data());
+      impl.SegmentTableKey = key;
+      ++impl.SegmentTableBuilds;
+    }
+  }
   // Cell lists as buffer textures: both routes read a list entry by vertex id.
   auto uploadList = [window](vtkOpenGLBufferObject* buffer, vtkTextureObject* texture,
                       const std::vector<std::uint32_t>& cells) {
@@ -771,12 +821,62 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.WarnedMultisample = true;
   }
 
+  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  // ---- Opaque geometry's distance per pixel, once; none at all (the common case of a volume alone)
+  // spares every fragment the read.
+  bool opaqueGeometry = false;
+  {
+    vtkShaderProgram* opaque = cache->ReadyShaderProgram(uvFullScreenTriangleVS, uvBarycentricOpaqueDistanceFS, "");
+    if (!opaque)
+    {
+      vtkErrorMacro("the opaque-distance shaders failed to compile or link");
+      return;
+    }
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglViewport viewport(state);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    impl.OpaqueFramebuffer->SaveCurrentBindingsAndBuffers();
+    impl.OpaqueFramebuffer->Bind();
+    impl.OpaqueFramebuffer->ActivateDrawBuffers(1);
+    state->vtkglViewport(0, 0, width, height);
+    const float none[4] = { 3.0e38f, 0.0f, 0.0f, 0.0f };
+    glClearBufferfv(GL_COLOR, 0, none);
+    impl.SceneDepth->Activate();
+    opaque->SetUniformi("opaqueDepth", impl.SceneDepth->GetTextureUnit());
+    const glm::mat4 clipToEye(glm::inverse(eyeToClip));
+    opaque->SetUniformMatrix4x4("clipToEye", const_cast<float*>(glm::value_ptr(clipToEye)));
+    const float size[2] = { static_cast<float>(width), static_cast<float>(height) };
+    opaque->SetUniform2f("viewportSize", size);
+    opaque->SetUniformi("parallelProjection", parallel ? 1 : 0);
+    GLuint query = 0;
+    glGenQueries(1, &query);
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    impl.NoAttributes->Bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    impl.NoAttributes->Release();
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint samples = 0;
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+    glDeleteQueries(1, &query);
+    opaqueGeometry = samples > 0;
+    impl.SceneDepth->Deactivate();
+    impl.OpaqueFramebuffer->RestorePreviousBindingsAndBuffers();
+  }
+
   // ---- Programs.
   std::string defines = uv::TransferFunctionDefines(impl.Nodes) + "#define UV_SLICES " +
     std::to_string(slicesPerShell + 1) + "\n#define UV_TARGETS " + std::to_string(targets) +
     "\n#define UV_MAX_LAYERS " + std::to_string(layers) + "\n";
   if (needGradients)
     defines += "#define UV_GRADIENTS\n";
+  if (segmentTable)
+    defines += "#define UV_SEGMENT_TABLE\n";
+  if (opaqueGeometry)
+    defines += "#define UV_OPAQUE_GEOMETRY\n";
   const std::initializer_list<std::pair<const char*, const char*>> libraries = {
     { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
     { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib }
@@ -788,25 +888,21 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     uv::ShaderSource(pulling ? uvBarycentricPullVS : uvBarycentricCellListVS, defines, tetrahedron);
   const std::string cellGeometry = pulling ? std::string() : uv::ShaderSource(uvBarycentricShellGS, defines, tetrahedron);
   const std::string screenVertex = uv::ShaderSource(uvFullScreenTriangleVS, defines);
-  vtkOpenGLShaderCache* cache = window->GetShaderCache();
   auto ready = [&](const std::string& vertex, const char* fragment, const std::string& geometry) {
     const std::string fragmentSource = uv::ShaderSource(fragment, defines, libraries);
     return cache->ReadyShaderProgram(vertex.c_str(), fragmentSource.c_str(), geometry.c_str());
   };
-  const glm::mat4 clipToEye(glm::inverse(eyeToClip));
-  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
   const glm::mat3 normals(glm::transpose(glm::inverse(glm::dmat3(modelToEye))));
   // Uniforms every program over the tetrahedra takes (geometry stage and uvBarycentricRayLib).
   auto setCellUniforms = [&](vtkShaderProgram* program) {
     const glm::mat4 toEye(modelToEye), toClip(eyeToClip);
     program->SetUniformMatrix4x4("modelToEye", const_cast<float*>(glm::value_ptr(toEye)));
     program->SetUniformMatrix4x4("eyeToClip", const_cast<float*>(glm::value_ptr(toClip)));
-    program->SetUniformMatrix4x4("clipToEye", const_cast<float*>(glm::value_ptr(clipToEye)));
-    program->SetUniform2f("viewportSize", viewport);
     program->SetUniformi("parallelProjection", parallel ? 1 : 0);
     program->SetUniformi("tetrahedronPoints", impl.TetrahedronTexture->GetTextureUnit());
     program->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
-    program->SetUniformi("opaqueDepth", impl.SceneDepth->GetTextureUnit());
+    if (opaqueGeometry)
+      program->SetUniformi("opaqueDistances", impl.OpaqueDistances->GetTextureUnit());
     program->SetUniformf("insideTolerance", InsideTolerance);
     if (needGradients)
     {
@@ -861,7 +957,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
 
   std::vector<vtkTextureObject*> common = { impl.TetrahedronTexture, impl.PointTexture, impl.TransferTexture,
-    impl.IsosurfaceTexture, impl.PsiTexture, impl.SceneDepth };
+    impl.IsosurfaceTexture, impl.PsiTexture, impl.OpaqueDistances };
   for (vtkTextureObject* list : { impl.ShellList.Get(), impl.IsosurfaceList.Get(), impl.OrderList.Get() })
   {
     if (list->GetHandle())
@@ -988,6 +1084,12 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       setIntegrationUniforms(blend, 0); // isosurfaces come from their own pass
       blend->SetUniformf("sampleDistance", static_cast<float>(sampleDistance));
       blend->SetUniformi("isosurfaceLayers", drawnLayers);
+      if (segmentTable)
+      {
+        impl.SegmentTableTexture->Activate();
+        blend->SetUniformi("segmentTable", impl.SegmentTableTexture->GetTextureUnit());
+        blend->SetUniformf("segmentTableSize", static_cast<float>(SegmentTableSize));
+      }
       impl.IsosurfaceColor->Activate();
       impl.IsosurfaceDistance->Activate();
       blend->SetUniformi("isosurfaceColor", impl.IsosurfaceColor->GetTextureUnit());
@@ -1061,6 +1163,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       }
       impl.IsosurfaceColor->Deactivate();
       impl.IsosurfaceDistance->Deactivate();
+      if (segmentTable)
+        impl.SegmentTableTexture->Deactivate();
     }
   }
   if (pulling)

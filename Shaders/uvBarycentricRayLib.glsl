@@ -12,9 +12,9 @@ flat in vec4 parallelPerUnit;
 flat in int cellId;
 
 uniform int parallelProjection;
-uniform sampler2D opaqueDepth; // the scene's depth buffer before the volume
-uniform mat4 clipToEye;
-uniform vec2 viewportSize;
+#ifdef UV_OPAQUE_GEOMETRY
+uniform sampler2D opaqueDistances; // r: the distance of the scene's opaque geometry, per pixel
+#endif
 
 struct BarycentricRay
 {
@@ -37,30 +37,27 @@ vec4 CoordinatesAt(BarycentricRay ray, float z)
   return ray.face + (z - ray.length) * ray.perUnit;
 }
 
+/// The distances at which each coordinate reaches 0 along the ray (infinite or NaN where it does
+/// not change; the callers mask those out).
+vec4 ZeroCrossings(BarycentricRay ray)
+{
+  return ray.length - ray.face / ray.perUnit;
+}
+
 /// Where the ray enters the tetrahedron: the last distance at which a coordinate growing along the
 /// ray is 0 (0 when the eye is inside).
 float EntryDistance(BarycentricRay ray)
 {
-  float entry = 0.0;
-  for (int i = 0; i < 4; ++i)
-  {
-    if (ray.perUnit[i] > 0.0)
-      entry = max(entry, ray.length - ray.face[i] / ray.perUnit[i]);
-  }
-  return entry;
+  vec4 entries = mix(vec4(0.0), ZeroCrossings(ray), greaterThan(ray.perUnit, vec4(0.0)));
+  return max(max(entries.x, entries.y), max(max(entries.z, entries.w), 0.0));
 }
 
 /// Where it leaves: the first distance at which a falling coordinate reaches 0. The fragment's own
 /// distance on a back face, up to rounding; computed so any face of the tetrahedron will do.
 float ExitDistance(BarycentricRay ray)
 {
-  float exit = 3.0e38;
-  for (int i = 0; i < 4; ++i)
-  {
-    if (ray.perUnit[i] < 0.0)
-      exit = min(exit, ray.length - ray.face[i] / ray.perUnit[i]);
-  }
-  return exit;
+  vec4 exits = mix(vec4(3.0e38), ZeroCrossings(ray), lessThan(ray.perUnit, vec4(0.0)));
+  return min(min(exits.x, exits.y), min(exits.z, exits.w));
 }
 
 float SmallestCoordinate(vec4 b)
@@ -74,12 +71,13 @@ vec3 EyePointAt(float z)
   return parallelProjection == 1 ? vec3(eyePosition.xy, -z) : eyePosition * (z / length(eyePosition));
 }
 
-/// The distance of the scene's opaque geometry along this pixel's ray (the far plane where none).
+/// The distance of the scene's opaque geometry along this pixel's ray (uvBarycentricOpaqueDistanceFS.glsl
+/// computes them once a frame; a constant when the scene has none).
 float OpaqueDistance()
 {
-  vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
-  float depth = texelFetch(opaqueDepth, ivec2(gl_FragCoord.xy), 0).r;
-  vec4 opaque = clipToEye * vec4(ndc, 2.0 * depth - 1.0, 1.0);
-  vec3 point = opaque.xyz / opaque.w;
-  return parallelProjection == 1 ? -point.z : length(point);
+#ifdef UV_OPAQUE_GEOMETRY
+  return texelFetch(opaqueDistances, ivec2(gl_FragCoord.xy), 0).r;
+#else
+  return 3.0e38;
+#endif
 }

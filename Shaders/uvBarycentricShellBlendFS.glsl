@@ -3,7 +3,8 @@
 // vtkBarycentricShellMapper, blending stage (one full-screen pass per shell): the shell's slices of
 // this pixel (uvBarycentricShellSliceFS.glsl: scalar + 1 inside the mesh, 0 outside) composited front
 // to back. Between two inside samples the scalar is taken as linear and the segment integrated with
-// the transfer function exactly (pre-integrated, uvSegmentIntegrationLib.glsl); a segment with one
+// the transfer function (exactly, uvSegmentIntegrationLib.glsl, or by a read of the fixed-length
+// segment table, UV_SEGMENT_TABLE); a segment with one
 // inside end is counted as half a segment at that end's scalar (where the ray enters or leaves the
 // mesh between samples). The pixel's isosurface hits (uvBarycentricShellIsosurfaceFS.glsl, one layer
 // each, nearest first) are composited in place, inside the segments that hold them. The result is
@@ -37,12 +38,43 @@ uniform sampler3D isosurfaceDistance; // per layer: r, the hit's distance (3e38:
 uniform int isosurfaceLayers;         // layers drawn (0: no isosurface)
 uniform float shellStart;
 uniform float sampleDistance;
+#ifdef UV_SEGMENT_TABLE
+uniform sampler2D segmentTable; // (r, g, b, opacity) of a whole segment, front scalar x, back scalar y
+uniform float segmentTableSize;
+#endif
 
 //UV::TransferFunction
 
 //UV::Phong
 
 //UV::SegmentIntegration
+
+/// A whole segment between two samples: the table's bilinear read, or the exact walk.
+vec4 WholeSegment(float front, float back)
+{
+#ifdef UV_SEGMENT_TABLE
+  vec2 scalars = clamp(vec2(front, back), 0.0, 1.0);
+  return texture(segmentTable, (scalars * (segmentTableSize - 1.0) + 0.5) / segmentTableSize);
+#else
+  return IntegrateSegment(front, back, vec3(0.0), vec3(0.0), sampleDistance, vec3(0.0, 0.0, 1.0));
+#endif
+}
+
+/// Half a segment at a constant scalar (where the ray enters or leaves the mesh between samples):
+/// from the table's whole constant segment (opacity a over the whole: 1 - sqrt(1 - a) over half,
+/// colour in proportion), or from the transfer function at the scalar.
+vec4 HalfSegment(float scalar)
+{
+#ifdef UV_SEGMENT_TABLE
+  vec4 whole = WholeSegment(scalar, scalar);
+  float halfOpacity = 1.0 - sqrt(max(1.0 - whole.a, 0.0));
+  return vec4(whole.a > 0.0 ? whole.rgb * (halfOpacity / whole.a) : vec3(0.0), halfOpacity);
+#else
+  vec4 node = EvaluateBetween(scalar, NodesAtOrBelow(scalar));
+  float halfOpacity = 1.0 - exp(-0.5 * sampleDistance * node.a);
+  return vec4(node.rgb * halfOpacity, halfOpacity);
+#endif
+}
 
 vec4 result = vec4(0.0);
 float transmittance = 1.0;
@@ -79,6 +111,14 @@ void main()
 #if UV_TARGETS > 7
   slice[7] = texelFetch(slices7, pixel, 0);
 #endif
+  // Most pixels of most shells hold no sample: nothing to integrate.
+  vec4 any = slice[0];
+  for (int t = 1; t < UV_TARGETS; ++t)
+    any = max(any, slice[t]);
+  if (max(max(any.x, any.y), max(any.z, any.w)) == 0.0 && isosurfaceLayers == 0)
+  {
+    discard;
+  }
   float hits[UV_MAX_LAYERS];
   vec4 surfaces[UV_MAX_LAYERS];
   int hitCount = 0;
@@ -112,7 +152,10 @@ void main()
         Add(surfaces[hit]);
         from = to;
       }
-      Add(IntegrateSegment(mix(a, b, from), b, zero, zero, (1.0 - from) * sampleDistance, toEye));
+      if (from == 0.0)
+        Add(WholeSegment(a, b));
+      else
+        Add(IntegrateSegment(mix(a, b, from), b, zero, zero, (1.0 - from) * sampleDistance, toEye));
     }
     else
     {
@@ -120,11 +163,11 @@ void main()
       // here, after it when it leaves.
       float inside = previousInside ? previous - 1.0 : next - 1.0;
       if (previousInside)
-        Add(IntegrateSegment(inside, inside, zero, zero, 0.5 * sampleDistance, toEye));
+        Add(HalfSegment(inside));
       for (; hit < hitCount && hits[hit] < far; ++hit)
         Add(surfaces[hit]);
       if (nextInside)
-        Add(IntegrateSegment(inside, inside, zero, zero, 0.5 * sampleDistance, toEye));
+        Add(HalfSegment(inside));
     }
     previous = next;
   }

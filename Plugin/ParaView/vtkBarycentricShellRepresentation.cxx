@@ -48,6 +48,24 @@ void vtkBarycentricShellRepresentation::SetSkipInvisibleCells(int skip)
   this->MarkModified();
 }
 
+void vtkBarycentricShellRepresentation::SetProjectionRoute(int route)
+{
+  this->ShellMapper->SetProjectionRoute(route);
+  this->MarkModified();
+}
+
+void vtkBarycentricShellRepresentation::SetSegmentIntegration(int integration)
+{
+  this->ShellMapper->SetSegmentIntegration(integration);
+  this->MarkModified();
+}
+
+void vtkBarycentricShellRepresentation::SetIsosurfaceLayers(int layers)
+{
+  this->ShellMapper->SetIsosurfaceLayers(layers);
+  this->MarkModified();
+}
+
 void vtkBarycentricShellRepresentation::ClearMapperIsosurfaces()
 {
   this->ShellMapper->RemoveAllIsosurfaces();

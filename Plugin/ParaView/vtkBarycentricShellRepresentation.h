@@ -31,6 +31,9 @@ public:
   void SetSlicesPerShell(int slices);
   void SetOpacityThreshold(double threshold);
   void SetSkipInvisibleCells(int skip);
+  void SetProjectionRoute(int route);
+  void SetSegmentIntegration(int integration);
+  void SetIsosurfaceLayers(int layers);
   ///@}
 
 protected:
