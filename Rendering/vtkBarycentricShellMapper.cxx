@@ -148,6 +148,8 @@ public:
   std::vector<std::uint32_t> ShellOffsets, ShellCells; // volume cells per shell, concatenated
   std::vector<unsigned char> ShellHasIsosurface;
   std::string SegmentTableKey; // the nodes and length the uploaded table is for
+  std::string AutomaticDistanceKey;
+  double AutomaticDistance = 0.0;
   int SegmentTableBuilds = 0;
   std::vector<std::uint32_t> SortKeys, Order, ScratchKeys, ScratchOrder;
 
@@ -589,11 +591,20 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   double sampleDistance = this->SampleDistance;
   if (!(sampleDistance > 0.0))
   {
-    double bounds[6];
-    volume->GetBounds(bounds);
-    const double diagonal =
-      std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
-    sampleDistance = diagonal / this->AutomaticSamplesAcross;
+    // From the bounds as of the last full build (or a change of the volume's matrix): a deforming
+    // mesh keeps its sample distance, and so its segment table.
+    const std::string key =
+      std::to_string(volume->GetMatrix()->GetMTime()) + ":" + std::to_string(this->AutomaticSamplesAcross);
+    if (change == uv::TetrahedralMesh::Change::All || key != impl.AutomaticDistanceKey || !(impl.AutomaticDistance > 0.0))
+    {
+      double bounds[6];
+      volume->GetBounds(bounds);
+      const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) +
+        std::pow(bounds[5] - bounds[4], 2));
+      impl.AutomaticDistance = diagonal / this->AutomaticSamplesAcross;
+      impl.AutomaticDistanceKey = key;
+    }
+    sampleDistance = impl.AutomaticDistance;
   }
   double firstDistance = 0.0;
   int shellCount = 0;

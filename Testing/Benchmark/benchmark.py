@@ -73,9 +73,12 @@ MAPPERS = [
     ("UV HexRayCast Accurate, no early stop", lambda: configured(vtkHexahedralRayCastMapper, OpacityThreshold=1.0),
      "hexahedra"),
     # Barycentric shells from coarse to fine sampling (samples across the mesh's bounding box diagonal;
-    # 256 is the default), and the same pipeline's cell projection.
+    # 256 is the default), the paper's geometry-shader route at the default, and the same pipeline's
+    # cell projection.
     *[(f"UV BarycentricShells {n}", (lambda n=n: configured(vtkBarycentricShellMapper, AutomaticSamplesAcross=n)),
-       "tets") for n in (64, 128, 256, 512)],
+       "tets") for n in (32, 64, 128, 256, 512)],
+    ("UV BarycentricShells 256 (geometry shader)",
+     lambda: configured(vtkBarycentricShellMapper, ProjectionRouteToGeometryShader=None), "tets"),
     ("UV BarycentricCellProjection", lambda: configured(vtkBarycentricShellMapper, RenderModeToCellProjection=None),
      "tets"),
 ]

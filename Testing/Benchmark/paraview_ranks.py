@@ -1,7 +1,7 @@
 """Frame time of the plugin's representations on 1 and N MPI ranks (a command, not a test).
 
-    pvbatch paraview_ranks.py <plugin> <preintegrated|hexahedral> [--extent 40] [--frames 8] [--size 512]
-    mpiexec -np 2 pvbatch paraview_ranks.py <plugin> <preintegrated|hexahedral> ...
+    pvbatch paraview_ranks.py <plugin> <preintegrated|hexahedral|barycentric> [--extent 40] [--frames 8] [--size 512]
+    mpiexec -np 2 pvbatch paraview_ranks.py <plugin> <preintegrated|hexahedral|barycentric> ...
 
 Renders the wavelet (extent [-E, E]^3, so (2E)^3 cells) with the representation, an orbit of
 frames after one warm-up frame (which includes the preparation and, on several ranks, the
@@ -18,14 +18,15 @@ from paraview.simple import *  # noqa: F401,F403
 
 parser = argparse.ArgumentParser()
 parser.add_argument("plugin")
-parser.add_argument("mapper", choices=["preintegrated", "hexahedral"])
+parser.add_argument("mapper", choices=["preintegrated", "hexahedral", "barycentric"])
 parser.add_argument("--extent", type=int, default=40)
 parser.add_argument("--frames", type=int, default=8)
 parser.add_argument("--size", type=int, default=512)
 args = parser.parse_args()
 LoadPlugin(args.plugin, remote=False, ns=globals())
 ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
-entry = {"preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray Cast)"}[args.mapper]
+entry = {"preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray Cast)",
+         "barycentric": "Volume (Barycentric Shells)"}[args.mapper]
 
 view = CreateView("RenderView")  # noqa: F405
 view.ViewSize = [args.size, args.size]

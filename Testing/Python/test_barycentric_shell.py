@@ -234,6 +234,8 @@ class DeformationTests(SceneTestCase):
             self.assertLess(error, 3e-3)
         self.assertEqual(scene.mapper.GetNumberOfMeshBuilds(), 1)
         self.assertEqual(scene.mapper.GetNumberOfPointRefreshes(), 3)
+        # The automatic sample distance, and so the segment table, stay as they were.
+        self.assertEqual(scene.mapper.GetNumberOfSegmentTableBuilds(), 1)
         self.assertEqual(scene.events.errors, 0)
 
 
