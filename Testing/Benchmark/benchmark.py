@@ -73,12 +73,17 @@ MAPPERS = [
     ("UV HexRayCast Accurate, no early stop", lambda: configured(vtkHexahedralRayCastMapper, OpacityThreshold=1.0),
      "hexahedra"),
     # Barycentric shells from coarse to fine sampling (samples across the mesh's bounding box diagonal;
-    # 256 is the default), the paper's geometry-shader route at the default, and the same pipeline's
+    # 128 is the default), the paper's geometry-shader route, and the same pipeline's
     # cell projection.
     *[(f"UV BarycentricShells {n}", (lambda n=n: configured(vtkBarycentricShellMapper, AutomaticSamplesAcross=n)),
        "tets") for n in (32, 64, 128, 256, 512)],
+    ("UV BarycentricShells 512, exact segments",
+     lambda: configured(vtkBarycentricShellMapper, AutomaticSamplesAcross=512, SegmentIntegration=2), "tets"),
+    ("UV BarycentricShells 512, no early stop",
+     lambda: configured(vtkBarycentricShellMapper, AutomaticSamplesAcross=512, OpacityThreshold=1.0), "tets"),
     ("UV BarycentricShells 256 (geometry shader)",
-     lambda: configured(vtkBarycentricShellMapper, ProjectionRouteToGeometryShader=None), "tets"),
+     lambda: configured(vtkBarycentricShellMapper, ProjectionRouteToGeometryShader=None, AutomaticSamplesAcross=256),
+     "tets"),
     ("UV BarycentricCellProjection", lambda: configured(vtkBarycentricShellMapper, RenderModeToCellProjection=None),
      "tets"),
 ]

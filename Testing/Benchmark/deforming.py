@@ -33,7 +33,7 @@ MAPPERS = [
     ("VTK ProjectedTetrahedra", vtkProjectedTetrahedraMapper),
     ("UV PreIntegratedTetrahedra", vtkPreIntegratedTetrahedraMapper),
     ("UV BarycentricShells 64", lambda: benchmark.configured(vtkBarycentricShellMapper, AutomaticSamplesAcross=64)),
-    ("UV BarycentricShells 256", vtkBarycentricShellMapper),
+    ("UV BarycentricShells 128 (default)", vtkBarycentricShellMapper),
     ("UV BarycentricCellProjection",
      lambda: benchmark.configured(vtkBarycentricShellMapper, RenderModeToCellProjection=None)),
 ]

@@ -67,13 +67,13 @@ class AccuracyTests(SceneTestCase):
         self.assertLess(errors[-1], 2e-3)
 
     def test_default_sample_distance(self):
-        # Automatic: 256 samples across the bounding box diagonal. Measured 1.7e-3.
+        # Automatic: 128 samples across the bounding box diagonal.
         mesh = analytic(12)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         error, scene = self.error(mesh, prop, camera_for(mesh))
         print(f"\n  RMSE {error:.3g} at sample distance {scene.mapper.GetLastSampleDistance():.3g}", end="")
-        self.assertAlmostEqual(scene.mapper.GetLastSampleDistance(), mesh.GetLength() / 256, 9)
-        self.assertLess(error, 3e-3)
+        self.assertAlmostEqual(scene.mapper.GetLastSampleDistance(), mesh.GetLength() / 128, 9)
+        self.assertLess(error, 5e-3)
 
     def test_cell_projection_is_exact(self):
         # The whole segment per tetrahedron, pre-integrated: measured 3.8e-7.
@@ -221,7 +221,7 @@ class DeformationTests(SceneTestCase):
         rest = [mesh.GetPoint(i) for i in range(mesh.GetNumberOfPoints())]
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         camera = camera_for(mesh)
-        scene = shell_scene(mesh, prop, camera, 96)
+        scene = shell_scene(mesh, prop, camera, 96, AutomaticSamplesAcross=256)
         points = mesh.GetPoints()
         for frame in range(4):
             t = 0.5 * frame
