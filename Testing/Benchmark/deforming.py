@@ -102,11 +102,11 @@ def main():
     prop, _, _ = benchmark.volume_property(mesh, "RTData", benchmark.smooth_ramp, 0.05)
     cameras = benchmark.orbit(mesh, args.frames)
     print(f"wavelet: {mesh.GetNumberOfCells()} tetrahedra, {args.frames} frames, {args.size} px")
-    print(f"{'mapper':32s} {'static (s)':>10s} {'deforming (s)':>14s} {'ratio':>6s}")
+    print(f"{'mapper':36s} {'static (s)':>10s} {'deforming (s)':>14s} {'ratio':>6s}")
     for name, factory in MAPPERS:
         static = run(name, factory, mesh, prop, cameras, args.size, False)
         deforming = run(name, factory, mesh, prop, cameras, args.size, True)
-        print(f"{name:32s} {static:10.3f} {deforming:14.3f} {deforming / static:6.2f}", flush=True)
+        print(f"{name:36s} {static:10.3f} {deforming:14.3f} {deforming / static:6.2f}", flush=True)
 
 
 if __name__ == "__main__":
