@@ -151,6 +151,7 @@ public:
   std::string AutomaticDistanceKey;
   double AutomaticDistance = 0.0;
   int SegmentTableBuilds = 0;
+  int GradientComputations = 0;
   std::vector<std::uint32_t> SortKeys, Order, ScratchKeys, ScratchOrder;
 
   // GPU state, for one context.
@@ -376,6 +377,10 @@ int vtkBarycentricShellMapper::GetNumberOfSegmentTableBuilds()
 {
   return this->Impl->SegmentTableBuilds;
 }
+int vtkBarycentricShellMapper::GetNumberOfGradientComputations()
+{
+  return this->Impl->GradientComputations;
+}
 int vtkBarycentricShellMapper::GetNumberOfMeshBuilds()
 {
   return this->Impl->Mesh.Builds;
@@ -413,6 +418,8 @@ void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
   os << indent << "IsosurfaceLayers: " << this->IsosurfaceLayers << "\n";
+  os << indent << "GradientMode: " << (this->GradientMode == VERTEX_GRADIENTS ? "VertexGradients" : "CellGradients")
+     << "\n";
   os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.Size() << "\n";
   os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
@@ -565,7 +572,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // ---- Gradients, for isosurfaces (both modes) and shading (cell projection).
   const bool shade = cellProjection && property->GetShade() != 0;
-  const bool needGradients = shade || !isovalues.empty();
+  const bool lit = shade || !isovalues.empty();
+  const bool needGradients = lit && this->GradientMode == VERTEX_GRADIENTS;
   if (needGradients)
   {
     vtkDataArray* given = this->GradientArrayName
@@ -580,6 +588,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     if (gradientKey != impl.GradientKey)
     {
       impl.Gradients = uv::VertexGradients(impl.Mesh, given);
+      impl.GradientComputations += given ? 0 : 1;
       impl.GradientKey = gradientKey;
       impl.GradientsOnGpu = false;
     }
@@ -884,6 +893,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     "\n#define UV_MAX_LAYERS " + std::to_string(layers) + "\n";
   if (needGradients)
     defines += "#define UV_GRADIENTS\n";
+  else if (lit)
+    defines += "#define UV_CELL_GRADIENTS\n";
   if (segmentTable)
     defines += "#define UV_SEGMENT_TABLE\n";
   if (opaqueGeometry)

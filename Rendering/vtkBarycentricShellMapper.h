@@ -27,8 +27,8 @@
  * Isosurfaces (any number, colour and opacity each): in SHELLS mode, passes over the tetrahedra that
  * hold an isovalue find each pixel's crossings in closed form per tetrahedron, nearest first, one
  * per pass (depth peeling, up to IsosurfaceLayers, stopping when a pass finds none), Phong-lit with
- * the vertex gradients interpolated at the hit; the shells composite each at its exact distance. In
- * CELL_PROJECTION every crossing is drawn. Volume shading (vtkVolumeProperty::Shade) applies to
+ * the vertex gradients interpolated at the hit or the tetrahedron's own gradient (GradientMode); the
+ * shells composite each at its exact distance. In CELL_PROJECTION every crossing is drawn. Volume shading (vtkVolumeProperty::Shade) applies to
  * CELL_PROJECTION only.
  *
  * Skipped work: tetrahedra the transfer function makes transparent (and holding no isovalue) are in
@@ -144,6 +144,23 @@ public:
   int GetNumberOfIsosurfaces();
   ///@}
 
+  enum GradientModes
+  {
+    VERTEX_GRADIENTS = 0,
+    CELL_GRADIENTS = 1
+  };
+  ///@{
+  /// What lights isosurfaces (and, in cell projection, the shaded volume). VERTEX_GRADIENTS
+  /// (default): per-vertex gradients interpolated at each point (smooth; GradientArrayName, or
+  /// vtkVertexGradientFilter once per change of the mesh, so once per frame for a deforming mesh).
+  /// CELL_GRADIENTS: each tetrahedron's own gradient, computed on the GPU with its transform (flat
+  /// facets, no preprocessing at all).
+  vtkSetClampMacro(GradientMode, int, VERTEX_GRADIENTS, CELL_GRADIENTS);
+  vtkGetMacro(GradientMode, int);
+  void SetGradientModeToVertexGradients() { this->SetGradientMode(VERTEX_GRADIENTS); }
+  void SetGradientModeToCellGradients() { this->SetGradientMode(CELL_GRADIENTS); }
+  ///@}
+
   ///@{
   /// A point array of scalar gradients to light isosurfaces with; when the input has no array of
   /// this name (default "Gradients"), vtkVertexGradientFilter computes one.
@@ -168,7 +185,7 @@ public:
   ///@{
   /// What the last frame did, for tests: shells processed and skipped (empty), isosurface layers
   /// drawn (passes that found a crossing), tetrahedra drawn summed over passes, the sample distance
-  /// used; and since creation: segment tables built, full mesh builds, point-only refreshes
+  /// used; and since creation: segment tables built, vertex-gradient computations, full mesh builds, point-only refreshes
   /// (deformation), GPU bytes of the mesh.
   int GetNumberOfShells();
   int GetNumberOfDrawnIsosurfaceLayers();
@@ -176,6 +193,7 @@ public:
   vtkIdType GetNumberOfDrawnTetrahedra();
   double GetLastSampleDistance();
   int GetNumberOfSegmentTableBuilds();
+  int GetNumberOfGradientComputations();
   int GetNumberOfMeshBuilds();
   int GetNumberOfPointRefreshes();
   vtkIdType GetMeshMemoryInBytes();
@@ -196,6 +214,7 @@ protected:
   double OpacityThreshold = 0.99;
   int SegmentIntegration = AUTOMATIC;
   int IsosurfaceLayers = 4;
+  int GradientMode = VERTEX_GRADIENTS;
   char* GradientArrayName = nullptr;
   bool SkipInvisibleCells = true;
   bool KeepFloatImage = false;

@@ -39,6 +39,9 @@ void main()
     backGradient += back[k] * g;
   }
 #endif
+#ifdef UV_CELL_GRADIENTS
+  frontGradient = backGradient = cellGradient;
+#endif
   vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-EyePointAt(entry));
   vec4 result = IntegrateSegment(
     dot(cellScalars, front), dot(cellScalars, back), frontGradient, backGradient, exit - entry, toEye);

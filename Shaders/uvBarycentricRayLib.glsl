@@ -10,6 +10,9 @@ in vec4 rayDirection;
 flat in vec4 cellScalars;
 flat in vec4 parallelPerUnit;
 flat in int cellId;
+#ifdef UV_CELL_GRADIENTS
+flat in vec3 cellGradient;
+#endif
 
 uniform int parallelProjection;
 #ifdef UV_OPAQUE_GEOMETRY

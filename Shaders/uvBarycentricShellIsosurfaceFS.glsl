@@ -7,14 +7,17 @@
 // so the depth test leaves each pixel's nearest such hit of any tetrahedron (depth peeling: layer k
 // holds the pixel's k-th crossing). Lit (Phong) with the vertex gradients interpolated at the hit:
 // target 0 the premultiplied colour, target 1 the hit's distance (the blending stage composites each
-// in place).
+// in place). The gradients are the vertex gradients interpolated at the hit (UV_GRADIENTS) or the
+// tetrahedron's own (UV_CELL_GRADIENTS).
 //UV::BarycentricRay
 
 uniform sampler2D isosurfaces;      // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
 uniform int isosurfaceCount;
+#ifdef UV_GRADIENTS
 uniform usamplerBuffer tetrahedronPoints;
 uniform samplerBuffer pointGradients; // scalar gradient, model coordinates
 uniform mat3 modelToEyeNormals;
+#endif
 uniform mat4 eyeToClip;
 uniform float insideTolerance;
 uniform int layer;
@@ -58,14 +61,19 @@ void main()
     discard;
   }
   vec4 b = CoordinatesAt(ray, nearest);
+#ifdef UV_GRADIENTS
   uvec4 ids = texelFetch(tetrahedronPoints, cellId);
   vec3 gradient = vec3(0.0);
   for (int k = 0; k < 4; ++k)
     gradient += b[k] * texelFetch(pointGradients, int(ids[k])).xyz;
+  gradient = modelToEyeNormals * gradient;
+#else
+  vec3 gradient = cellGradient; // per tetrahedron: flat facets, no gradient array needed
+#endif
   vec3 point = EyePointAt(nearest);
   vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-point);
   vec4 surface = texelFetch(isosurfaces, ivec2(which, 0), 0);
-  vec3 lit = Light(surface.rgb, modelToEyeNormals * gradient, toEye);
+  vec3 lit = Light(surface.rgb, gradient, toEye);
   vec4 clip = eyeToClip * vec4(point, 1.0);
   gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
   gl_FragData[0] = vec4(lit * surface.a, surface.a);

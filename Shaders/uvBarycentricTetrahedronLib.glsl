@@ -17,6 +17,9 @@ out vec4 rayDirection;         // perspective: M^-1 (x, 0), the direction attrib
 flat out vec4 cellScalars;     // normalised scalar at the four vertices
 flat out vec4 parallelPerUnit; // parallel projection: the coordinates' change per unit along -z
 flat out int cellId;
+#ifdef UV_CELL_GRADIENTS
+flat out vec3 cellGradient;    // the linear field's gradient, eye space (normalised scalar units)
+#endif
 
 struct EyeTetrahedron
 {
@@ -24,7 +27,8 @@ struct EyeTetrahedron
   vec4 scalars;
   vec4 eyeCoordinates;
   vec4 parallelPerUnit;
-  bool valid; // false when flat (no inverse)
+  vec3 gradient; // of the linear field, eye space
+  bool valid;    // false when flat (no inverse)
 };
 
 EyeTetrahedron LoadEyeTetrahedron(int id)
@@ -45,6 +49,8 @@ EyeTetrahedron LoadEyeTetrahedron(int id)
   tet.eyeCoordinates = vec4(1.0 - q.x - q.y - q.z, q);
   vec3 p = edgeInverse * vec3(0.0, 0.0, -1.0);
   tet.parallelPerUnit = vec4(-p.x - p.y - p.z, p);
+  // s(x) = s0 + (s_k - s0) . E^-1 (x - v0): its gradient is E^-T (s_k - s0).
+  tet.gradient = transpose(edgeInverse) * (tet.scalars.yzw - tet.scalars.x);
   return tet;
 }
 
@@ -59,5 +65,8 @@ void EmitAttributes(EyeTetrahedron tet, int k, int id)
   cellScalars = tet.scalars;
   parallelPerUnit = tet.parallelPerUnit;
   cellId = id;
+#ifdef UV_CELL_GRADIENTS
+  cellGradient = tet.gradient;
+#endif
   gl_Position = eyeToClip * vec4(tet.v[k], 1.0);
 }

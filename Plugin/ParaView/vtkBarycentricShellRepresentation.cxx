@@ -66,6 +66,12 @@ void vtkBarycentricShellRepresentation::SetIsosurfaceLayers(int layers)
   this->MarkModified();
 }
 
+void vtkBarycentricShellRepresentation::SetGradientMode(int mode)
+{
+  this->ShellMapper->SetGradientMode(mode);
+  this->MarkModified();
+}
+
 void vtkBarycentricShellRepresentation::ClearMapperIsosurfaces()
 {
   this->ShellMapper->RemoveAllIsosurfaces();

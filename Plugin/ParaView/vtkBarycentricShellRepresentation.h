@@ -34,6 +34,7 @@ public:
   void SetProjectionRoute(int route);
   void SetSegmentIntegration(int integration);
   void SetIsosurfaceLayers(int layers);
+  void SetGradientMode(int mode);
   ///@}
 
 protected:

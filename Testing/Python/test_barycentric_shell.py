@@ -21,6 +21,7 @@ from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper  # noqa: E402
 
 SHELLS, CELL_PROJECTION = vtkBarycentricShellMapper.SHELLS, vtkBarycentricShellMapper.CELL_PROJECTION
+VERTEX, CELL = vtkBarycentricShellMapper.VERTEX_GRADIENTS, vtkBarycentricShellMapper.CELL_GRADIENTS
 
 
 def shell_scene(mesh, prop, camera, size=128, props=(), **settings):
@@ -196,8 +197,8 @@ class IsosurfaceTests(SceneTestCase):
         lambert = abs(sum(g * v for g, v in zip(gradient, view))) / norm
         highlight = max(2 * lambert * lambert - 1, 0.0) ** 8
         expected = [c * (0.15 + 0.7 * lambert) + 0.3 * highlight for c in color]
-        for mode in (SHELLS, CELL_PROJECTION):
-            scene = shell_scene(mesh, prop, camera, RenderMode=mode)
+        for mode, gradients in ((SHELLS, VERTEX), (CELL_PROJECTION, VERTEX), (SHELLS, CELL), (CELL_PROJECTION, CELL)):
+            scene = shell_scene(mesh, prop, camera, RenderMode=mode, GradientMode=gradients)
             scene.mapper.AddIsosurface(0.1, *color, 1.0)
             rgba = scene.render().GetPointData().GetScalars()
             covered, worst = 0, 0.0
@@ -206,7 +207,9 @@ class IsosurfaceTests(SceneTestCase):
                 if pixel[3] > 0.999:
                     covered += 1
                     worst = max(worst, max(abs(pixel[k] - expected[k]) for k in range(3)))
-            print(f"\n  mode {mode}: {covered} covered pixels, worst colour error {worst:.3g}", end="")
+            print(f"\n  mode {mode}, gradients {gradients}: {covered} covered pixels, worst colour error {worst:.3g}",
+                  end="")
+            self.assertEqual(scene.mapper.GetNumberOfGradientComputations(), 1 if gradients == VERTEX else 0)
             self.assertEqual(scene.events.errors, 0)
             self.assertGreater(covered, 2000)
             self.assertLess(worst, 2e-3)
@@ -237,6 +240,29 @@ class DeformationTests(SceneTestCase):
         # The automatic sample distance, and so the segment table, stay as they were.
         self.assertEqual(scene.mapper.GetNumberOfSegmentTableBuilds(), 1)
         self.assertEqual(scene.events.errors, 0)
+
+
+    def test_isosurfaces_on_a_deforming_mesh(self):
+        # Vertex gradients follow the mesh (one computation per frame that moved it); the cells' own
+        # gradients need none, and light the surface the same way up to faceting.
+        mesh = analytic(8)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        camera = camera_for(mesh)
+        scenes = {g: shell_scene(mesh, transparent_property(), camera, 64, GradientMode=g) for g in (VERTEX, CELL)}
+        for scene in scenes.values():
+            scene.mapper.AddIsosurface(low + 0.5 * (high - low), 0.9, 0.6, 0.2, 1.0)
+            scene.mapper.SetKeepFloatImage(True)
+        points = mesh.GetPoints()
+        for frame in range(3):
+            for i in range(points.GetNumberOfPoints()):
+                x, y, z = points.GetPoint(i)
+                points.SetPoint(i, x + 0.01 * (frame + 1) * y, y, z)
+            points.Modified()
+            images = {g: vtkImageDataCopy(scene.render()) for g, scene in scenes.items()}
+            self.assertLess(rmse(images[VERTEX], images[CELL])[0], 0.05)
+        self.assertEqual(scenes[VERTEX].mapper.GetNumberOfGradientComputations(), 3)
+        self.assertEqual(scenes[CELL].mapper.GetNumberOfGradientComputations(), 0)
+        self.assertEqual(scenes[CELL].mapper.GetNumberOfMeshBuilds(), 1)
 
 
 class ShellBaselineTests(pt.BaselineTests):
