@@ -944,8 +944,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   // Draws the tetrahedra at places [first, first + count) of a cell list, by the chosen route.
   auto drawCells = [&](vtkShaderProgram* program, vtkTextureObject* list, std::size_t first, std::size_t count) {
     program->SetUniformi("cellList", list->GetTextureUnit());
-    // The list position rides in a uniform, not in gl_VertexID's base (drivers differ on whether a
-    // base vertex shows there).
+    // The list position of the draw's first tetrahedron rides in a uniform, so one index pattern
+    // (PullChunk tetrahedra) serves every chunk.
     if (!pulling)
     {
       program->SetUniformi("listOffset", static_cast<int>(first));
