@@ -174,7 +174,14 @@ public:
   int Shells = 0, SkippedShells = 0, IsosurfaceLayers = 0;
   vtkIdType DrawnTetrahedra = 0;
   double LastSampleDistance = 0.0;
-  bool WarnedSplit = false, WarnedNaN = false, WarnedMultisample = false, WarnedShells = false;
+  bool WarnedSplit = false, WarnedNaN = false, WarnedMultisample = false, WarnedShells = false,
+       WarnedTexture = false;
+
+  // An image sampled through the points' texture coordinates (SetTextureImage).
+  vtkSmartPointer<vtkImageData> TextureImage;
+  std::string TextureKey, TextureCoordinatesKey;
+  vtkNew<vtkTextureObject> VolumeTexture, TextureCoordinateTexture;
+  vtkNew<vtkOpenGLBufferObject> TextureCoordinateBuffer;
 
   void ReleaseGraphics()
   {
@@ -185,7 +192,8 @@ public:
              this->PsiTexture.Get(), this->SceneDepth.Get(), this->MaskDepth.Get(), this->Accumulation.Get(),
              this->IsosurfaceColor.Get(), this->IsosurfaceDistance.Get(), this->IsosurfaceDepth.Get(),
              this->PreviousLayer.Get(), this->ShellList.Get(), this->IsosurfaceList.Get(), this->OrderList.Get(),
-             this->SegmentTableTexture.Get(), this->OpaqueDistances.Get() })
+             this->SegmentTableTexture.Get(), this->OpaqueDistances.Get(), this->VolumeTexture.Get(),
+             this->TextureCoordinateTexture.Get() })
       {
         texture->ReleaseGraphicsResources(this->Context);
       }
@@ -193,7 +201,7 @@ public:
         slice->ReleaseGraphicsResources(this->Context);
       for (vtkOpenGLBufferObject* buffer : { this->TetrahedronBuffer.Get(), this->PointBuffer.Get(),
              this->GradientBuffer.Get(), this->ShellBuffer.Get(), this->IsosurfaceCellBuffer.Get(),
-             this->OrderBuffer.Get(), this->FaceIndexBuffer.Get() })
+             this->OrderBuffer.Get(), this->FaceIndexBuffer.Get(), this->TextureCoordinateBuffer.Get() })
       {
         buffer->ReleaseGraphicsResources();
       }
@@ -210,6 +218,8 @@ public:
     this->IsosurfaceCellsOnGpu = this->FaceIndicesOnGpu = false;
     this->UploadedIsosurfaceTime = 0;
     this->SegmentTableKey.clear();
+    this->TextureKey.clear();
+    this->TextureCoordinatesKey.clear();
     this->ImageSize[0] = this->ImageSize[1] = 0;
     this->AllocatedTargets = this->AllocatedLayers = 0;
   }
@@ -348,6 +358,20 @@ int vtkBarycentricShellMapper::GetNumberOfIsosurfaces()
   return this->Impl->Isosurfaces.Size();
 }
 
+void vtkBarycentricShellMapper::SetTextureImage(vtkImageData* image)
+{
+  if (this->Impl->TextureImage != image)
+  {
+    this->Impl->TextureImage = image;
+    this->Modified();
+  }
+}
+
+vtkImageData* vtkBarycentricShellMapper::GetTextureImage()
+{
+  return this->Impl->TextureImage;
+}
+
 vtkImageData* vtkBarycentricShellMapper::GetFloatImage()
 {
   return this->Impl->FloatImage;
@@ -448,10 +472,26 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     return; // an empty grid draws nothing
   }
 
+  // ---- A bound image: sampled through the points' texture coordinates instead of a point scalar.
+  vtkImageData* image = impl.TextureImage;
+  vtkDataArray* textureCoordinates = image ? input->GetPointData()->GetTCoords() : nullptr;
+  vtkDataArray* imageScalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (image && (!textureCoordinates || textureCoordinates->GetNumberOfComponents() != 3 || !imageScalars))
+  {
+    vtkErrorMacro("a texture image needs point scalars, and the input 3-component point texture coordinates");
+    return;
+  }
+  const bool textured = image != nullptr;
+
   // ---- The mesh: rebuilt when the cells or the scalar changed, positions only when the points moved.
   int cellFlag = 0;
   vtkDataArray* inputScalars = vtkAbstractMapper::GetScalars(
     input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (textured && (!inputScalars || cellFlag != 0))
+  {
+    inputScalars = textureCoordinates; // the mesh's own scalar is not drawn: any point array will do
+    cellFlag = 0;
+  }
   if (!inputScalars)
   {
     vtkErrorMacro("the input has no point scalar to render (set one, or select an array with SelectScalarArray)");
@@ -524,7 +564,16 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // ---- Transfer function and isosurfaces, normalised like the scalar.
   vtkVolumeProperty* property = volume->GetProperty();
-  const std::string scalarKey = std::to_string(impl.Mesh.ScalarOffset) + ":" + std::to_string(impl.Mesh.ScalarScale);
+  double scalarOffset = impl.Mesh.ScalarOffset, scalarScale = impl.Mesh.ScalarScale;
+  if (textured)
+  {
+    // The image's values normalised by its own range (uploaded that way below).
+    double range[2];
+    imageScalars->GetRange(range, 0);
+    scalarOffset = range[0];
+    scalarScale = range[1] > range[0] ? 1.0 / (range[1] - range[0]) : 1.0;
+  }
+  const std::string scalarKey = std::to_string(scalarOffset) + ":" + std::to_string(scalarScale);
   if (property->GetMTime() != impl.TransferFunctionTime || impl.TransferFunctionMeshKey != scalarKey)
   {
     impl.Nodes = uv::TransferFunctionNodes(property);
@@ -535,20 +584,31 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     }
     for (auto& node : impl.Nodes)
     {
-      node.Scalar = (node.Scalar - impl.Mesh.ScalarOffset) * impl.Mesh.ScalarScale;
+      node.Scalar = (node.Scalar - scalarOffset) * scalarScale;
     }
     impl.TransferFunctionTime = property->GetMTime();
     impl.TransferFunctionMeshKey = scalarKey;
     impl.TransferFunctionOnGpu = false;
     impl.UploadedIsosurfaceTime = 0; // isovalues are normalised the same way
   }
-  const std::vector<uv::Isosurface> drawnIsosurfaces =
-    impl.Isosurfaces.Drawn(impl.Mesh.ScalarOffset, impl.Mesh.ScalarScale);
+  std::vector<uv::Isosurface> drawnIsosurfaces = impl.Isosurfaces.Drawn(scalarOffset, scalarScale);
+  if (textured && (!drawnIsosurfaces.empty() || this->RenderMode == CELL_PROJECTION))
+  {
+    // The field inside a cell is the image's, not linear: no closed-form crossings or whole segments.
+    if (!impl.WarnedTexture)
+    {
+      vtkWarningMacro("with a texture image only the shells are drawn: isosurfaces and cell projection "
+                      "need the mesh's own linear scalar");
+      impl.WarnedTexture = true;
+    }
+    drawnIsosurfaces.clear();
+  }
   std::vector<double> isovalues;
   for (const uv::Isosurface& s : drawnIsosurfaces)
     isovalues.push_back(s.Value);
-  impl.UpdateLists(this->SkipInvisibleCells, isovalues);
-  const bool cellProjection = this->RenderMode == CELL_PROJECTION;
+  // With an image, a cell's range is not its vertices' range: none is skipped.
+  impl.UpdateLists(this->SkipInvisibleCells && !textured, isovalues);
+  const bool cellProjection = this->RenderMode == CELL_PROJECTION && !textured;
   if (impl.DrawnCells.empty())
   {
     return;
@@ -771,6 +831,57 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
   }
   uv::EnsurePsiTexture(impl.PsiTexture, window);
+  if (textured)
+  {
+    const auto id = [](const void* p) { return std::to_string(reinterpret_cast<std::uintptr_t>(p)); };
+    const std::string imageKey = id(image) + ":" + std::to_string(image->GetMTime()) + ":" + id(imageScalars) + ":" +
+      std::to_string(imageScalars->GetMTime());
+    if (imageKey != impl.TextureKey)
+    {
+      // Normalised to [0, 1] by the image's range, as the transfer function is; a float texture read
+      // trilinearly.
+      int dimensions[3];
+      image->GetDimensions(dimensions);
+      const vtkIdType count = image->GetNumberOfPoints();
+      std::vector<float> values(count);
+      vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType p = begin; p < end; ++p)
+        {
+          const double value = (imageScalars->GetComponent(p, 0) - scalarOffset) * scalarScale;
+          values[p] = std::isfinite(value) ? static_cast<float>(value) : 0.0f;
+        }
+      });
+      impl.VolumeTexture->SetContext(window);
+      impl.VolumeTexture->SetMinificationFilter(vtkTextureObject::Linear);
+      impl.VolumeTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+      impl.VolumeTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+      impl.VolumeTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+      impl.VolumeTexture->SetWrapR(vtkTextureObject::ClampToEdge);
+      impl.VolumeTexture->Create3DFromRaw(dimensions[0], dimensions[1], dimensions[2], 1, VTK_FLOAT, values.data());
+      impl.TextureKey = imageKey;
+    }
+    vtkDataArray* meshCoordinates = impl.Mesh.Tetrahedra->GetPointData()->GetTCoords();
+    if (!meshCoordinates)
+      meshCoordinates = textureCoordinates; // the input itself when nothing was split
+    const std::string coordinatesKey = impl.Mesh.Key() + "|" + id(meshCoordinates) + ":" +
+      std::to_string(meshCoordinates->GetMTime());
+    if (coordinatesKey != impl.TextureCoordinatesKey)
+    {
+      const vtkIdType count = meshCoordinates->GetNumberOfTuples();
+      std::vector<float> coordinates(4 * count, 0.0f);
+      vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType p = begin; p < end; ++p)
+          for (int d = 0; d < 3; ++d)
+            coordinates[4 * p + d] = static_cast<float>(meshCoordinates->GetComponent(p, d));
+      });
+      impl.TextureCoordinateBuffer->Upload(coordinates, vtkOpenGLBufferObject::TextureBuffer);
+      impl.TextureCoordinateTexture->SetContext(window);
+      impl.TextureCoordinateTexture->SetInternalFormat(GL_RGBA32F);
+      impl.TextureCoordinateTexture->CreateTextureBuffer(
+        static_cast<unsigned int>(count), 4, VTK_FLOAT, impl.TextureCoordinateBuffer);
+      impl.TextureCoordinatesKey = coordinatesKey;
+    }
+  }
   // Shells integrate segments of one length: a table lookup each, where the transfer function is
   // smooth enough for the table's bilinear reads (or as the user chose).
   const bool segmentTable = !cellProjection &&
@@ -899,6 +1010,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     defines += "#define UV_SEGMENT_TABLE\n";
   if (opaqueGeometry)
     defines += "#define UV_OPAQUE_GEOMETRY\n";
+  if (textured)
+    defines += "#define UV_TEXTURE\n";
   const std::initializer_list<std::pair<const char*, const char*>> libraries = {
     { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
     { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib }
@@ -926,6 +1039,16 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     if (opaqueGeometry)
       program->SetUniformi("opaqueDistances", impl.OpaqueDistances->GetTextureUnit());
     program->SetUniformf("insideTolerance", InsideTolerance);
+    if (textured)
+    {
+      int dimensions[3];
+      image->GetDimensions(dimensions);
+      const float size[3] = { static_cast<float>(dimensions[0]), static_cast<float>(dimensions[1]),
+        static_cast<float>(dimensions[2]) };
+      program->SetUniformi("pointTextureCoordinates", impl.TextureCoordinateTexture->GetTextureUnit());
+      program->SetUniformi("volumeTexture", impl.VolumeTexture->GetTextureUnit());
+      program->SetUniform3f("volumeTextureSize", size);
+    }
     if (needGradients)
     {
       program->SetUniformi("pointGradients", impl.GradientTexture->GetTextureUnit());
@@ -987,6 +1110,11 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (needGradients)
     common.push_back(impl.GradientTexture);
+  if (textured)
+  {
+    common.push_back(impl.VolumeTexture);
+    common.push_back(impl.TextureCoordinateTexture);
+  }
   for (vtkTextureObject* texture : common)
     texture->Activate();
 

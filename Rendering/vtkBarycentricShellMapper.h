@@ -176,6 +176,17 @@ public:
   ///@}
 
   ///@{
+  /// An image (point scalars, first component) to render instead of the mesh's own scalar, sampled
+  /// (trilinearly) through the input's 3-component point texture coordinates, 0 to 1 across the
+  /// image's points: the mesh carries the image, so deforming the mesh deforms the image (a
+  /// registration, a warped volume). SHELLS only: the field inside a cell is then the image's, not
+  /// linear, so isosurfaces and cell projection are left out (a warning) and no cell is skipped as
+  /// invisible. The transfer function applies to the image's values. Null (default): the mesh's scalar.
+  void SetTextureImage(vtkImageData* image);
+  vtkImageData* GetTextureImage();
+  ///@}
+
+  ///@{
   /// Keep a copy of the last frame's premultiplied float RGBA image (tests, benchmark).
   vtkSetMacro(KeepFloatImage, bool);
   vtkGetMacro(KeepFloatImage, bool);

@@ -13,6 +13,19 @@ flat in int cellId;
 #ifdef UV_CELL_GRADIENTS
 flat in vec3 cellGradient;
 #endif
+#ifdef UV_TEXTURE
+flat in mat4 cellTextureCoordinates;
+uniform sampler3D volumeTexture;  // the bound image, normalised scalar
+uniform vec3 volumeTextureSize;   // its points along each axis
+
+/// The image's value at barycentric coordinates b of this fragment's tetrahedron: texture coordinates
+/// 0 and 1 are the image's first and last points (texel centres).
+float ImageScalarAt(vec4 b)
+{
+  vec3 coordinates = (cellTextureCoordinates * b).xyz;
+  return texture(volumeTexture, (coordinates * (volumeTextureSize - 1.0) + 0.5) / volumeTextureSize).r;
+}
+#endif
 
 uniform int parallelProjection;
 #ifdef UV_OPAQUE_GEOMETRY

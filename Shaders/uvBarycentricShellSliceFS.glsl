@@ -8,7 +8,8 @@
 // neighbours' rounding leaves no crack), in front of the eye and of opaque geometry, gets its
 // normalised scalar plus one (>= 1); the targets are cleared to 0 and blended with MAX, so across all
 // tetrahedra of the shell each slice ends with the scalar of the one holding it, and 0 means
-// "outside the mesh" for any scalar range.
+// "outside the mesh" for any scalar range. With a bound image (UV_TEXTURE) the slices inside read it
+// through the interpolated texture coordinates instead.
 //UV::BarycentricRay
 
 uniform float shellStart;     // distance of the shell's first slice
@@ -26,7 +27,18 @@ void main()
   {
     vec4 z = shellStart + sampleDistance * (vec4(0.0, 1.0, 2.0, 3.0) + float(4 * t));
     vec4 inside = step(from, z) * step(z, vec4(to));
+#ifdef UV_TEXTURE
+    // The bound image at each slice inside (one trilinear read each).
+    vec4 scalars = vec4(0.0);
+    for (int k = 0; k < 4; ++k)
+    {
+      if (inside[k] > 0.0)
+        scalars[k] = ImageScalarAt(CoordinatesAt(ray, z[k])) + 1.0;
+    }
+    values[t] = scalars;
+#else
     values[t] = inside * (atFace + (z - ray.length) * slope);
+#endif
   }
   gl_FragData[0] = values[0];
 #if UV_TARGETS > 1

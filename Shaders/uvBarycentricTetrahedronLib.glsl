@@ -20,6 +20,10 @@ flat out int cellId;
 #ifdef UV_CELL_GRADIENTS
 flat out vec3 cellGradient;    // the linear field's gradient, eye space (normalised scalar units)
 #endif
+#ifdef UV_TEXTURE
+uniform samplerBuffer pointTextureCoordinates;
+flat out mat4 cellTextureCoordinates; // column k: vertex k's texture coordinates
+#endif
 
 struct EyeTetrahedron
 {
@@ -28,6 +32,7 @@ struct EyeTetrahedron
   vec4 eyeCoordinates;
   vec4 parallelPerUnit;
   vec3 gradient; // of the linear field, eye space
+  uvec4 ids;
   bool valid;    // false when flat (no inverse)
 };
 
@@ -35,6 +40,7 @@ EyeTetrahedron LoadEyeTetrahedron(int id)
 {
   EyeTetrahedron tet;
   uvec4 ids = texelFetch(tetrahedronPoints, id);
+  tet.ids = ids;
   for (int k = 0; k < 4; ++k)
   {
     vec4 data = texelFetch(pointData, int(ids[k]));
@@ -67,6 +73,10 @@ void EmitAttributes(EyeTetrahedron tet, int k, int id)
   cellId = id;
 #ifdef UV_CELL_GRADIENTS
   cellGradient = tet.gradient;
+#endif
+#ifdef UV_TEXTURE
+  for (int v = 0; v < 4; ++v)
+    cellTextureCoordinates[v] = texelFetch(pointTextureCoordinates, int(tet.ids[v]));
 #endif
   gl_Position = eyeToClip * vec4(tet.v[k], 1.0);
 }

@@ -265,6 +265,87 @@ class DeformationTests(SceneTestCase):
         self.assertEqual(scenes[CELL].mapper.GetNumberOfMeshBuilds(), 1)
 
 
+def linear_image_and_mesh(gradient=(0.3, -0.5, 0.8)):
+    """A 17^3 image of a linear field on [-1, 1]^3, and a jittered tetrahedral mesh of the same cube
+    carrying texture coordinates into it and the same field as its point scalar."""
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    image = vtkImageData()
+    image.SetDimensions(17, 17, 17)
+    image.SetOrigin(-1, -1, -1)
+    image.SetSpacing(0.125, 0.125, 0.125)
+    values = vtkDoubleArray()
+    values.SetName("field")
+    for i in range(image.GetNumberOfPoints()):
+        values.InsertNextValue(sum(g * x for g, x in zip(gradient, image.GetPoint(i))))
+    image.GetPointData().SetScalars(values)
+    mesh = analytic(6, distortion=vtkAnalyticMeshSource.JITTER)
+    field = vtkDoubleArray()
+    field.SetName("field")
+    coordinates = vtkDoubleArray()
+    coordinates.SetName("coordinates")
+    coordinates.SetNumberOfComponents(3)
+    for i in range(mesh.GetNumberOfPoints()):
+        x = mesh.GetPoint(i)
+        field.InsertNextValue(sum(g * c for g, c in zip(gradient, x)))
+        coordinates.InsertNextTuple3(*[(c + 1.0) / 2.0 for c in x])
+    mesh.GetPointData().SetScalars(field)
+    mesh.GetPointData().SetTCoords(coordinates)
+    return image, mesh
+
+
+class TextureTests(SceneTestCase):
+    def test_an_image_through_texture_coordinates(self):
+        # A linear field read trilinearly from the image equals the mesh's own linear scalar; after the
+        # mesh is deformed the image moves with it (the field stays attached to the points).
+        image, mesh = linear_image_and_mesh()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        camera = camera_for(mesh)
+        # The textured mesh shares the points but carries another scalar, which must not be drawn.
+        carrier = vtkUnstructuredGrid()
+        carrier.ShallowCopy(mesh)
+        other = vtkDoubleArray()
+        other.SetNumberOfTuples(mesh.GetNumberOfPoints())
+        other.Fill(0.0)
+        carrier.GetPointData().SetScalars(other)
+        carrier.GetPointData().SetTCoords(mesh.GetPointData().GetTCoords())
+        textured = shell_scene(carrier, prop, camera, 96, SampleDistance=0.02)
+        textured.mapper.SetTextureImage(image)
+        plain = shell_scene(mesh, prop, camera, 96, SampleDistance=0.02)
+        first = vtkImageDataCopy(textured.render())
+        error = rmse(first, plain.render())[0]
+        print(f"\n  image against the mesh's own scalar: RMSE {error:.3g}", end="")
+        self.assertLess(error, 1e-3)
+        points = mesh.GetPoints()
+        for i in range(points.GetNumberOfPoints()):
+            x, y, z = points.GetPoint(i)
+            points.SetPoint(i, x + 0.15 * math.sin(2.0 * y), y, z + 0.1 * x * y)
+        points.Modified()
+        carrier.Modified()
+        moved = textured.render()
+        self.assertGreater(rmse(moved, first)[0], 1e-2)  # the picture changed
+        error = rmse(moved, plain.render())[0]
+        print(f", deformed {error:.3g}", end="")
+        self.assertLess(error, 1e-3)
+        self.assertEqual(textured.mapper.GetNumberOfMeshBuilds(), 1)
+        self.assertEqual(textured.events.errors + textured.events.warnings, 0)
+
+    def test_what_an_image_cannot_do_is_a_warning(self):
+        image, mesh = linear_image_and_mesh()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        scene = shell_scene(mesh, prop, camera_for(mesh), 48, RenderMode=CELL_PROJECTION)
+        scene.mapper.SetTextureImage(image)
+        scene.mapper.AddIsosurface(0.2, 1, 1, 1, 1)
+        self.assertTrue(finite_image(scene.render()))
+        scene.render()
+        self.assertEqual((scene.events.errors, scene.events.warnings), (0, 1))
+        # Without texture coordinates on the input: an error, nothing drawn.
+        mesh.GetPointData().SetTCoords(None)
+        scene = shell_scene(mesh, prop, camera_for(mesh), 48)
+        scene.mapper.SetTextureImage(image)
+        scene.render()
+        self.assertEqual(scene.events.errors, 1)
+
+
 class ShellBaselineTests(pt.BaselineTests):
     def scene(self, mesh, prop, camera, size=256, props=(), **settings):
         return super().scene(mesh, prop, camera, size, props, mapper_class=vtkBarycentricShellMapper, **settings)
