@@ -153,6 +153,9 @@ public:
   int SegmentTableBuilds = 0;
   int GradientComputations = 0;
   std::vector<std::uint32_t> SortKeys, Order, ScratchKeys, ScratchOrder;
+  std::string OrderKey; // the view, mesh and list the order is for
+  int Sorts = 0;
+  bool OrderUploaded = false;
 
   // GPU state, for one context.
   vtkOpenGLRenderWindow* Context = nullptr;
@@ -218,6 +221,7 @@ public:
     this->IsosurfaceCellsOnGpu = this->FaceIndicesOnGpu = false;
     this->UploadedIsosurfaceTime = 0;
     this->SegmentTableKey.clear();
+    this->OrderUploaded = false;
     this->TextureKey.clear();
     this->TextureCoordinatesKey.clear();
     this->ImageSize[0] = this->ImageSize[1] = 0;
@@ -400,6 +404,10 @@ double vtkBarycentricShellMapper::GetLastSampleDistance()
 int vtkBarycentricShellMapper::GetNumberOfSegmentTableBuilds()
 {
   return this->Impl->SegmentTableBuilds;
+}
+int vtkBarycentricShellMapper::GetNumberOfSorts()
+{
+  return this->Impl->Sorts;
 }
 int vtkBarycentricShellMapper::GetNumberOfGradientComputations()
 {
@@ -756,29 +764,39 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   else
   {
-    // Back to front by centroid distance (as vtkPreIntegratedTetrahedraMapper).
+    // Back to front by centroid distance (as vtkPreIntegratedTetrahedraMapper), redone only when the
+    // view, the points or the drawn cells changed.
     const glm::dmat4 eyeToModel = glm::inverse(modelToEye);
     const glm::vec3 eye(eyeToModel * glm::dvec4(0, 0, 0, 1));
     const glm::vec3 direction(glm::normalize(glm::dvec3(eyeToModel * glm::dvec4(0, 0, -1, 0))));
-    const std::size_t n = impl.DrawnCells.size();
-    impl.SortKeys.resize(n);
-    impl.Order = impl.DrawnCells;
-    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const float* c = &impl.Mesh.Centroids[3 * impl.Order[i]];
-        const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eye;
-        const float distance = parallel ? glm::dot(offset, direction) : glm::dot(offset, offset);
-        impl.SortKeys[i] = uv::OrderedKey(-distance); // farthest first
-      }
-    });
-    auto parallelChunks = [](int count, const auto& function) {
-      vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType chunk = begin; chunk < end; ++chunk)
-          function(static_cast<int>(chunk));
+    std::string orderKey = impl.Mesh.Key() + "|" + impl.ListKey + "|" + std::to_string(parallel);
+    for (int d = 0; d < 3; ++d)
+      orderKey += "|" + std::to_string(eye[d]) + "," + std::to_string(direction[d]);
+    if (orderKey != impl.OrderKey)
+    {
+      const std::size_t n = impl.DrawnCells.size();
+      impl.SortKeys.resize(n);
+      impl.Order = impl.DrawnCells;
+      vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const float* c = &impl.Mesh.Centroids[3 * impl.Order[i]];
+          const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eye;
+          const float distance = parallel ? glm::dot(offset, direction) : glm::dot(offset, offset);
+          impl.SortKeys[i] = uv::OrderedKey(-distance); // farthest first
+        }
       });
-    };
-    uv::RadixSortPairs(impl.SortKeys, impl.Order, impl.ScratchKeys, impl.ScratchOrder, parallelChunks);
+      auto parallelChunks = [](int count, const auto& function) {
+        vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
+          for (vtkIdType chunk = begin; chunk < end; ++chunk)
+            function(static_cast<int>(chunk));
+        });
+      };
+      uv::RadixSortPairs(impl.SortKeys, impl.Order, impl.ScratchKeys, impl.ScratchOrder, parallelChunks);
+      impl.OrderKey = orderKey;
+      impl.OrderUploaded = false;
+      ++impl.Sorts;
+    }
   }
   impl.LastSampleDistance = sampleDistance;
 
@@ -922,9 +940,10 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     texture->SetInternalFormat(GL_R32UI);
     texture->CreateTextureBuffer(static_cast<unsigned int>(cells.size()), 1, VTK_UNSIGNED_INT, buffer);
   };
-  if (cellProjection)
+  if (cellProjection && !impl.OrderUploaded)
   {
     uploadList(impl.OrderBuffer, impl.OrderList, impl.Order);
+    impl.OrderUploaded = true;
   }
   else
   {

@@ -196,7 +196,8 @@ public:
   ///@{
   /// What the last frame did, for tests: shells processed and skipped (empty), isosurface layers
   /// drawn (passes that found a crossing), tetrahedra drawn summed over passes, the sample distance
-  /// used; and since creation: segment tables built, vertex-gradient computations, full mesh builds, point-only refreshes
+  /// used; and since creation: segment tables built, vertex-gradient computations, visibility sorts
+  /// (cell projection: only when the view, the points or the drawn cells change), full mesh builds, point-only refreshes
   /// (deformation), GPU bytes of the mesh.
   int GetNumberOfShells();
   int GetNumberOfDrawnIsosurfaceLayers();
@@ -205,6 +206,7 @@ public:
   double GetLastSampleDistance();
   int GetNumberOfSegmentTableBuilds();
   int GetNumberOfGradientComputations();
+  int GetNumberOfSorts();
   int GetNumberOfMeshBuilds();
   int GetNumberOfPointRefreshes();
   vtkIdType GetMeshMemoryInBytes();

@@ -434,6 +434,21 @@ class SkippingTests(SceneTestCase):
         self.assertLess(rmse(everything, skipped)[0], 2e-3)
         self.assertEqual(scene.events.errors, 0)
 
+    def test_cell_projection_sorts_only_when_the_view_or_points_change(self):
+        mesh = analytic(5)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        scene = shell_scene(mesh, prop, camera_for(mesh), 48, RenderMode=CELL_PROJECTION)
+        first = vtkImageDataCopy(scene.render())
+        scene.render()
+        self.assertEqual(scene.mapper.GetNumberOfSorts(), 1)
+        self.assertLess(rmse(scene.render(), first)[1], 1e-7)
+        scene.renderer.GetActiveCamera().Azimuth(10)
+        scene.render()
+        self.assertEqual(scene.mapper.GetNumberOfSorts(), 2)
+        mesh.GetPoints().Modified()
+        scene.render()
+        self.assertEqual(scene.mapper.GetNumberOfSorts(), 3)
+
     def test_empty_shells_between_two_blobs_are_skipped(self):
         # Two small meshes far apart along the view: the shells between them hold nothing.
         from vtkmodules.vtkFiltersCore import vtkAppendFilter
