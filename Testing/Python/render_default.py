@@ -55,6 +55,8 @@ def main():
         uvrender.render_preintegrated_tetrahedra(
             tets, args.scalar, os.path.join(args.output, "default_preintegrated_isosurface.png"), args.size,
             isovalue=low + 0.6 * (high - low)),
+        uvrender.render_barycentric_shells(
+            tets, args.scalar, os.path.join(args.output, "default_barycentric_shells.png"), args.size),
         uvrender.render_projected_tetrahedra(
             tets, args.scalar, os.path.join(args.output, "default_split_projected_tetrahedra.png"), args.size),
         uvrender.render_gradient_cut(

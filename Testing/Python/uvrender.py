@@ -124,6 +124,18 @@ def render_preintegrated_tetrahedra(tets, scalar, path, size=512, isovalue=None)
     return _render_scene([volume], tets, size, path)
 
 
+def render_barycentric_shells(tets, scalar, path, size=512):
+    """Volume-renders a tetrahedral grid with this project's vtkBarycentricShellMapper (default shells)."""
+    from unstructuredvolume import vtkBarycentricShellMapper
+    tets.GetPointData().SetActiveScalars(scalar)
+    mapper = vtkBarycentricShellMapper()
+    mapper.SetInputData(tets)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(volume_property(tets.GetPointData().GetArray(scalar).GetRange()))
+    return _render_scene([volume], tets, size, path)
+
+
 def render_hexahedral_ray_cast(mesh, scalar, path, size=512):
     """Volume-renders a hexahedral grid with this project's vtkHexahedralRayCastMapper (no split)."""
     from unstructuredvolume import vtkHexahedralRayCastMapper
