@@ -95,8 +95,20 @@ void DistanceRange(const std::array<glm::vec3, 4>& v, bool parallel, float& low,
   }
   low = std::max(low, 0.0f);
 }
-/// The pixels the box `bounds` (world) can cover: its corners projected, as x, y, width, height in a
-/// width x height viewport. The whole viewport when a corner is not in front of the eye.
+
+/// Normalised device coordinates (low x, low y, high x, high y) to pixels (x, y, width, height) of a
+/// width x height viewport, a pixel of margin around.
+std::array<int, 4> PixelRectangle(const glm::dvec4& ndc, int width, int height)
+{
+  const int x0 = std::clamp(static_cast<int>(std::floor((ndc[0] + 1.0) * 0.5 * width)) - 1, 0, width);
+  const int y0 = std::clamp(static_cast<int>(std::floor((ndc[1] + 1.0) * 0.5 * height)) - 1, 0, height);
+  const int x1 = std::clamp(static_cast<int>(std::ceil((ndc[2] + 1.0) * 0.5 * width)) + 1, 0, width);
+  const int y1 = std::clamp(static_cast<int>(std::ceil((ndc[3] + 1.0) * 0.5 * height)) + 1, 0, height);
+  return { x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0) };
+}
+
+/// The pixels the box `bounds` (world) can cover: its corners projected. The whole viewport when a
+/// corner is not in front of the eye.
 std::array<int, 4> ScreenRectangle(const double bounds[6], const glm::dmat4& worldToClip, int width, int height)
 {
   double low[2] = { 1.0, 1.0 }, high[2] = { -1.0, -1.0 };
@@ -114,11 +126,7 @@ std::array<int, 4> ScreenRectangle(const double bounds[6], const glm::dmat4& wor
       high[axis] = std::max(high[axis], clip[axis] / clip.w);
     }
   }
-  const int x0 = std::clamp(static_cast<int>(std::floor((low[0] + 1.0) * 0.5 * width)) - 1, 0, width);
-  const int y0 = std::clamp(static_cast<int>(std::floor((low[1] + 1.0) * 0.5 * height)) - 1, 0, height);
-  const int x1 = std::clamp(static_cast<int>(std::ceil((high[0] + 1.0) * 0.5 * width)) + 1, 0, width);
-  const int y1 = std::clamp(static_cast<int>(std::ceil((high[1] + 1.0) * 0.5 * height)) + 1, 0, height);
-  return { x0, y0, x1 - x0, y1 - y0 };
+  return PixelRectangle(glm::dvec4(low[0], low[1], high[0], high[1]), width, height);
 }
 } // namespace
 
@@ -144,6 +152,8 @@ public:
 
   // Per frame.
   std::vector<glm::vec3> EyePoints;
+  std::vector<glm::vec2> ScreenPoints;   // normalised device coordinates (NaN: behind the eye)
+  std::vector<glm::dvec4> ShellScreen;   // per shell: low x, low y, high x, high y in device coordinates
   std::vector<float> Low, High;                     // eye-distance range per volume cell
   std::vector<std::uint32_t> ShellOffsets, ShellCells; // volume cells per shell, concatenated
   std::vector<unsigned char> ShellHasIsosurface;
@@ -698,6 +708,17 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
         impl.EyePoints[p] = glm::vec3(toEye * glm::vec4(x[0], x[1], x[2], 1.0f));
       }
     });
+    // Each point's place on screen (normalised device coordinates), for each shell's rectangle; a
+    // point not in front of the eye makes its cells' rectangles the whole screen.
+    const glm::mat4 toClip(eyeToClip);
+    impl.ScreenPoints.resize(pointCount);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(pointCount), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        const glm::vec4 clip = toClip * glm::vec4(impl.EyePoints[p], 1.0f);
+        impl.ScreenPoints[p] = clip.w > 1e-6f ? glm::vec2(clip) / clip.w : glm::vec2(std::numeric_limits<float>::quiet_NaN());
+      }
+    });
     auto ranges = [&](const std::vector<std::uint32_t>& cells, std::vector<float>& low, std::vector<float>& high) {
       low.resize(cells.size());
       high.resize(cells.size());
@@ -754,13 +775,36 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       impl.ShellOffsets[s + 1] += impl.ShellOffsets[s];
     impl.ShellCells.resize(impl.ShellOffsets[shellCount]);
     std::vector<std::uint32_t> fill(impl.ShellOffsets.begin(), impl.ShellOffsets.end() - 1);
+    // Each shell's screen rectangle: the union of its cells' (its full-screen passes cover no more).
+    const glm::dvec4 empty(1.0, 1.0, -1.0, -1.0), whole(-1.0, -1.0, 1.0, 1.0);
+    impl.ShellScreen.assign(shellCount, empty);
+    auto addScreen = [&](std::uint32_t cell, int shell) {
+      glm::dvec4& box = impl.ShellScreen[shell];
+      for (int k = 0; k < 4; ++k)
+      {
+        const glm::vec2 p = impl.ScreenPoints[impl.Mesh.TetrahedronPoints[4 * cell + k]];
+        if (!(p.x == p.x))
+        {
+          box = whole; // a vertex behind the eye
+          return;
+        }
+        box = glm::dvec4(std::min<double>(box.x, p.x), std::min<double>(box.y, p.y), std::max<double>(box.z, p.x),
+          std::max<double>(box.w, p.y));
+      }
+    };
     for (std::size_t i = 0; i < impl.VolumeCells.size(); ++i)
       for (int s = shellOf(impl.Low[i] - slack); s <= shellOf(impl.High[i] + slack); ++s)
+      {
         impl.ShellCells[fill[s]++] = impl.VolumeCells[i];
+        addScreen(impl.VolumeCells[i], s);
+      }
     impl.ShellHasIsosurface.assign(shellCount, 0);
     for (std::size_t i = 0; i < impl.IsosurfaceCells.size(); ++i)
       for (int s = shellOf(isoLow[i] - slack); s <= shellOf(isoHigh[i] + slack); ++s)
+      {
         impl.ShellHasIsosurface[s] = 1;
+        addScreen(impl.IsosurfaceCells[i], s);
+      }
   }
   else
   {
@@ -1155,11 +1199,12 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.FaceIndexBuffer->Bind();
   }
   // The passes below touch only the pixels the volume's bounds can cover (the full-screen ones too).
+  std::array<int, 4> volumeRectangle;
   {
     double bounds[6];
     volume->GetBounds(bounds);
-    const auto rectangle = ScreenRectangle(bounds, eyeToClip * worldToEye, width, height);
-    state->vtkglScissor(rectangle[0], rectangle[1], rectangle[2], rectangle[3]);
+    volumeRectangle = ScreenRectangle(bounds, eyeToClip * worldToEye, width, height);
+    state->vtkglScissor(volumeRectangle[0], volumeRectangle[1], volumeRectangle[2], volumeRectangle[3]);
     state->vtkglEnable(GL_SCISSOR_TEST);
   }
 
@@ -1280,6 +1325,14 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
           continue;
         }
         ++impl.Shells;
+        // This shell's passes, clear included, only where its cells are (and the volume is).
+        {
+          const auto own = PixelRectangle(impl.ShellScreen[s], width, height);
+          const int x0 = std::max(own[0], volumeRectangle[0]), y0 = std::max(own[1], volumeRectangle[1]);
+          const int x1 = std::min(own[0] + own[2], volumeRectangle[0] + volumeRectangle[2]);
+          const int y1 = std::min(own[1] + own[3], volumeRectangle[1] + volumeRectangle[3]);
+          state->vtkglScissor(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+        }
         state->vtkglDepthMask(GL_FALSE); // the mask is only read, except by the mask pass
         const float shellStart = static_cast<float>(firstDistance + s * slicesPerShell * sampleDistance);
         // Slices: cleared to "outside", then every overlapping cell's samples, MAX-blended.
@@ -1365,6 +1418,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // ---- Blend the float image into VTK's scene.
   state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST); // the rectangles above are the image's, not the window's
   if (!uv::CompositeIntoScene(window, impl.Accumulation, impl.NoAttributes, originX, originY, width, height))
   {
     vtkErrorMacro("the composite shaders failed to compile or link");

@@ -492,6 +492,47 @@ class SkippingTests(SceneTestCase):
         self.assertGreater(rmse(images[0.0], images[1.0])[1], 0.05)
 
 
+class ViewportTests(unittest.TestCase):
+    def test_a_renderer_beside_another_in_the_window(self):
+        # The mapper's passes clip to rectangles of its own image; the final blend into a renderer
+        # whose viewport is not at the window's origin must land there, whole.
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkVolume, vtkWindowToImageFilter
+        mesh = analytic(5)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+
+        def grab(width, viewport):
+            window = vtkRenderWindow()
+            window.SetOffScreenRendering(1)
+            window.SetMultiSamples(0)
+            window.SetSize(width, 64)
+            renderer = vtkRenderer()
+            renderer.SetViewport(*viewport)
+            renderer.SetBackground(0.2, 0.2, 0.2)
+            mapper = vtkBarycentricShellMapper()
+            mapper.SetInputData(mesh)
+            volume = vtkVolume()
+            volume.SetMapper(mapper)
+            volume.SetProperty(prop)
+            renderer.AddVolume(volume)
+            renderer.SetActiveCamera(camera_for(mesh))
+            window.AddRenderer(renderer)
+            window.Render()
+            capture = vtkWindowToImageFilter()
+            capture.SetInput(window)
+            capture.ReadFrontBufferOff()
+            capture.Update()
+            pixels = vtk_to_numpy(capture.GetOutput().GetPointData().GetScalars()).reshape(64, width, -1)
+            mapper.ReleaseGraphicsResources(window)
+            return pixels[:, :, :3].astype(int)
+
+        alone = grab(64, (0.0, 0.0, 1.0, 1.0))
+        beside = grab(128, (0.5, 0.0, 1.0, 1.0))
+        self.assertGreater(int((alone != 51).any(axis=2).sum()), 500)  # the volume covers pixels
+        self.assertLessEqual(int(abs(beside[:, 64:] - alone).max()), 2)
+        self.assertEqual(int(beside[:, :64].max() - beside[:, :64].min()), 0)  # nothing drawn left of it
+
+
 class InputTests(SceneTestCase):
     def scene(self, mesh, prop=None, **settings):
         prop = prop or uvrender.volume_property((0.0, 1.0))
