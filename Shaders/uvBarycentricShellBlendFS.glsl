@@ -1,12 +1,12 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 // vtkBarycentricShellMapper, blending stage (one full-screen pass per shell): the shell's slices of
-// this pixel (uvBarycentricShellSliceFS.glsl: scalar + 1 inside the mesh, 0 outside) composited front
-// to back. Between two inside samples the scalar is taken as linear and the segment integrated with
-// the transfer function (exactly, uvSegmentIntegrationLib.glsl, or by a read of the fixed-length
-// segment table, UV_SEGMENT_TABLE); a segment with one
-// inside end is counted as half a segment at that end's scalar (where the ray enters or leaves the
-// mesh between samples). The pixel's isosurface hits (uvBarycentricShellIsosurfaceFS.glsl, one layer
+// this pixel (uvBarycentricShellSliceFS.glsl: scalar + 1 inside the mesh; below 1 outside, with a
+// record of where the mesh begins or ends when that is within a sample distance) composited front to
+// back. Between two inside samples the scalar is taken as linear and the segment integrated with the
+// transfer function (exactly, uvSegmentIntegrationLib.glsl, or by a read of the fixed-length segment
+// table, UV_SEGMENT_TABLE); a segment with one inside end counts its recorded inside part (half when
+// there is no record) at that end's scalar. The pixel's isosurface hits (uvBarycentricShellIsosurfaceFS.glsl, one layer
 // each, nearest first) are composited in place, inside the segments that hold them. The result is
 // blended under what earlier shells left (front to back: ONE_MINUS_DST_ALPHA, ONE).
 in vec2 texCoord;
@@ -60,20 +60,33 @@ vec4 WholeSegment(float front, float back)
 #endif
 }
 
-/// Half a segment at a constant scalar (where the ray enters or leaves the mesh between samples):
-/// from the table's whole constant segment (opacity a over the whole: 1 - sqrt(1 - a) over half,
-/// colour in proportion), or from the transfer function at the scalar.
-vec4 HalfSegment(float scalar)
+/// A fraction of a segment at a constant scalar (where the ray enters or leaves the mesh between two
+/// samples): from the table's whole constant segment (opacity a over the whole: 1 - (1 - a)^f over
+/// the fraction f, colour in proportion), or from the transfer function at the scalar.
+vec4 PartialSegment(float scalar, float fraction)
 {
 #ifdef UV_SEGMENT_TABLE
   vec4 whole = WholeSegment(scalar, scalar);
-  float halfOpacity = 1.0 - sqrt(max(1.0 - whole.a, 0.0));
-  return vec4(whole.a > 0.0 ? whole.rgb * (halfOpacity / whole.a) : vec3(0.0), halfOpacity);
+  float opacity = 1.0 - pow(max(1.0 - whole.a, 0.0), fraction);
+  return vec4(whole.a > 0.0 ? whole.rgb * (opacity / whole.a) : vec3(0.0), opacity);
 #else
   vec4 node = EvaluateBetween(scalar, NodesAtOrBelow(scalar));
-  float halfOpacity = 1.0 - exp(-0.5 * sampleDistance * node.a);
-  return vec4(node.rgb * halfOpacity, halfOpacity);
+  float opacity = 1.0 - exp(-fraction * sampleDistance * node.a);
+  return vec4(node.rgb * opacity, opacity);
 #endif
+}
+
+/// How much of the segment next to an outside slice is inside the mesh, from the slice's record
+/// (uvBarycentricShellSliceFS.glsl): an entry record when the mesh starts after it, an exit record
+/// when it ended before it; half a segment when the slice holds no such record.
+float InsideFraction(float record, bool entering)
+{
+  // Records: entries 0.25 - 0.24 f, exits 0.75 - 0.24 f, f the sample distances from the slice.
+  if (entering && record > 0.005 && record < 0.5)
+    return (record - 0.01) / 0.24;
+  if (!entering && record > 0.5 && record < 0.9)
+    return (record - 0.51) / 0.24;
+  return 0.5;
 }
 
 vec4 result = vec4(0.0);
@@ -140,7 +153,7 @@ void main()
   {
     float next = slice[(k + 1) >> 2][(k + 1) & 3];
     float near = shellStart + float(k) * sampleDistance, far = near + sampleDistance;
-    bool previousInside = previous > 0.5, nextInside = next > 0.5;
+    bool previousInside = previous > 0.9, nextInside = next > 0.9;
     if (previousInside && nextInside)
     {
       // The scalar linear between the samples; cut at each hit inside the segment.
@@ -159,15 +172,16 @@ void main()
     }
     else
     {
-      // Half a segment at the inside end's scalar; hits are composited before it when the ray enters
-      // here, after it when it leaves.
+      // The ray enters or leaves the mesh (or meets opaque geometry) inside this segment: the part
+      // inside, at the inside end's scalar; hits are composited before it when the ray enters here,
+      // after it when it leaves.
       float inside = previousInside ? previous - 1.0 : next - 1.0;
       if (previousInside)
-        Add(HalfSegment(inside));
+        Add(PartialSegment(inside, clamp(InsideFraction(next, false), 0.0, 1.0)));
       for (; hit < hitCount && hits[hit] < far; ++hit)
         Add(surfaces[hit]);
       if (nextInside)
-        Add(HalfSegment(inside));
+        Add(PartialSegment(inside, clamp(InsideFraction(previous, true), 0.0, 1.0)));
     }
     previous = next;
   }

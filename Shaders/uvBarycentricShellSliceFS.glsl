@@ -19,14 +19,27 @@ void main()
 {
   BarycentricRay ray = FragmentRay();
   float slack = 1e-4 * sampleDistance;
-  float from = max(EntryDistance(ray), 0.0) - slack;
-  float to = min(ExitDistance(ray), OpaqueDistance()) + slack;
+  float entry = EntryDistance(ray), exit = min(ExitDistance(ray), OpaqueDistance());
+  float from = entry - slack, to = exit + slack;
   float atFace = dot(cellScalars, ray.face) + 1.0, slope = dot(cellScalars, ray.perUnit);
+  // Where the stretch starts and ends between two slices, the slice just outside it records how far
+  // off it is, f in [0, 1] sample distances: entries as 0.01 + 0.24 (1 - f), exits as
+  // 0.51 + 0.24 (1 - f). Inside a neighbour the slice holds >= 1 and the record loses the MAX; among
+  // records the MAX keeps the nearest entry and exit (several tetrahedra may start or end between
+  // the same two slices: the mesh begins at the first and ends at the last). Left alone, a record
+  // tells the blending stage where the mesh (or the opaque geometry) begins or ends.
+  float entrySlice = floor((entry - shellStart) / sampleDistance);
+  float entryCode =
+    entry > 0.0 ? 0.25 - 0.24 * ((entry - shellStart) / sampleDistance - entrySlice) : 0.0;
+  float exitSlice = ceil((exit - shellStart) / sampleDistance);
+  float exitCode = 0.75 - 0.24 * (exitSlice - (exit - shellStart) / sampleDistance);
   vec4 values[UV_TARGETS];
   for (int t = 0; t < UV_TARGETS; ++t)
   {
-    vec4 z = shellStart + sampleDistance * (vec4(0.0, 1.0, 2.0, 3.0) + float(4 * t));
+    vec4 index = vec4(0.0, 1.0, 2.0, 3.0) + float(4 * t);
+    vec4 z = shellStart + sampleDistance * index;
     vec4 inside = step(from, z) * step(z, vec4(to));
+    vec4 codes = max(entryCode * vec4(equal(index, vec4(entrySlice))), exitCode * vec4(equal(index, vec4(exitSlice))));
 #ifdef UV_TEXTURE
     // The bound image at each slice inside (one trilinear read each).
     vec4 scalars = vec4(0.0);
@@ -35,9 +48,9 @@ void main()
       if (inside[k] > 0.0)
         scalars[k] = ImageScalarAt(CoordinatesAt(ray, z[k])) + 1.0;
     }
-    values[t] = scalars;
+    values[t] = mix(codes, scalars, inside);
 #else
-    values[t] = inside * (atFace + (z - ray.length) * slope);
+    values[t] = mix(codes, atFace + (z - ray.length) * slope, inside);
 #endif
   }
   gl_FragData[0] = values[0];

@@ -50,31 +50,35 @@ class AccuracyTests(SceneTestCase):
         return rmse(image, reference(mesh, prop, camera, size))[0], scene
 
     def test_shell_error_falls_with_the_sample_distance(self):
+        # Without early termination (whose 0.99 threshold leaves an error floor of its own, about 7e-4
+        # here), the sampling error alone.
         mesh = analytic(12)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         camera = camera_for(mesh)
         expected = reference(mesh, prop, camera, 128)
         errors = []
         for distance in (0.1, 0.05, 0.02, 0.01):
-            scene = shell_scene(mesh, prop, camera, SampleDistance=distance)
+            scene = shell_scene(mesh, prop, camera, SampleDistance=distance, OpacityThreshold=1.0)
             errors.append(rmse(scene.render(), expected)[0])
             self.assertEqual(scene.events.errors, 0)
         print("\n  RMSE at sample distance 0.1, 0.05, 0.02, 0.01: " + ", ".join(f"{e:.3g}" for e in errors), end="")
         for coarse, fine in zip(errors, errors[1:]):
             self.assertLess(fine, 0.8 * coarse)
-        self.assertLess(errors[-1], errors[0] / 5)
-        # Measured 1.1e-2 at 0.1 down to 1.2e-3 at 0.01 (first order: rays entering and leaving the mesh
-        # between two samples).
-        self.assertLess(errors[-1], 2e-3)
+        self.assertLess(errors[-1], errors[0] / 10)
+        # Measured 5.4e-3 at 0.1 down to 1.7e-4 at 0.01: where the ray enters or leaves the mesh between
+        # two samples, the slice outside records how far off the boundary is (half a segment without it:
+        # 1.1e-2 down to 1.3e-3, first order).
+        self.assertLess(errors[-1], 3e-4)
 
     def test_default_sample_distance(self):
-        # Automatic: 128 samples across the bounding box diagonal.
+        # Automatic: 128 samples across the bounding box diagonal. Measured 9.2e-4 (early termination
+        # included).
         mesh = analytic(12)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         error, scene = self.error(mesh, prop, camera_for(mesh))
         print(f"\n  RMSE {error:.3g} at sample distance {scene.mapper.GetLastSampleDistance():.3g}", end="")
         self.assertAlmostEqual(scene.mapper.GetLastSampleDistance(), mesh.GetLength() / 128, 9)
-        self.assertLess(error, 5e-3)
+        self.assertLess(error, 2e-3)
 
     def test_cell_projection_is_exact(self):
         # The whole segment per tetrahedron, pre-integrated: measured 3.8e-7.
