@@ -125,7 +125,10 @@ public:
   ///@}
 
   ///@{
-  /// Pixels stop being shaded once their opacity reaches this (default 0.99; 1 disables).
+  /// Pixels stop being shaded once their opacity reaches this (default 0.999; 1 disables). The light
+  /// a stopped pixel leaves out is at most 1 - threshold: at 0.99 (the hexahedral mapper's default)
+  /// that was the largest error left on the benchmark's wavelet (0.0017 RMSE, twenty times the
+  /// sampling error at 512 samples across).
   vtkSetClampMacro(OpacityThreshold, double, 0.0, 1.0);
   vtkGetMacro(OpacityThreshold, double);
   ///@}
@@ -224,7 +227,7 @@ protected:
   double SampleDistance = 0.0;
   int AutomaticSamplesAcross = 128;
   int SlicesPerShell = 7;
-  double OpacityThreshold = 0.99;
+  double OpacityThreshold = 0.999;
   int SegmentIntegration = AUTOMATIC;
   int IsosurfaceLayers = 4;
   int GradientMode = VERTEX_GRADIENTS;

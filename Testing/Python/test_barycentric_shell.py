@@ -50,8 +50,8 @@ class AccuracyTests(SceneTestCase):
         return rmse(image, reference(mesh, prop, camera, size))[0], scene
 
     def test_shell_error_falls_with_the_sample_distance(self):
-        # Without early termination (whose 0.99 threshold leaves an error floor of its own, about 7e-4
-        # here), the sampling error alone.
+        # Without early termination (whose threshold leaves an error floor of its own: about 7e-4 here
+        # at 0.99), the sampling error alone.
         mesh = analytic(12)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         camera = camera_for(mesh)
