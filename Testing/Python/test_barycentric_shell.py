@@ -238,7 +238,7 @@ class DeformationTests(SceneTestCase):
             image = scene.render()
             error = rmse(image, reference(mesh, prop, camera, 96))[0]
             print(f"\n  frame {frame}: RMSE {error:.3g}", end="")
-            self.assertLess(error, 3e-3)
+            self.assertLess(error, 1.5e-3)  # measured 2e-4 .. 6e-4
         self.assertEqual(scene.mapper.GetNumberOfMeshBuilds(), 1)
         self.assertEqual(scene.mapper.GetNumberOfPointRefreshes(), 3)
         # The automatic sample distance, and so the segment table, stay as they were.
