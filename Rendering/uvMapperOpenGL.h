@@ -14,7 +14,12 @@
 
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkPointData.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -29,6 +34,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -43,6 +49,38 @@ inline glm::dmat4 ToGlm(vtkMatrix4x4* m)
     for (int column = 0; column < 4; ++column)
       result[column][row] = m->GetElement(row, column);
   return result;
+}
+
+/// Uploads `values` (float, int or unsigned int; `components` per texel) as a buffer texture.
+template <typename T>
+void UploadBufferTexture(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* buffer, vtkTextureObject* texture,
+  const std::vector<T>& values, int components)
+{
+  static_assert(sizeof(T) == 4, "32-bit texels");
+  constexpr int vtkType =
+    std::is_same<T, float>::value ? VTK_FLOAT : (std::is_signed<T>::value ? VTK_INT : VTK_UNSIGNED_INT);
+  static const unsigned int formats[3][4] = { { GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F },
+    { GL_R32I, GL_RG32I, GL_RGB32I, GL_RGBA32I }, { GL_R32UI, GL_RG32UI, GL_RGB32UI, GL_RGBA32UI } };
+  const int kind = vtkType == VTK_FLOAT ? 0 : (vtkType == VTK_INT ? 1 : 2);
+  buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
+  texture->SetContext(window);
+  texture->SetInternalFormat(formats[kind][components - 1]);
+  texture->CreateTextureBuffer(static_cast<unsigned int>(values.size() / components), components, vtkType, buffer);
+}
+
+/// Reads the float RGBA colour attachment `attachment` of the bound framebuffer into `image` (made when
+/// null), width x height.
+inline void ReadFloatImage(vtkOpenGLFramebufferObject* framebuffer, unsigned int attachment, int width, int height,
+  vtkSmartPointer<vtkImageData>& image)
+{
+  if (!image)
+    image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_FLOAT, 4);
+  framebuffer->ActivateReadBuffer(attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image->GetScalarPointer());
+  image->GetPointData()->GetScalars()->Modified();
 }
 
 /// Creates the Psi table texture (bilinear, clamped) unless it exists; the table is computed once

@@ -6,7 +6,9 @@
 #define uvTetrahedralMesh_h
 
 #include "uvOpticalModel.h"
+#include "uvVisibilitySort.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -270,6 +272,39 @@ private:
   }
 };
 
+/// The point scalar a volume mapper is set to render on `data` (its scalar mode, array access, id and
+/// name); `cellFlag` is 1 when it found cell data instead.
+inline vtkDataArray* MapperScalars(vtkAbstractVolumeMapper* mapper, vtkDataSet* data, int& cellFlag)
+{
+  return vtkAbstractMapper::GetScalars(data, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
+    mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+}
+
+/// The warnings a mesh update owes the user, each once per mapper: cells split into tetrahedra and
+/// tetrahedra left out for a NaN scalar.
+struct MeshWarnings
+{
+  bool Split = false, NaN = false;
+
+  std::vector<std::string> New(const TetrahedralMesh& mesh, vtkIdType inputCells)
+  {
+    std::vector<std::string> messages;
+    if (mesh.SplitCells > 0 && !this->Split)
+    {
+      messages.push_back(std::to_string(mesh.SplitCells) + " of " + std::to_string(inputCells) +
+        " cells are not tetrahedra: splitting them with vtkHexahedraToTetrahedra (once per data change; "
+        "split upstream to skip this)");
+      this->Split = true;
+    }
+    if (mesh.NaNTetrahedra > 0 && !this->NaN)
+    {
+      messages.push_back(std::to_string(mesh.NaNTetrahedra) + " tetrahedra touch a NaN scalar and are not drawn");
+      this->NaN = true;
+    }
+    return messages;
+  }
+};
+
 /// Closed intervals of normalised scalar where the extinction is zero: the set that decides which
 /// tetrahedra are invisible.
 inline std::vector<std::pair<double, double>> ZeroExtinctionIntervals(const std::vector<TransferFunction::Node>& nodes)
@@ -350,6 +385,85 @@ inline std::vector<float> VertexGradients(const TetrahedralMesh& mesh, vtkDataAr
   }
   return result;
 }
+
+/// Vertex gradients for lighting (4 floats per point): the point array `arrayName` of the mesh when it
+/// has 3 components, else computed (vtkVertexGradientFilter), each only once per mesh change.
+struct VertexGradientCache
+{
+  std::vector<float> Values;
+  int Computations = 0; ///< times the filter ran
+
+  /// True when the values changed (upload them again). `ignoredArray` is set when an array of that
+  /// name exists but has not 3 components (the caller warns).
+  bool Update(const TetrahedralMesh& mesh, const char* arrayName, bool& ignoredArray)
+  {
+    vtkDataArray* given = arrayName ? mesh.Tetrahedra->GetPointData()->GetArray(arrayName) : nullptr;
+    ignoredArray = given && given->GetNumberOfComponents() != 3;
+    if (ignoredArray)
+      given = nullptr;
+    const std::string key = mesh.Key() + (given ? ":given" : ":computed");
+    if (key == this->Key)
+      return false;
+    this->Values = VertexGradients(mesh, given);
+    this->Computations += given ? 0 : 1;
+    this->Key = key;
+    return true;
+  }
+
+private:
+  std::string Key;
+};
+
+/// Tetrahedra in back-to-front order of their centroids' distance from the eye (along the view under
+/// parallel projection; parallel radix sort), sorted again only when the view changes or after
+/// Invalidate (new cells, moved points).
+class CentroidOrder
+{
+public:
+  std::vector<std::uint32_t> Order;
+  int Sorts = 0;
+
+  void Invalidate() { this->Valid = false; }
+
+  /// Eye and view direction in the mesh's recentred frame. True when it sorted.
+  bool Update(const TetrahedralMesh& mesh, const std::vector<std::uint32_t>& cells, const glm::dvec3& eye,
+    const glm::dvec3& direction, bool parallel)
+  {
+    if (this->Valid && eye == this->Eye && direction == this->Direction && parallel == this->Parallel)
+      return false;
+    const std::size_t n = cells.size();
+    this->Keys.resize(n);
+    this->Order = cells;
+    const glm::vec3 eyeF(eye), directionF(direction);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const float* c = &mesh.Centroids[3 * this->Order[i]];
+        const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eyeF;
+        const float distance = parallel ? glm::dot(offset, directionF) : glm::dot(offset, offset);
+        this->Keys[i] = OrderedKey(-distance); // farthest first
+      }
+    });
+    auto parallelChunks = [](int count, const auto& function) {
+      vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType chunk = begin; chunk < end; ++chunk)
+          function(static_cast<int>(chunk));
+      });
+    };
+    RadixSortPairs(this->Keys, this->Order, this->ScratchKeys, this->ScratchOrder, parallelChunks);
+    this->Eye = eye;
+    this->Direction = direction;
+    this->Parallel = parallel;
+    this->Valid = true;
+    ++this->Sorts;
+    return true;
+  }
+
+private:
+  std::vector<std::uint32_t> Keys, ScratchKeys, ScratchOrder;
+  glm::dvec3 Eye{ 0.0 }, Direction{ 0.0 };
+  bool Parallel = false, Valid = false;
+};
 
 } // namespace uv
 

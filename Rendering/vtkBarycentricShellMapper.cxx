@@ -147,8 +147,7 @@ public:
   std::string ListKey;
   std::vector<std::uint32_t> VolumeCells, IsosurfaceCells, DrawnCells;
 
-  std::string GradientKey;
-  std::vector<float> Gradients;
+  uv::VertexGradientCache Gradients;
 
   // Per frame.
   std::vector<glm::vec3> EyePoints;
@@ -161,10 +160,7 @@ public:
   std::string AutomaticDistanceKey;
   double AutomaticDistance = 0.0;
   int SegmentTableBuilds = 0;
-  int GradientComputations = 0;
-  std::vector<std::uint32_t> SortKeys, Order, ScratchKeys, ScratchOrder;
-  std::string OrderKey; // the view, mesh and list the order is for
-  int Sorts = 0;
+  uv::CentroidOrder Order; // cell projection
   bool OrderUploaded = false;
 
   // GPU state, for one context.
@@ -187,8 +183,8 @@ public:
   int Shells = 0, SkippedShells = 0, IsosurfaceLayers = 0;
   vtkIdType DrawnTetrahedra = 0;
   double LastSampleDistance = 0.0;
-  bool WarnedSplit = false, WarnedNaN = false, WarnedMultisample = false, WarnedShells = false,
-       WarnedTexture = false;
+  uv::MeshWarnings Warned;
+  bool WarnedMultisample = false, WarnedShells = false, WarnedTexture = false;
 
   // An image sampled through the points' texture coordinates (SetTextureImage).
   vtkSmartPointer<vtkImageData> TextureImage;
@@ -278,6 +274,7 @@ public:
     }
     this->ListKey = key;
     this->IsosurfaceCellsOnGpu = false;
+    this->Order.Invalidate();
   }
 
   /// (Re)creates the screen-sized textures and the framebuffers around them.
@@ -417,11 +414,11 @@ int vtkBarycentricShellMapper::GetNumberOfSegmentTableBuilds()
 }
 int vtkBarycentricShellMapper::GetNumberOfSorts()
 {
-  return this->Impl->Sorts;
+  return this->Impl->Order.Sorts;
 }
 int vtkBarycentricShellMapper::GetNumberOfGradientComputations()
 {
-  return this->Impl->GradientComputations;
+  return this->Impl->Gradients.Computations;
 }
 int vtkBarycentricShellMapper::GetNumberOfMeshBuilds()
 {
@@ -436,9 +433,9 @@ vtkIdType vtkBarycentricShellMapper::GetMeshMemoryInBytes()
   const Internals& impl = *this->Impl;
   std::size_t bytes = sizeof(std::uint32_t) * impl.Mesh.TetrahedronPoints.size() +
     sizeof(float) * impl.Mesh.PointData.size() +
-    sizeof(std::uint32_t) * (impl.ShellCells.size() + impl.IsosurfaceCells.size() + impl.Order.size());
+    sizeof(std::uint32_t) * (impl.ShellCells.size() + impl.IsosurfaceCells.size() + impl.Order.Order.size());
   if (impl.GradientsOnGpu)
-    bytes += sizeof(float) * impl.Gradients.size();
+    bytes += sizeof(float) * impl.Gradients.Values.size();
   return static_cast<vtkIdType>(bytes);
 }
 
@@ -503,8 +500,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // ---- The mesh: rebuilt when the cells or the scalar changed, positions only when the points moved.
   int cellFlag = 0;
-  vtkDataArray* inputScalars = vtkAbstractMapper::GetScalars(
-    input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  vtkDataArray* inputScalars = uv::MapperScalars(this, input, cellFlag);
   if (textured && (!inputScalars || cellFlag != 0))
   {
     inputScalars = textureCoordinates; // the mesh's own scalar is not drawn: any point array will do
@@ -525,7 +521,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     input, inputScalars,
     [this](vtkDataSet* split) {
       int flag = 0;
-      return vtkAbstractMapper::GetScalars(split, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, flag);
+      return uv::MapperScalars(this, split, flag);
     },
     [this](double progress) { this->UpdateProgress(progress); }, change);
   if (!error.empty())
@@ -535,19 +531,9 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (change == uv::TetrahedralMesh::Change::All)
   {
-    impl.MeshOnGpu = impl.GradientsOnGpu = false;
-    if (impl.Mesh.SplitCells > 0 && !impl.WarnedSplit)
-    {
-      vtkWarningMacro(<< impl.Mesh.SplitCells << " of " << input->GetNumberOfCells()
-                      << " cells are not tetrahedra: splitting them with vtkHexahedraToTetrahedra "
-                         "(once per data change; split upstream to skip this)");
-      impl.WarnedSplit = true;
-    }
-    if (impl.Mesh.NaNTetrahedra > 0 && !impl.WarnedNaN)
-    {
-      vtkWarningMacro(<< impl.Mesh.NaNTetrahedra << " tetrahedra touch a NaN scalar and are not drawn");
-      impl.WarnedNaN = true;
-    }
+    impl.MeshOnGpu = false;
+    for (const std::string& warning : impl.Warned.New(impl.Mesh, input->GetNumberOfCells()))
+      vtkWarningMacro(<< warning);
   }
   if (change == uv::TetrahedralMesh::Change::Points)
   {
@@ -654,22 +640,11 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const bool needGradients = lit && this->GradientMode == VERTEX_GRADIENTS;
   if (needGradients)
   {
-    vtkDataArray* given = this->GradientArrayName
-      ? impl.Mesh.Tetrahedra->GetPointData()->GetArray(this->GradientArrayName)
-      : nullptr;
-    if (given && given->GetNumberOfComponents() != 3)
-    {
-      vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
-      given = nullptr;
-    }
-    const std::string gradientKey = impl.Mesh.Key() + (given ? ":given" : ":computed");
-    if (gradientKey != impl.GradientKey)
-    {
-      impl.Gradients = uv::VertexGradients(impl.Mesh, given);
-      impl.GradientComputations += given ? 0 : 1;
-      impl.GradientKey = gradientKey;
+    bool ignoredArray = false;
+    if (impl.Gradients.Update(impl.Mesh, this->GradientArrayName, ignoredArray))
       impl.GradientsOnGpu = false;
-    }
+    if (ignoredArray)
+      vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
   }
 
   // ---- Shells (front to back) and the volume cells overlapping each, or the back-to-front order.
@@ -811,36 +786,10 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     // Back to front by centroid distance (as vtkPreIntegratedTetrahedraMapper), redone only when the
     // view, the points or the drawn cells changed.
     const glm::dmat4 eyeToModel = glm::inverse(modelToEye);
-    const glm::vec3 eye(eyeToModel * glm::dvec4(0, 0, 0, 1));
-    const glm::vec3 direction(glm::normalize(glm::dvec3(eyeToModel * glm::dvec4(0, 0, -1, 0))));
-    std::string orderKey = impl.Mesh.Key() + "|" + impl.ListKey + "|" + std::to_string(parallel);
-    for (int d = 0; d < 3; ++d)
-      orderKey += "|" + std::to_string(eye[d]) + "," + std::to_string(direction[d]);
-    if (orderKey != impl.OrderKey)
-    {
-      const std::size_t n = impl.DrawnCells.size();
-      impl.SortKeys.resize(n);
-      impl.Order = impl.DrawnCells;
-      vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          const float* c = &impl.Mesh.Centroids[3 * impl.Order[i]];
-          const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eye;
-          const float distance = parallel ? glm::dot(offset, direction) : glm::dot(offset, offset);
-          impl.SortKeys[i] = uv::OrderedKey(-distance); // farthest first
-        }
-      });
-      auto parallelChunks = [](int count, const auto& function) {
-        vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
-          for (vtkIdType chunk = begin; chunk < end; ++chunk)
-            function(static_cast<int>(chunk));
-        });
-      };
-      uv::RadixSortPairs(impl.SortKeys, impl.Order, impl.ScratchKeys, impl.ScratchOrder, parallelChunks);
-      impl.OrderKey = orderKey;
+    const glm::dvec3 eye(eyeToModel * glm::dvec4(0, 0, 0, 1));
+    const glm::dvec3 direction(glm::normalize(glm::dvec3(eyeToModel * glm::dvec4(0, 0, -1, 0))));
+    if (impl.Order.Update(impl.Mesh, impl.DrawnCells, eye, direction, parallel))
       impl.OrderUploaded = false;
-      ++impl.Sorts;
-    }
   }
   impl.LastSampleDistance = sampleDistance;
 
@@ -855,31 +804,19 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   vtkOpenGLState* state = window->GetState();
   if (!impl.MeshOnGpu)
   {
-    impl.TetrahedronBuffer->Upload(impl.OrientedPoints, vtkOpenGLBufferObject::TextureBuffer);
-    impl.TetrahedronTexture->SetContext(window);
-    impl.TetrahedronTexture->SetInternalFormat(GL_RGBA32UI);
-    impl.TetrahedronTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(impl.Mesh.Size()), 4, VTK_UNSIGNED_INT, impl.TetrahedronBuffer);
+    uv::UploadBufferTexture(window, impl.TetrahedronBuffer, impl.TetrahedronTexture, impl.OrientedPoints, 4);
     impl.MeshOnGpu = true;
     impl.PointsOnGpu = false;
   }
   if (!impl.PointsOnGpu)
   {
     // A deforming mesh pays this upload and nothing else.
-    impl.PointBuffer->Upload(impl.Mesh.PointData, vtkOpenGLBufferObject::TextureBuffer);
-    impl.PointTexture->SetContext(window);
-    impl.PointTexture->SetInternalFormat(GL_RGBA32F);
-    impl.PointTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(impl.Mesh.PointData.size() / 4), 4, VTK_FLOAT, impl.PointBuffer);
+    uv::UploadBufferTexture(window, impl.PointBuffer, impl.PointTexture, impl.Mesh.PointData, 4);
     impl.PointsOnGpu = true;
   }
   if (needGradients && !impl.GradientsOnGpu)
   {
-    impl.GradientBuffer->Upload(impl.Gradients, vtkOpenGLBufferObject::TextureBuffer);
-    impl.GradientTexture->SetContext(window);
-    impl.GradientTexture->SetInternalFormat(GL_RGBA32F);
-    impl.GradientTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(impl.Gradients.size() / 4), 4, VTK_FLOAT, impl.GradientBuffer);
+    uv::UploadBufferTexture(window, impl.GradientBuffer, impl.GradientTexture, impl.Gradients.Values, 4);
     impl.GradientsOnGpu = true;
   }
   if (!impl.TransferFunctionOnGpu)
@@ -936,11 +873,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
           for (int d = 0; d < 3; ++d)
             coordinates[4 * p + d] = static_cast<float>(meshCoordinates->GetComponent(p, d));
       });
-      impl.TextureCoordinateBuffer->Upload(coordinates, vtkOpenGLBufferObject::TextureBuffer);
-      impl.TextureCoordinateTexture->SetContext(window);
-      impl.TextureCoordinateTexture->SetInternalFormat(GL_RGBA32F);
-      impl.TextureCoordinateTexture->CreateTextureBuffer(
-        static_cast<unsigned int>(count), 4, VTK_FLOAT, impl.TextureCoordinateBuffer);
+      uv::UploadBufferTexture(window, impl.TextureCoordinateBuffer, impl.TextureCoordinateTexture, coordinates, 4);
       impl.TextureCoordinatesKey = coordinatesKey;
     }
   }
@@ -979,14 +912,11 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   // Cell lists as buffer textures: both routes read a list entry by vertex id.
   auto uploadList = [window](vtkOpenGLBufferObject* buffer, vtkTextureObject* texture,
                       const std::vector<std::uint32_t>& cells) {
-    buffer->Upload(cells, vtkOpenGLBufferObject::TextureBuffer);
-    texture->SetContext(window);
-    texture->SetInternalFormat(GL_R32UI);
-    texture->CreateTextureBuffer(static_cast<unsigned int>(cells.size()), 1, VTK_UNSIGNED_INT, buffer);
+    uv::UploadBufferTexture(window, buffer, texture, cells, 1);
   };
   if (cellProjection && !impl.OrderUploaded)
   {
-    uploadList(impl.OrderBuffer, impl.OrderList, impl.Order);
+    uploadList(impl.OrderBuffer, impl.OrderList, impl.Order.Order);
     impl.OrderUploaded = true;
   }
   else
@@ -1219,8 +1149,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       state->vtkglDepthMask(GL_FALSE);
       state->vtkglEnable(GL_BLEND);
       state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-      drawCells(program, impl.OrderList, 0, impl.Order.size());
-      impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.size());
+      drawCells(program, impl.OrderList, 0, impl.Order.Order.size());
+      impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.Order.size());
     }
     failed = !program;
   }
@@ -1400,14 +1330,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   impl.AccumulationFramebuffer->Bind();
   if (this->KeepFloatImage && !failed)
   {
-    if (!impl.FloatImage)
-      impl.FloatImage = vtkSmartPointer<vtkImageData>::New();
-    impl.FloatImage->SetDimensions(width, height, 1);
-    impl.FloatImage->AllocateScalars(VTK_FLOAT, 4);
-    impl.AccumulationFramebuffer->ActivateReadBuffer(0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, impl.FloatImage->GetScalarPointer());
-    impl.FloatImage->GetPointData()->GetScalars()->Modified();
+    uv::ReadFloatImage(impl.AccumulationFramebuffer, 0, width, height, impl.FloatImage);
   }
   impl.AccumulationFramebuffer->RestorePreviousBindingsAndBuffers();
   if (failed)

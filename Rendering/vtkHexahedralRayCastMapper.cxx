@@ -491,19 +491,12 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   window->MakeCurrent();
   vtkOpenGLClearErrorMacro();
   vtkOpenGLState* state = window->GetState();
-  auto bufferTexture = [window](vtkOpenGLBufferObject* buffer, vtkTextureObject* texture, const auto& values,
-                         int components, int vtkType, unsigned int internalFormat) {
-    buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
-    texture->SetContext(window);
-    texture->SetInternalFormat(internalFormat);
-    texture->CreateTextureBuffer(static_cast<unsigned int>(values.size() / components), components, vtkType, buffer);
-  };
   if (!impl.MeshOnGpu)
   {
-    bufferTexture(impl.CellPointBuffer, impl.CellPointTexture, impl.CellPoints, 4, VTK_UNSIGNED_INT, GL_RGBA32UI);
-    bufferTexture(impl.PointBuffer, impl.PointTexture, impl.PointData, 4, VTK_FLOAT, GL_RGBA32F);
-    bufferTexture(impl.NeighbourBuffer, impl.NeighbourTexture, impl.Neighbours, 4, VTK_INT, GL_RGBA32I);
-    bufferTexture(impl.BoundaryBuffer, impl.BoundaryTexture, impl.BoundaryFaces, 4, VTK_INT, GL_RGBA32I);
+    uv::UploadBufferTexture(window, impl.CellPointBuffer, impl.CellPointTexture, impl.CellPoints, 4);
+    uv::UploadBufferTexture(window, impl.PointBuffer, impl.PointTexture, impl.PointData, 4);
+    uv::UploadBufferTexture(window, impl.NeighbourBuffer, impl.NeighbourTexture, impl.Neighbours, 4);
+    uv::UploadBufferTexture(window, impl.BoundaryBuffer, impl.BoundaryTexture, impl.BoundaryFaces, 4);
     impl.MeshOnGpu = true;
   }
   uv::EnsurePsiTexture(impl.PsiTexture, window);
@@ -685,15 +678,8 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   glDeleteQueries(1, &query);
   if (this->KeepFloatImage && !failed)
   {
-    if (!impl.FloatImage)
-      impl.FloatImage = vtkSmartPointer<vtkImageData>::New();
-    impl.FloatImage->SetDimensions(width, height, 1);
-    impl.FloatImage->AllocateScalars(VTK_FLOAT, 4);
     impl.Framebuffer->AddColorAttachment(0, impl.AccumulationTexture[source]);
-    impl.Framebuffer->ActivateReadBuffer(0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, impl.FloatImage->GetScalarPointer());
-    impl.FloatImage->GetPointData()->GetScalars()->Modified();
+    uv::ReadFloatImage(impl.Framebuffer, 0, width, height, impl.FloatImage);
   }
   impl.Framebuffer->RestorePreviousBindingsAndBuffers();
   if (failed)

@@ -59,8 +59,7 @@ public:
   // The mesh as the GPU takes it, rebuilt when the input or its scalar changes.
   uv::TetrahedralMesh Mesh;
 
-  std::string GradientKey;
-  std::vector<float> Gradients; // 4 floats per point
+  uv::VertexGradientCache Gradients;
 
   vtkMTimeType TransferFunctionTime = 0;
   std::string TransferFunctionMeshKey;
@@ -74,10 +73,7 @@ public:
   bool VisibleListSkipped = false;
   std::vector<std::uint32_t> Visible;
 
-  std::vector<std::uint32_t> SortKeys, Order, ScratchKeys, ScratchOrder;
-  glm::dvec3 SortedEye{ 0.0 }, SortedDirection{ 0.0 };
-  bool SortedParallel = false;
-  bool OrderValid = false;
+  uv::CentroidOrder Order;
 
   // GPU state, for one context.
   vtkOpenGLRenderWindow* Context = nullptr;
@@ -94,8 +90,9 @@ public:
 
   vtkSmartPointer<vtkImageData> FloatImage;
   vtkIdType DrawnTetrahedra = 0;
-  int Sorts = 0, GradientComputations = 0, MeshUploads = 0, TransferFunctionUploads = 0, VisibleListBuilds = 0;
-  bool WarnedSplit = false, WarnedNaN = false, WarnedMultisample = false;
+  int MeshUploads = 0, TransferFunctionUploads = 0, VisibleListBuilds = 0;
+  uv::MeshWarnings Warned;
+  bool WarnedMultisample = false;
 
   void ReleaseGraphics()
   {
@@ -166,19 +163,19 @@ vtkIdType vtkPreIntegratedTetrahedraMapper::GetNumberOfDrawnTetrahedra()
 }
 int vtkPreIntegratedTetrahedraMapper::GetNumberOfSorts()
 {
-  return this->Impl->Sorts;
+  return this->Impl->Order.Sorts;
 }
 int vtkPreIntegratedTetrahedraMapper::GetNumberOfGradientComputations()
 {
-  return this->Impl->GradientComputations;
+  return this->Impl->Gradients.Computations;
 }
 vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
 {
   const Internals& impl = *this->Impl;
-  std::size_t bytes = sizeof(std::uint32_t) * (impl.Mesh.TetrahedronPoints.size() + impl.Order.size()) +
+  std::size_t bytes = sizeof(std::uint32_t) * (impl.Mesh.TetrahedronPoints.size() + impl.Order.Order.size()) +
     sizeof(float) * impl.Mesh.PointData.size() + sizeof(std::uint32_t) * 12 * impl.FanIndexCount;
   if (impl.GradientsOnGpu)
-    bytes += sizeof(float) * impl.Gradients.size();
+    bytes += sizeof(float) * impl.Gradients.Values.size();
   return static_cast<vtkIdType>(bytes);
 }
 
@@ -234,8 +231,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
 
   // ---- The mesh, when the input or its scalar changed.
   int cellFlag = 0;
-  vtkDataArray* inputScalars = vtkAbstractMapper::GetScalars(
-    input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  vtkDataArray* inputScalars = uv::MapperScalars(this, input, cellFlag);
   if (!inputScalars)
   {
     vtkErrorMacro("the input has no point scalar to render (set one, or select an array with SelectScalarArray)");
@@ -251,7 +247,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     input, inputScalars,
     [this](vtkDataSet* split) {
       int flag = 0;
-      return vtkAbstractMapper::GetScalars(split, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, flag);
+      return uv::MapperScalars(this, split, flag);
     },
     [this](double progress) { this->UpdateProgress(progress); }, change);
   if (!error.empty())
@@ -261,22 +257,11 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   }
   if (change != uv::TetrahedralMesh::Change::Nothing)
   {
-    impl.MeshOnGpu = impl.GradientsOnGpu = impl.OrderOnGpu = false;
-    impl.OrderValid = false;
+    impl.MeshOnGpu = impl.OrderOnGpu = false;
+    impl.Order.Invalidate();
     impl.VisibleListValid = impl.VisibleListValid && change == uv::TetrahedralMesh::Change::Points;
-    impl.GradientKey.clear();
-    if (impl.Mesh.SplitCells > 0 && !impl.WarnedSplit)
-    {
-      vtkWarningMacro(<< impl.Mesh.SplitCells << " of " << input->GetNumberOfCells()
-                      << " cells are not tetrahedra: splitting them with vtkHexahedraToTetrahedra "
-                         "(once per data change; split upstream to skip this)");
-      impl.WarnedSplit = true;
-    }
-    if (impl.Mesh.NaNTetrahedra > 0 && !impl.WarnedNaN)
-    {
-      vtkWarningMacro(<< impl.Mesh.NaNTetrahedra << " tetrahedra touch a NaN scalar and are not drawn");
-      impl.WarnedNaN = true;
-    }
+    for (const std::string& warning : impl.Warned.New(impl.Mesh, input->GetNumberOfCells()))
+      vtkWarningMacro(<< warning);
   }
   const std::size_t tetCount = impl.Mesh.Size();
   if (tetCount == 0)
@@ -337,7 +322,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     impl.VisibleListIsovalues = isovalues;
     impl.VisibleListSkipped = this->SkipInvisibleCells;
     impl.VisibleListValid = true;
-    impl.OrderValid = false;
+    impl.Order.Invalidate();
     ++impl.VisibleListBuilds;
   }
   if (impl.Visible.empty())
@@ -368,54 +353,17 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   const bool needGradients = shade || !isovalues.empty();
   if (needGradients)
   {
-    vtkDataArray* given = this->GradientArrayName
-      ? impl.Mesh.Tetrahedra->GetPointData()->GetArray(this->GradientArrayName)
-      : nullptr;
-    const std::string gradientKey = impl.Mesh.Key() + (given ? ":given" : ":computed");
-    if (given && given->GetNumberOfComponents() != 3)
-    {
-      vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
-      given = nullptr;
-    }
-    if (gradientKey != impl.GradientKey)
-    {
-      impl.Gradients = uv::VertexGradients(impl.Mesh, given);
-      impl.GradientComputations += given ? 0 : 1;
-      impl.GradientKey = gradientKey;
+    bool ignoredArray = false;
+    if (impl.Gradients.Update(impl.Mesh, this->GradientArrayName, ignoredArray))
       impl.GradientsOnGpu = false;
-    }
+    if (ignoredArray)
+      vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
   }
 
   // ---- Visibility order: back to front by centroid distance, when the view or the list changed.
-  if (!impl.OrderValid || eyeInModel != impl.SortedEye || viewInModel != impl.SortedDirection ||
-    parallel != impl.SortedParallel)
+  if (impl.Order.Update(impl.Mesh, impl.Visible, eyeInModel, viewInModel, parallel))
   {
-    const std::size_t n = impl.Visible.size();
-    impl.SortKeys.resize(n);
-    impl.Order = impl.Visible;
-    const glm::vec3 eye(eyeInModel), direction(viewInModel);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const float* c = &impl.Mesh.Centroids[3 * impl.Order[i]];
-        const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eye;
-        const float distance = parallel ? glm::dot(offset, direction) : glm::dot(offset, offset);
-        impl.SortKeys[i] = uv::OrderedKey(-distance); // farthest first
-      }
-    });
-    auto parallelChunks = [](int count, const auto& function) {
-      vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType chunk = begin; chunk < end; ++chunk)
-          function(static_cast<int>(chunk));
-      });
-    };
-    uv::RadixSortPairs(impl.SortKeys, impl.Order, impl.ScratchKeys, impl.ScratchOrder, parallelChunks);
-    impl.SortedEye = eyeInModel;
-    impl.SortedDirection = viewInModel;
-    impl.SortedParallel = parallel;
-    impl.OrderValid = true;
     impl.OrderOnGpu = false;
-    ++impl.Sorts;
   }
 
   // ---- GPU resources.
@@ -429,26 +377,14 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   vtkOpenGLState* state = window->GetState();
   if (!impl.MeshOnGpu)
   {
-    impl.TetrahedronBuffer->Upload(impl.Mesh.TetrahedronPoints, vtkOpenGLBufferObject::TextureBuffer);
-    impl.TetrahedronTexture->SetContext(window);
-    impl.TetrahedronTexture->SetInternalFormat(GL_RGBA32UI);
-    impl.TetrahedronTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(tetCount), 4, VTK_UNSIGNED_INT, impl.TetrahedronBuffer);
-    impl.PointBuffer->Upload(impl.Mesh.PointData, vtkOpenGLBufferObject::TextureBuffer);
-    impl.PointTexture->SetContext(window);
-    impl.PointTexture->SetInternalFormat(GL_RGBA32F);
-    impl.PointTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(impl.Mesh.PointData.size() / 4), 4, VTK_FLOAT, impl.PointBuffer);
+    uv::UploadBufferTexture(window, impl.TetrahedronBuffer, impl.TetrahedronTexture, impl.Mesh.TetrahedronPoints, 4);
+    uv::UploadBufferTexture(window, impl.PointBuffer, impl.PointTexture, impl.Mesh.PointData, 4);
     impl.MeshOnGpu = true;
     ++impl.MeshUploads;
   }
   if (needGradients && !impl.GradientsOnGpu)
   {
-    impl.GradientBuffer->Upload(impl.Gradients, vtkOpenGLBufferObject::TextureBuffer);
-    impl.GradientTexture->SetContext(window);
-    impl.GradientTexture->SetInternalFormat(GL_RGBA32F);
-    impl.GradientTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(impl.Gradients.size() / 4), 4, VTK_FLOAT, impl.GradientBuffer);
+    uv::UploadBufferTexture(window, impl.GradientBuffer, impl.GradientTexture, impl.Gradients.Values, 4);
     impl.GradientsOnGpu = true;
   }
   if (!impl.TransferFunctionOnGpu)
@@ -469,23 +405,19 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   {
     if (pulling)
     {
-      impl.OrderTexelBuffer->Upload(impl.Order, vtkOpenGLBufferObject::TextureBuffer);
-      impl.OrderTexture->SetContext(window);
-      impl.OrderTexture->SetInternalFormat(GL_R32UI);
-      impl.OrderTexture->CreateTextureBuffer(
-        static_cast<unsigned int>(impl.Order.size()), 1, VTK_UNSIGNED_INT, impl.OrderTexelBuffer);
+      uv::UploadBufferTexture(window, impl.OrderTexelBuffer, impl.OrderTexture, impl.Order.Order, 1);
     }
     else
     {
-      impl.OrderBuffer->Upload(impl.Order, vtkOpenGLBufferObject::ElementArrayBuffer);
+      impl.OrderBuffer->Upload(impl.Order.Order, vtkOpenGLBufferObject::ElementArrayBuffer);
     }
     impl.OrderOnGpu = true;
     impl.OrderRoute = this->ProjectionRoute;
   }
-  if (pulling && impl.FanIndexCount < impl.Order.size())
+  if (pulling && impl.FanIndexCount < impl.Order.Order.size())
   {
     // Fixed for a given count: triangle t of the tetrahedron in place q is (5q+4, 5q+t, 5q+(t+1)%4).
-    const std::size_t n = impl.Order.size();
+    const std::size_t n = impl.Order.Order.size();
     std::vector<std::uint32_t> indices(12 * n);
     vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType q = begin; q < end; ++q)
@@ -615,30 +547,23 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   {
     program->SetUniformi("drawOrder", impl.OrderTexture->GetTextureUnit());
     impl.FanIndexBuffer->Bind();
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(12 * impl.Order.size()), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(12 * impl.Order.Order.size()), GL_UNSIGNED_INT, nullptr);
     impl.FanIndexBuffer->Release();
   }
   else
   {
     impl.OrderBuffer->Bind();
-    glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.Order.size()), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_POINTS, static_cast<GLsizei>(impl.Order.Order.size()), GL_UNSIGNED_INT, nullptr);
     impl.OrderBuffer->Release();
   }
   impl.NoAttributes->Release();
   for (vtkTextureObject* texture : active)
     texture->Deactivate();
-  impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.size());
+  impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.Order.size());
 
   if (this->KeepFloatImage)
   {
-    if (!impl.FloatImage)
-      impl.FloatImage = vtkSmartPointer<vtkImageData>::New();
-    impl.FloatImage->SetDimensions(width, height, 1);
-    impl.FloatImage->AllocateScalars(VTK_FLOAT, 4);
-    impl.Framebuffer->ActivateReadBuffer(0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, impl.FloatImage->GetScalarPointer());
-    impl.FloatImage->GetPointData()->GetScalars()->Modified();
+    uv::ReadFloatImage(impl.Framebuffer, 0, width, height, impl.FloatImage);
   }
   impl.Framebuffer->RestorePreviousBindingsAndBuffers();
 
