@@ -11,12 +11,13 @@ import uvrender  # noqa: E402
 import test_preintegrated_tetrahedra as pt  # noqa: E402  (its test classes stay in their own module)
 from test_preintegrated_tetrahedra import (ML, STEINER, Scene, SceneTestCase, analytic, camera_for,  # noqa: E402
                                            finite_image, reference, rmse, spike_property, vtkImageDataCopy)
-from test_hexahedral_ray_cast import transparent_property  # noqa: E402
+from test_hexahedral_ray_cast import (covered_colour_error, plane_scene_setup, thin_shell_property,  # noqa: E402
+                                     transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
                                 vtkVolumeImageErrorMetrics)
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints  # noqa: E402
-from vtkmodules.vtkCommonDataModel import VTK_QUADRATIC_TETRA, vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkDoubleArray  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper  # noqa: E402
 
@@ -131,15 +132,7 @@ class IsosurfaceTests(SceneTestCase):
         value = low + 0.55 * (high - low)
         color = (0.9, 0.6, 0.2)
         camera = camera_for(mesh, 35, 20, distance=1.5)
-        shell = transparent_property(color)
-        opacity = shell.GetScalarOpacity()
-        opacity.RemoveAllPoints()
-        width = 1e-4 * (high - low)
-        for s, a in ((low, 0.0), (value - width, 0.0), (value - 0.5 * width, 0.999), (value + 0.5 * width, 0.999),
-                     (value + width, 0.0), (high, 0.0)):
-            opacity.AddPoint(s, a)
-        shell.SetScalarOpacityUnitDistance(1e-7 * mesh.GetLength())
-        expected = reference(mesh, shell, camera, 128)
+        expected = reference(mesh, thin_shell_property(low, high, value, color, mesh.GetLength()), camera, 128)
         for mode in (SHELLS, CELL_PROJECTION):
             scene = shell_scene(mesh, transparent_property(color), camera, RenderMode=mode)
             scene.mapper.AddIsosurface(value, *color, 1.0)
@@ -183,34 +176,13 @@ class IsosurfaceTests(SceneTestCase):
         # A linear field of position: its isosurface is a plane, its vertex gradients exact, so under a
         # parallel headlight every covered pixel has the same analytic Phong colour, in both modes.
         mesh = analytic(4, distortion=vtkAnalyticMeshSource.JITTER)
-        gradient = (0.3, -0.5, 0.8)
-        values = vtkDoubleArray()
-        values.SetName("plane")
-        for i in range(mesh.GetNumberOfPoints()):
-            values.InsertNextValue(sum(g * x for g, x in zip(gradient, mesh.GetPoint(i))))
-        mesh.GetPointData().SetScalars(values)
         camera = camera_for(mesh, 30, 25, parallel=True)
-        prop = transparent_property()
-        prop.SetAmbient(0.15)
-        prop.SetDiffuse(0.7)
-        prop.SetSpecular(0.3)
-        prop.SetSpecularPower(8)
         color = (0.2, 0.6, 1.0)
-        view = camera.GetDirectionOfProjection()
-        norm = math.sqrt(sum(g * g for g in gradient))
-        lambert = abs(sum(g * v for g, v in zip(gradient, view))) / norm
-        highlight = max(2 * lambert * lambert - 1, 0.0) ** 8
-        expected = [c * (0.15 + 0.7 * lambert) + 0.3 * highlight for c in color]
+        prop, expected = plane_scene_setup(mesh, camera, color)
         for mode, gradients in ((SHELLS, VERTEX), (CELL_PROJECTION, VERTEX), (SHELLS, CELL), (CELL_PROJECTION, CELL)):
             scene = shell_scene(mesh, prop, camera, RenderMode=mode, GradientMode=gradients)
             scene.mapper.AddIsosurface(0.1, *color, 1.0)
-            rgba = scene.render().GetPointData().GetScalars()
-            covered, worst = 0, 0.0
-            for i in range(rgba.GetNumberOfTuples()):
-                pixel = rgba.GetTuple4(i)
-                if pixel[3] > 0.999:
-                    covered += 1
-                    worst = max(worst, max(abs(pixel[k] - expected[k]) for k in range(3)))
+            covered, worst = covered_colour_error(scene.render(), expected)
             print(f"\n  mode {mode}, gradients {gradients}: {covered} covered pixels, worst colour error {worst:.3g}",
                   end="")
             self.assertEqual(scene.mapper.GetNumberOfGradientComputations(), 1 if gradients == VERTEX else 0)
@@ -537,49 +509,10 @@ class ViewportTests(unittest.TestCase):
         self.assertEqual(int(beside[:, :64].max() - beside[:, :64].min()), 0)  # nothing drawn left of it
 
 
-class InputTests(SceneTestCase):
+class InputTests(pt.TetrahedralInputChecks, SceneTestCase):
     def scene(self, mesh, prop=None, **settings):
         prop = prop or uvrender.volume_property((0.0, 1.0))
         return shell_scene(mesh, prop, camera_for(analytic(2)), 48, **settings)
-
-    def test_missing_and_cell_scalars_are_errors(self):
-        mesh = analytic(3)
-        no_scalars = vtkUnstructuredGrid()
-        no_scalars.CopyStructure(mesh)
-        scene = self.scene(no_scalars)
-        scene.render()
-        self.assertEqual(scene.events.errors, 1)
-        cells = vtkUnstructuredGrid()
-        cells.CopyStructure(mesh)
-        values = vtkDoubleArray()
-        values.SetNumberOfTuples(mesh.GetNumberOfCells())
-        values.Fill(0.5)
-        cells.GetCellData().SetScalars(values)
-        scene = self.scene(cells)
-        scene.mapper.SetScalarModeToUseCellData()
-        scene.render()
-        self.assertEqual(scene.events.errors, 1)
-
-    def test_empty_grid_draws_nothing_quietly(self):
-        scene = self.scene(vtkUnstructuredGrid())
-        scene.render()
-        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
-
-    def test_quadratic_cells_are_an_error(self):
-        grid = vtkUnstructuredGrid()
-        points = vtkPoints()
-        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (.5, 0, 0), (.5, .5, 0), (0, .5, 0), (0, 0, .5),
-                  (.5, 0, .5), (0, .5, .5)):
-            points.InsertNextPoint(*p)
-        grid.SetPoints(points)
-        grid.InsertNextCell(VTK_QUADRATIC_TETRA, 10, list(range(10)))
-        values = vtkDoubleArray()
-        values.SetNumberOfTuples(10)
-        values.Fill(0.5)
-        grid.GetPointData().SetScalars(values)
-        scene = self.scene(grid)
-        scene.render()
-        self.assertGreaterEqual(scene.events.errors, 1)
 
     def test_hexahedra_are_split_with_one_warning(self):
         hexes = analytic(4, ML, 0, vtkAnalyticMeshSource.HEXAHEDRA)

@@ -210,6 +210,57 @@ def transparent_property(color=(0.9, 0.6, 0.2)):
     return prop
 
 
+def thin_shell_property(low, high, value, color, length):
+    """An unlit, very opaque shell of the transfer function 1e-4 of the range wide around `value`: what
+    an opaque isosurface is the limit of, for the reference to render."""
+    shell = transparent_property(color)
+    opacity = shell.GetScalarOpacity()
+    opacity.RemoveAllPoints()
+    width = 1e-4 * (high - low)
+    for s, a in ((low, 0.0), (value - width, 0.0), (value - 0.5 * width, 0.999), (value + 0.5 * width, 0.999),
+                 (value + width, 0.0), (high, 0.0)):
+        opacity.AddPoint(s, a)
+    shell.SetScalarOpacityUnitDistance(1e-7 * length)
+    return shell
+
+
+PLANE_GRADIENT = (0.3, -0.5, 0.8)
+
+
+def plane_scene_setup(mesh, camera, color):
+    """Sets the linear field PLANE_GRADIENT . x as the mesh's scalar; returns a transparent lit property
+    and the analytic Phong colour of its isosurface (a plane, one normal) under the renderer's
+    headlight and `camera`'s parallel view."""
+    values = vtkDoubleArray()
+    values.SetName("plane")
+    for i in range(mesh.GetNumberOfPoints()):
+        values.InsertNextValue(sum(g * x for g, x in zip(PLANE_GRADIENT, mesh.GetPoint(i))))
+    mesh.GetPointData().SetScalars(values)
+    prop = transparent_property()
+    prop.SetAmbient(0.15)
+    prop.SetDiffuse(0.7)
+    prop.SetSpecular(0.3)
+    prop.SetSpecularPower(8)
+    # Headlight and parallel view: the light and the eye are both along the view direction.
+    view = camera.GetDirectionOfProjection()
+    norm = math.sqrt(sum(g * g for g in PLANE_GRADIENT))
+    lambert = abs(sum(g * v for g, v in zip(PLANE_GRADIENT, view))) / norm
+    highlight = max(2 * lambert * lambert - 1, 0.0) ** 8
+    return prop, [c * (0.15 + 0.7 * lambert) + 0.3 * highlight for c in color]
+
+
+def covered_colour_error(image, expected):
+    """The pixels of a float image opaque to 0.999, and their largest colour difference from `expected`."""
+    rgba = image.GetPointData().GetScalars()
+    covered, worst = 0, 0.0
+    for i in range(rgba.GetNumberOfTuples()):
+        pixel = rgba.GetTuple4(i)
+        if pixel[3] > 0.999:
+            covered += 1
+            worst = max(worst, max(abs(pixel[k] - expected[k]) for k in range(3)))
+    return covered, worst
+
+
 class IsosurfaceTests(SceneTestCase):
     def test_position_against_an_opaque_shell_in_the_reference(self):
         # An unlit opaque isosurface is the limit of a thin, very opaque shell of the transfer
@@ -221,15 +272,7 @@ class IsosurfaceTests(SceneTestCase):
         value = low + 0.55 * (high - low)
         color = (0.9, 0.6, 0.2)
         camera = camera_for(mesh, 35, 20, distance=1.5)
-        shell = transparent_property(color)
-        opacity = shell.GetScalarOpacity()
-        opacity.RemoveAllPoints()
-        width = 1e-4 * (high - low)
-        for s, a in ((low, 0.0), (value - width, 0.0), (value - 0.5 * width, 0.999), (value + 0.5 * width, 0.999),
-                     (value + width, 0.0), (high, 0.0)):
-            opacity.AddPoint(s, a)
-        shell.SetScalarOpacityUnitDistance(1e-7 * mesh.GetLength())
-        expected = reference(mesh, shell, camera, 128)
+        expected = reference(mesh, thin_shell_property(low, high, value, color, mesh.GetLength()), camera, 128)
         scene = HexScene(mesh, transparent_property(color), camera)
         scene.mapper.AddIsosurface(value, *color, 1.0)
         image = scene.render()
@@ -251,35 +294,12 @@ class IsosurfaceTests(SceneTestCase):
         # plane with one normal, so under a parallel headlight every covered pixel has the same
         # analytic Phong colour. Twisted (non-orthogonal) cells check the gradient's J^-T.
         mesh = analytic(4, distortion=vtkAnalyticMeshSource.TWIST)
-        gradient = (0.3, -0.5, 0.8)
-        values = vtkDoubleArray()
-        values.SetName("plane")
-        for i in range(mesh.GetNumberOfPoints()):
-            values.InsertNextValue(sum(g * x for g, x in zip(gradient, mesh.GetPoint(i))))
-        mesh.GetPointData().SetScalars(values)
         camera = camera_for(mesh, 30, 25, parallel=True)
-        prop = transparent_property()
-        prop.SetAmbient(0.15)
-        prop.SetDiffuse(0.7)
-        prop.SetSpecular(0.3)
-        prop.SetSpecularPower(8)
         color = (0.2, 0.6, 1.0)
+        prop, expected = plane_scene_setup(mesh, camera, color)
         scene = HexScene(mesh, prop, camera)
         scene.mapper.AddIsosurface(0.1, *color, 1.0)
-        image = scene.render()
-        # Headlight and parallel view: the light and the eye are both along the view direction.
-        view = camera.GetDirectionOfProjection()
-        norm = math.sqrt(sum(g * g for g in gradient))
-        lambert = abs(sum(g * v for g, v in zip(gradient, view))) / norm
-        highlight = max(2 * lambert * lambert - 1, 0.0) ** 8
-        expected = [c * (0.15 + 0.7 * lambert) + 0.3 * highlight for c in color]
-        rgba = image.GetPointData().GetScalars()
-        covered, worst = 0, 0.0
-        for i in range(rgba.GetNumberOfTuples()):
-            pixel = rgba.GetTuple4(i)
-            if pixel[3] > 0.999:
-                covered += 1
-                worst = max(worst, max(abs(pixel[k] - expected[k]) for k in range(3)))
+        covered, worst = covered_colour_error(scene.render(), expected)
         print(f"\n  {covered} covered pixels, worst colour error {worst:.3g}", end="")
         self.assertEqual(scene.events.errors, 0)
         self.assertGreater(covered, 2000)

@@ -388,32 +388,9 @@ def vtkImageDataCopy(image):
     return copy
 
 
-class InputTests(SceneTestCase):
-    def scene(self, mesh, prop=None):
-        prop = prop or uvrender.volume_property((0.0, 1.0))
-        return Scene(mesh, prop, camera_for(analytic(2)), 48)
-
-    def test_multi_component_scalars_render_their_first_component(self):
-        # ParaView's "Use Separate Opacity Array" hands over "<array>_and_opacity" (2 components);
-        # the first is rendered, shading's gradients included, with no error.
-        mesh = analytic(3)
-        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-        prop.ShadeOn()
-        single = vtkImageDataCopy(self.scene(mesh, prop).render())
-        scalars = mesh.GetPointData().GetScalars()
-        pair = scalars.NewInstance()  # the same precision as the single-component render
-        pair.SetName("pair")
-        pair.SetNumberOfComponents(2)
-        pair.SetNumberOfTuples(scalars.GetNumberOfTuples())
-        pair.CopyComponent(0, scalars, 0)
-        pair.FillComponent(1, 0.5)
-        two = vtkUnstructuredGrid()
-        two.ShallowCopy(mesh)
-        two.GetPointData().SetScalars(pair)
-        scene = self.scene(two, prop)
-        image = scene.render()
-        self.assertEqual(scene.events.errors, 0)
-        self.assertLess(rmse(image, single)[1], 1e-6)
+class TetrahedralInputChecks:
+    """Bad input every tetrahedral mapper reports the same way; a mixin for each mapper's InputTests,
+    whose scene(mesh, prop=None) builds a small scene with that mapper."""
 
     def test_missing_and_cell_scalars_are_errors(self):
         mesh = analytic(3)
@@ -453,6 +430,34 @@ class InputTests(SceneTestCase):
         scene = self.scene(grid)
         scene.render()
         self.assertGreaterEqual(scene.events.errors, 1)
+
+
+class InputTests(TetrahedralInputChecks, SceneTestCase):
+    def scene(self, mesh, prop=None):
+        prop = prop or uvrender.volume_property((0.0, 1.0))
+        return Scene(mesh, prop, camera_for(analytic(2)), 48)
+
+    def test_multi_component_scalars_render_their_first_component(self):
+        # ParaView's "Use Separate Opacity Array" hands over "<array>_and_opacity" (2 components);
+        # the first is rendered, shading's gradients included, with no error.
+        mesh = analytic(3)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        prop.ShadeOn()
+        single = vtkImageDataCopy(self.scene(mesh, prop).render())
+        scalars = mesh.GetPointData().GetScalars()
+        pair = scalars.NewInstance()  # the same precision as the single-component render
+        pair.SetName("pair")
+        pair.SetNumberOfComponents(2)
+        pair.SetNumberOfTuples(scalars.GetNumberOfTuples())
+        pair.CopyComponent(0, scalars, 0)
+        pair.FillComponent(1, 0.5)
+        two = vtkUnstructuredGrid()
+        two.ShallowCopy(mesh)
+        two.GetPointData().SetScalars(pair)
+        scene = self.scene(two, prop)
+        image = scene.render()
+        self.assertEqual(scene.events.errors, 0)
+        self.assertLess(rmse(image, single)[1], 1e-6)
 
     def test_nan_scalars_leave_out_their_tetrahedra(self):
         mesh = analytic(4)
