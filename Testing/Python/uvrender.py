@@ -96,15 +96,19 @@ def write_png(window, path):
     return path
 
 
-def render_projected_tetrahedra(tets, scalar, path, size=512):
-    """Volume-renders a tetrahedral grid with VTK's vtkProjectedTetrahedraMapper."""
-    tets.GetPointData().SetActiveScalars(scalar)
-    mapper = vtkProjectedTetrahedraMapper()
-    mapper.SetInputData(tets)
+def _render_volume(mapper, mesh, scalar, path, size):
+    """Volume-renders `mesh` by `mapper` with the standard property, view and boundary wireframe."""
+    mesh.GetPointData().SetActiveScalars(scalar)
+    mapper.SetInputData(mesh)
     volume = vtkVolume()
     volume.SetMapper(mapper)
-    volume.SetProperty(volume_property(tets.GetPointData().GetArray(scalar).GetRange()))
-    return _render_scene([volume], tets, size, path)
+    volume.SetProperty(volume_property(mesh.GetPointData().GetArray(scalar).GetRange()))
+    return _render_scene([volume], mesh, size, path)
+
+
+def render_projected_tetrahedra(tets, scalar, path, size=512):
+    """Volume-renders a tetrahedral grid with VTK's vtkProjectedTetrahedraMapper."""
+    return _render_volume(vtkProjectedTetrahedraMapper(), tets, scalar, path, size)
 
 
 def render_preintegrated_tetrahedra(tets, scalar, path, size=512, isovalue=None):
@@ -127,25 +131,13 @@ def render_preintegrated_tetrahedra(tets, scalar, path, size=512, isovalue=None)
 def render_barycentric_shells(tets, scalar, path, size=512):
     """Volume-renders a tetrahedral grid with this project's vtkBarycentricShellMapper (default shells)."""
     from unstructuredvolume import vtkBarycentricShellMapper
-    tets.GetPointData().SetActiveScalars(scalar)
-    mapper = vtkBarycentricShellMapper()
-    mapper.SetInputData(tets)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(volume_property(tets.GetPointData().GetArray(scalar).GetRange()))
-    return _render_scene([volume], tets, size, path)
+    return _render_volume(vtkBarycentricShellMapper(), tets, scalar, path, size)
 
 
 def render_hexahedral_ray_cast(mesh, scalar, path, size=512):
     """Volume-renders a hexahedral grid with this project's vtkHexahedralRayCastMapper (no split)."""
     from unstructuredvolume import vtkHexahedralRayCastMapper
-    mesh.GetPointData().SetActiveScalars(scalar)
-    mapper = vtkHexahedralRayCastMapper()
-    mapper.SetInputData(mesh)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(volume_property(mesh.GetPointData().GetArray(scalar).GetRange()))
-    return _render_scene([volume], mesh, size, path)
+    return _render_volume(vtkHexahedralRayCastMapper(), mesh, scalar, path, size)
 
 
 def render_gradient_cut(grid, gradients, path, size=512):
