@@ -57,7 +57,6 @@ vtkStandardNewMacro(vtkHexahedralRayCastMapper);
 
 namespace
 {
-constexpr int MaximumUniformNodes = 64; // as UV_MAX_UNIFORM_NODES in the traversal shader
 
 /// A face by its sorted point ids, and which cell's local face it is.
 struct FaceRecord
@@ -407,32 +406,27 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     vtkErrorMacro("the volume property has no scalar opacity function");
     return;
   }
-  if (nodes.size() > static_cast<std::size_t>(MaximumUniformNodes))
+  if (nodes.size() > static_cast<std::size_t>(uv::MaximumUniformNodes))
   {
     // Fewer subdivisions of curved functions first; resample evenly as a last resort.
     nodes = uv::TransferFunctionNodes(property, 1);
-    if (nodes.size() > static_cast<std::size_t>(MaximumUniformNodes))
+    if (nodes.size() > static_cast<std::size_t>(uv::MaximumUniformNodes))
     {
       const uv::TransferFunction tf(nodes);
       const double first = nodes.front().Scalar, last = nodes.back().Scalar;
       nodes.clear();
-      for (int k = 0; k < MaximumUniformNodes; ++k)
+      for (int k = 0; k < uv::MaximumUniformNodes; ++k)
       {
-        const double s = first + (last - first) * k / (MaximumUniformNodes - 1);
+        const double s = first + (last - first) * k / (uv::MaximumUniformNodes - 1);
         const auto n = tf.Evaluate(s);
         nodes.push_back({ s, n.Color, n.Extinction });
       }
-      vtkWarningMacro("more than " << MaximumUniformNodes << " transfer-function nodes: resampled to that many");
+      vtkWarningMacro("more than " << uv::MaximumUniformNodes << " transfer-function nodes: resampled to that many");
     }
   }
-  std::vector<float> nodeValues(4 * MaximumUniformNodes, 0.0f), nodeScalars(MaximumUniformNodes, 0.0f);
-  for (std::size_t k = 0; k < nodes.size(); ++k)
+  for (auto& node : nodes)
   {
-    nodeValues[4 * k + 0] = static_cast<float>(nodes[k].Color.r);
-    nodeValues[4 * k + 1] = static_cast<float>(nodes[k].Color.g);
-    nodeValues[4 * k + 2] = static_cast<float>(nodes[k].Color.b);
-    nodeValues[4 * k + 3] = static_cast<float>(nodes[k].Extinction);
-    nodeScalars[k] = static_cast<float>((nodes[k].Scalar - impl.ScalarOffset) * impl.ScalarScale);
+    node.Scalar = (node.Scalar - impl.ScalarOffset) * impl.ScalarScale;
   }
 
   // ---- Camera.
@@ -541,7 +535,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
 
-  const std::string defines = "#define UV_MAX_UNIFORM_NODES " + std::to_string(MaximumUniformNodes) + "\n";
+  const std::string defines = uv::TransferFunctionDefines(nodes); // at most 64 nodes: uniforms
   const std::initializer_list<std::pair<const char*, const char*>> faces = { { "//UV::BilinearFace", uvBilinearFaceLib } };
   const std::string entryVertexSource = uv::ShaderSource(uvHexahedralEntryVS, defines);
   const std::string entryFragmentSource = uv::ShaderSource(uvHexahedralEntryFS, defines, faces);
@@ -641,8 +635,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     traverse->SetUniformi("cellPoints", impl.CellPointTexture->GetTextureUnit());
     traverse->SetUniformi("cellNeighbours", impl.NeighbourTexture->GetTextureUnit());
     traverse->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
-    traverse->SetUniformi("psiTable", impl.PsiTexture->GetTextureUnit());
-    traverse->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
+    uv::SetTransferFunctionUniforms(traverse, nodes, nullptr, impl.PsiTexture); // at most 64: uniforms
     traverse->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
     traverse->SetUniformi("isosurfaceCount", static_cast<int>(isosurfaces.size()));
     traverse->SetUniformMatrix4x4("modelToEye", const_cast<float*>(glm::value_ptr(modelToEyeF)));
@@ -656,12 +649,9 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     traverse->SetUniformi("exactEnds", this->ExactSegmentEnds ? 1 : 0);
     traverse->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
     traverse->SetUniformi("maximumCells", static_cast<int>(std::min<std::size_t>(cellCount + 8, 1 << 20)));
-    traverse->SetUniformi("nodeCount", static_cast<int>(nodes.size()));
     traverse->SetUniformi("eyeCell", peel == 0 ? eyeCell : -1);
     const float eye[3] = { static_cast<float>(eyeModel.x), static_cast<float>(eyeModel.y), static_cast<float>(eyeModel.z) };
     traverse->SetUniform3f("eyeModel", eye);
-    traverse->SetUniform4fv("nodeValues", MaximumUniformNodes, nodeValues.data());
-    traverse->SetUniform4fv("nodeScalars", MaximumUniformNodes / 4, nodeScalars.data());
     impl.NoAttributes->Bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     impl.NoAttributes->Release();
