@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -130,6 +131,33 @@ inline std::vector<TransferFunction::Node> TransferFunctionNodes(
   }
   return nodes;
 }
+
+/// A property's nodes with their scalars normalised as a mapper uploads its field ((s - offset) *
+/// scale), rebuilt only when the property or the normalisation changes.
+class NormalisedTransferFunction
+{
+public:
+  std::vector<TransferFunction::Node> Nodes;
+
+  /// True when the nodes were rebuilt (upload them again; isovalues normalised the same way too).
+  /// Nodes stays empty when the property has no opacity function.
+  bool Update(vtkVolumeProperty* property, double offset, double scale)
+  {
+    if (property->GetMTime() == this->Time && offset == this->Offset && scale == this->Scale)
+      return false;
+    this->Nodes = TransferFunctionNodes(property);
+    for (auto& node : this->Nodes)
+      node.Scalar = (node.Scalar - offset) * scale;
+    this->Time = property->GetMTime();
+    this->Offset = offset;
+    this->Scale = scale;
+    return true;
+  }
+
+private:
+  vtkMTimeType Time = 0;
+  double Offset = std::numeric_limits<double>::quiet_NaN(), Scale = std::numeric_limits<double>::quiet_NaN();
+};
 
 } // namespace uv
 

@@ -136,9 +136,8 @@ public:
   uv::TetrahedralMesh Mesh;
   std::vector<std::uint32_t> OrientedPoints; // Mesh.TetrahedronPoints, each positively oriented
 
-  vtkMTimeType TransferFunctionTime = 0;
-  std::string TransferFunctionMeshKey;
-  std::vector<uv::TransferFunction::Node> Nodes; // normalised scalars
+  uv::NormalisedTransferFunction TransferFunction;
+  const std::vector<uv::TransferFunction::Node>& Nodes = TransferFunction.Nodes; // normalised scalars
   uv::IsosurfaceList Isosurfaces;
   vtkMTimeType IsosurfaceTime = 0, UploadedIsosurfaceTime = 0;
 
@@ -577,23 +576,15 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     scalarOffset = range[0];
     scalarScale = range[1] > range[0] ? 1.0 / (range[1] - range[0]) : 1.0;
   }
-  const std::string scalarKey = std::to_string(scalarOffset) + ":" + std::to_string(scalarScale);
-  if (property->GetMTime() != impl.TransferFunctionTime || impl.TransferFunctionMeshKey != scalarKey)
+  if (impl.TransferFunction.Update(property, scalarOffset, scalarScale))
   {
-    impl.Nodes = uv::TransferFunctionNodes(property);
-    if (impl.Nodes.empty())
-    {
-      vtkErrorMacro("the volume property has no scalar opacity function");
-      return;
-    }
-    for (auto& node : impl.Nodes)
-    {
-      node.Scalar = (node.Scalar - scalarOffset) * scalarScale;
-    }
-    impl.TransferFunctionTime = property->GetMTime();
-    impl.TransferFunctionMeshKey = scalarKey;
     impl.TransferFunctionOnGpu = false;
     impl.UploadedIsosurfaceTime = 0; // isovalues are normalised the same way
+  }
+  if (impl.Nodes.empty())
+  {
+    vtkErrorMacro("the volume property has no scalar opacity function");
+    return;
   }
   std::vector<uv::Isosurface> drawnIsosurfaces = impl.Isosurfaces.Drawn(scalarOffset, scalarScale);
   if (textured && (!drawnIsosurfaces.empty() || this->RenderMode == CELL_PROJECTION))

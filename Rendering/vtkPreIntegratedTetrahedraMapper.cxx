@@ -61,9 +61,8 @@ public:
 
   uv::VertexGradientCache Gradients;
 
-  vtkMTimeType TransferFunctionTime = 0;
-  std::string TransferFunctionMeshKey;
-  std::vector<uv::TransferFunction::Node> Nodes; // normalised scalars
+  uv::NormalisedTransferFunction TransferFunction;
+  const std::vector<uv::TransferFunction::Node>& Nodes = TransferFunction.Nodes; // normalised scalars
   uv::IsosurfaceList Isosurfaces;
   vtkMTimeType IsosurfaceTime = 0, UploadedIsosurfaceTime = 0;
 
@@ -271,21 +270,14 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
 
   // ---- Transfer function and isosurfaces, normalised like the scalar.
   vtkVolumeProperty* property = volume->GetProperty();
-  if (property->GetMTime() != impl.TransferFunctionTime || impl.TransferFunctionMeshKey != impl.Mesh.Key())
+  if (impl.TransferFunction.Update(property, impl.Mesh.ScalarOffset, impl.Mesh.ScalarScale))
   {
-    impl.Nodes = uv::TransferFunctionNodes(property);
-    if (impl.Nodes.empty())
-    {
-      vtkErrorMacro("the volume property has no scalar opacity function");
-      return;
-    }
-    for (auto& node : impl.Nodes)
-    {
-      node.Scalar = (node.Scalar - impl.Mesh.ScalarOffset) * impl.Mesh.ScalarScale;
-    }
-    impl.TransferFunctionTime = property->GetMTime();
-    impl.TransferFunctionMeshKey = impl.Mesh.Key();
     impl.TransferFunctionOnGpu = false;
+  }
+  if (impl.Nodes.empty())
+  {
+    vtkErrorMacro("the volume property has no scalar opacity function");
+    return;
   }
   const std::vector<uv::Isosurface> drawnIsosurfaces = impl.Isosurfaces.Drawn(impl.Mesh.ScalarOffset, impl.Mesh.ScalarScale);
   std::vector<double> isovalues;
@@ -393,8 +385,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
     impl.TransferFunctionOnGpu = true;
     ++impl.TransferFunctionUploads;
   }
-  if (impl.UploadedIsosurfaceTime != impl.IsosurfaceTime || !impl.IsosurfaceTexture->GetHandle() ||
-    impl.TransferFunctionMeshKey != impl.Mesh.Key())
+  if (impl.UploadedIsosurfaceTime != impl.IsosurfaceTime || !impl.IsosurfaceTexture->GetHandle())
   {
     uv::UploadIsosurfaces(impl.IsosurfaceTexture, window, drawnIsosurfaces);
     impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
