@@ -273,6 +273,7 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   if (impl.TransferFunction.Update(property, impl.Mesh.ScalarOffset, impl.Mesh.ScalarScale))
   {
     impl.TransferFunctionOnGpu = false;
+    impl.UploadedIsosurfaceTime = 0; // isovalues are normalised the same way
   }
   if (impl.Nodes.empty())
   {

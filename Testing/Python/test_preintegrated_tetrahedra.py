@@ -381,6 +381,27 @@ class SkippingTests(SceneTestCase):
         self.assertEqual(scene.events.errors, 0)
 
 
+class IsovalueNormalisationTests(SceneTestCase):
+    def test_isosurfaces_follow_a_new_scalar_range(self):
+        # The isovalues are uploaded normalised by the scalar's range: when the data change it, the
+        # surfaces must stay at their values (the image equals a fresh mapper's).
+        mesh = analytic(6)
+        scalars = mesh.GetPointData().GetScalars()
+        low, high = scalars.GetRange()
+        prop = uvrender.volume_property((low, 3 * high))
+        camera = camera_for(mesh)
+        scene = Scene(mesh, prop, camera, 64)
+        scene.mapper.AddIsosurface(low + 0.5 * (high - low), 1.0, 1.0, 1.0, 1.0)
+        scene.render()
+        for i in range(scalars.GetNumberOfTuples()):
+            scalars.SetValue(i, 2.0 * scalars.GetValue(i))
+        scalars.Modified()
+        changed = vtkImageDataCopy(scene.render())
+        fresh = Scene(mesh, prop, camera, 64)
+        fresh.mapper.AddIsosurface(low + 0.5 * (high - low), 1.0, 1.0, 1.0, 1.0)
+        self.assertLess(rmse(changed, fresh.render())[1], 1e-6)
+
+
 def vtkImageDataCopy(image):
     from vtkmodules.vtkCommonDataModel import vtkImageData
     copy = vtkImageData()
