@@ -99,6 +99,14 @@ struct RayAccumulator
   double Opacity() const { return 1.0 - this->Transmittance; }
 };
 
+/// What the medium holds at a point: extinction and emitted premultiplied light (extinction times
+/// colour). Where cells overlap, their media add.
+struct Medium
+{
+  double Extinction = 0.0;
+  glm::dvec3 Emission{ 0.0 };
+};
+
 namespace detail
 {
 // 6-point Gauss-Legendre on [-1, 1]: exact for polynomials up to degree 11.
@@ -113,27 +121,27 @@ struct PieceIntegral
   double Depth = 0.0;
 };
 
-/// Optical depth and premultiplied colour of [a, b] by nested Gauss-Legendre, where the scalar
-/// crosses no transfer-function node (the integrand is smooth).
-template <typename ScalarAt>
-PieceIntegral GaussPiece(const TransferFunction& tf, const ScalarAt& scalarAt, double a, double b)
+/// Optical depth and premultiplied colour of [a, b] by nested Gauss-Legendre, where the medium is
+/// smooth (no scalar crosses a transfer-function node).
+template <typename MediumAt>
+PieceIntegral GaussPiece(const MediumAt& mediumAt, double a, double b)
 {
   PieceIntegral result;
   const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
   for (std::size_t k = 0; k < GaussNodes.size(); ++k)
   {
     const double t = mid + half * GaussNodes[k];
-    const TransferFunction::Node here = tf.Evaluate(scalarAt(t));
+    const Medium here = mediumAt(t);
     // Optical depth from a to t, by the same rule on [a, t].
     double inner = 0.0;
     const double innerHalf = 0.5 * (t - a), innerMid = 0.5 * (a + t);
     for (std::size_t j = 0; j < GaussNodes.size(); ++j)
     {
-      inner += GaussWeights[j] * tf.Extinction(scalarAt(innerMid + innerHalf * GaussNodes[j]));
+      inner += GaussWeights[j] * mediumAt(innerMid + innerHalf * GaussNodes[j]).Extinction;
     }
     inner *= innerHalf;
     result.Depth += GaussWeights[k] * here.Extinction;
-    result.Color += GaussWeights[k] * here.Extinction * std::exp(-inner) * here.Color;
+    result.Color += GaussWeights[k] * std::exp(-inner) * here.Emission;
   }
   result.Depth *= half;
   result.Color *= half;
@@ -149,13 +157,13 @@ inline double Difference(const PieceIntegral& x, const PieceIntegral& y)
 /// Adaptive bisection until whole and halves agree within `tolerance`; composited in order.
 /// `budget` bounds the bisections of one segment: a scalar that never resolves (a cell so distorted
 /// its inverse map fails) costs at most that many, not 2^depth.
-template <typename ScalarAt>
-void AdaptivePiece(const TransferFunction& tf, const ScalarAt& scalarAt, double a, double b,
-  const PieceIntegral& whole, double tolerance, int depth, int& budget, RayAccumulator& accumulator)
+template <typename MediumAt>
+void AdaptivePiece(const MediumAt& mediumAt, double a, double b, const PieceIntegral& whole,
+  double tolerance, int depth, int& budget, RayAccumulator& accumulator)
 {
   const double m = 0.5 * (a + b);
-  const PieceIntegral left = GaussPiece(tf, scalarAt, a, m);
-  const PieceIntegral right = GaussPiece(tf, scalarAt, m, b);
+  const PieceIntegral left = GaussPiece(mediumAt, a, m);
+  const PieceIntegral right = GaussPiece(mediumAt, m, b);
   PieceIntegral halves;
   halves.Depth = left.Depth + right.Depth;
   halves.Color = left.Color + std::exp(-left.Depth) * right.Color;
@@ -165,31 +173,23 @@ void AdaptivePiece(const TransferFunction& tf, const ScalarAt& scalarAt, double 
     accumulator.Composite(right.Color, right.Depth);
     return;
   }
-  AdaptivePiece(tf, scalarAt, a, m, left, 0.5 * tolerance, depth + 1, budget, accumulator);
-  AdaptivePiece(tf, scalarAt, m, b, right, 0.5 * tolerance, depth + 1, budget, accumulator);
+  AdaptivePiece(mediumAt, a, m, left, 0.5 * tolerance, depth + 1, budget, accumulator);
+  AdaptivePiece(mediumAt, m, b, right, 0.5 * tolerance, depth + 1, budget, accumulator);
 }
-} // namespace detail
 
-/// Integrates the optical model along t in [t0, t1] for a smooth scalar s(t) (linear in a tet,
-/// isoparametric in a hexahedron) and composites it into `accumulator`. The segment is first cut
-/// where s crosses a transfer-function node (found between `probes` samples, refined by
-/// bisection), then each piece is integrated adaptively to an absolute error below `tolerance`.
+/// Appends to `cuts` the t in (t0, t1) where s(t) crosses a transfer-function node (found between
+/// `probes` samples, refined by bisection), then t1.
 template <typename ScalarAt>
-void IntegrateSegment(const TransferFunction& tf, const ScalarAt& scalarAt, double t0, double t1,
-  double tolerance, RayAccumulator& accumulator, int probes = 8)
+void AppendNodeCrossings(const TransferFunction& tf, const ScalarAt& scalarAt, double t0, double t1,
+  int probes, std::vector<double>& cuts)
 {
-  if (!(t1 > t0))
-  {
-    return;
-  }
-  std::vector<double> cuts = { t0 };
   double previousT = t0, previousS = scalarAt(t0);
   for (int i = 1; i <= probes; ++i)
   {
     const double t = t0 + (t1 - t0) * i / probes;
     const double s = scalarAt(t);
     const double low = std::min(previousS, s), high = std::max(previousS, s);
-    std::vector<double> crossings;
+    const std::size_t first = cuts.size();
     for (const TransferFunction::Node& node : tf.GetNodes())
     {
       if (node.Scalar > low && node.Scalar < high)
@@ -201,25 +201,86 @@ void IntegrateSegment(const TransferFunction& tf, const ScalarAt& scalarAt, doub
           const double m = 0.5 * (a + b);
           ((scalarAt(m) < node.Scalar) == rising ? a : b) = m;
         }
-        crossings.push_back(0.5 * (a + b));
+        cuts.push_back(0.5 * (a + b));
       }
     }
-    std::sort(crossings.begin(), crossings.end());
-    cuts.insert(cuts.end(), crossings.begin(), crossings.end());
+    std::sort(cuts.begin() + first, cuts.end());
     cuts.push_back(t);
     previousT = t;
     previousS = s;
   }
-  const double pieceTolerance = tolerance / static_cast<double>(cuts.size());
+}
+
+/// Integrates a medium smooth between consecutive `cuts` and composites it into `accumulator`.
+template <typename MediumAt>
+void IntegrateBetweenCuts(const MediumAt& mediumAt, const std::vector<double>& cuts, double tolerance,
+  RayAccumulator& accumulator)
+{
+  const double pieceTolerance = tolerance / static_cast<double>(std::max<std::size_t>(cuts.size(), 1));
   int budget = 4096; // bisections for the whole segment; far above what smooth integrands need
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
   {
     if (cuts[i + 1] > cuts[i])
     {
-      const detail::PieceIntegral whole = detail::GaussPiece(tf, scalarAt, cuts[i], cuts[i + 1]);
-      detail::AdaptivePiece(tf, scalarAt, cuts[i], cuts[i + 1], whole, pieceTolerance, 0, budget, accumulator);
+      const PieceIntegral whole = GaussPiece(mediumAt, cuts[i], cuts[i + 1]);
+      AdaptivePiece(mediumAt, cuts[i], cuts[i + 1], whole, pieceTolerance, 0, budget, accumulator);
     }
   }
+}
+} // namespace detail
+
+/// Integrates the optical model along t in [t0, t1] for a smooth scalar s(t) (linear in a tet,
+/// isoparametric in a hexahedron) and composites it into `accumulator`. The segment is first cut
+/// where s crosses a transfer-function node, then each piece is integrated adaptively to an
+/// absolute error below `tolerance`.
+template <typename ScalarAt>
+void IntegrateSegment(const TransferFunction& tf, const ScalarAt& scalarAt, double t0, double t1,
+  double tolerance, RayAccumulator& accumulator, int probes = 8)
+{
+  if (!(t1 > t0))
+  {
+    return;
+  }
+  std::vector<double> cuts = { t0 };
+  detail::AppendNodeCrossings(tf, scalarAt, t0, t1, probes, cuts);
+  const auto mediumAt = [&](double t) {
+    const TransferFunction::Node node = tf.Evaluate(scalarAt(t));
+    return Medium{ node.Extinction, node.Extinction * node.Color };
+  };
+  detail::IntegrateBetweenCuts(mediumAt, cuts, tolerance, accumulator);
+}
+
+/// The same where several cells overlap on [t0, t1] (tangled or overlapping cells): the medium is
+/// their superposition, each cell adding its own extinction and emission, so the result does not
+/// depend on the cells' order. Cut at every cell's node crossings.
+template <typename ScalarAt>
+void IntegrateOverlap(const TransferFunction& tf, const std::vector<ScalarAt>& scalarsAt, double t0,
+  double t1, double tolerance, RayAccumulator& accumulator, int probes = 8)
+{
+  if (!(t1 > t0))
+  {
+    return;
+  }
+  std::vector<double> cuts = { t0 };
+  for (const ScalarAt& scalarAt : scalarsAt)
+  {
+    std::vector<double> own;
+    detail::AppendNodeCrossings(tf, scalarAt, t0, t1, probes, own);
+    cuts.insert(cuts.end(), own.begin(), own.end());
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  const auto mediumAt = [&](double t) {
+    Medium sum;
+    for (const ScalarAt& scalarAt : scalarsAt)
+    {
+      const TransferFunction::Node node = tf.Evaluate(scalarAt(t));
+      sum.Extinction += node.Extinction;
+      sum.Emission += node.Extinction * node.Color;
+    }
+    return sum;
+  };
+  detail::IntegrateBetweenCuts(mediumAt, cuts, tolerance, accumulator);
 }
 
 } // namespace uv

@@ -300,29 +300,56 @@ inline double IsoparametricScalar(const IsoparametricShape& shape, const double 
 
 /// Parametric coordinates of x by safeguarded Newton (steps limited to half the reference cell,
 /// iterates kept near it). Returns false if it does not converge.
+///
+/// Works in coordinates relative to the cell's first corner, so a cell far from the origin solves
+/// as well as one at it. Converged means the step fell below 1e-12, or (where the cell's shape
+/// limits what double precision resolves) stopped shrinking while the point it maps to lies within
+/// 1e-10 of the cell's size from x: a fixed step threshold near machine precision cannot be reached
+/// on every cell, and calling those failures lost whole cells.
 inline bool InverseIsoparametric(
   const IsoparametricShape& shape, const glm::dvec3 p[8], const glm::dvec3& x, glm::dvec3& xi)
 {
-  for (int iteration = 0; iteration < 40; ++iteration)
+  glm::dvec3 local[8];
+  glm::dvec3 low(0.0), high(0.0);
+  for (int k = 0; k < shape.Corners; ++k)
+  {
+    local[k] = p[k] - p[0];
+    low = glm::min(low, local[k]);
+    high = glm::max(high, local[k]);
+  }
+  const glm::dvec3 target = x - p[0];
+  const double size = std::max({ high.x - low.x, high.y - low.y, high.z - low.z });
+  double previous = std::numeric_limits<double>::infinity();
+  for (int iteration = 0; iteration < 60; ++iteration)
   {
     glm::dmat3 jacobian;
-    const glm::dvec3 residual = IsoparametricPoint(shape, p, xi, &jacobian) - x;
+    const glm::dvec3 residual = IsoparametricPoint(shape, local, xi, &jacobian) - target;
     const double det = glm::determinant(jacobian);
-    if (!(std::abs(det) > 0.0))
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det))
     {
       return false;
     }
     glm::dvec3 step = glm::inverse(jacobian) * residual;
     const double longest = std::max({ std::abs(step.x), std::abs(step.y), std::abs(step.z) });
+    if (!std::isfinite(longest))
+    {
+      return false;
+    }
+    if (longest < 1e-12)
+    {
+      xi -= step;
+      return true;
+    }
+    if (longest >= 0.5 * previous && glm::length(residual) <= 1e-10 * size)
+    {
+      return true; // stalled at rounding with the point found
+    }
+    previous = longest;
     if (longest > 0.5)
     {
       step *= 0.5 / longest;
     }
     xi = glm::clamp(xi - step, glm::dvec3(-0.5), glm::dvec3(1.5));
-    if (longest < 1e-14)
-    {
-      return true;
-    }
   }
   return false;
 }

@@ -58,10 +58,324 @@ const uv::IsoparametricShape* ShapeOf(int type)
   }
 }
 
+/// The input in double precision, recentred on its bounds' centre: every intersection and inverse
+/// map then works with coordinates the size of the mesh, wherever the mesh lies.
+struct Mesh
+{
+  glm::dvec3 Centre{ 0.0 };
+  std::vector<glm::dvec3> Points;
+  std::vector<double> Values;
+  std::vector<Cell> Cells;
+  std::vector<uv::BoundingVolumeHierarchy::Box> Boxes;
+  vtkIdType NotThreeDimensional = 0;
+  vtkIdType NonFinite = 0;
+  vtkIdType Unsupported = -1; // the first cell of a type the reference does not take
+
+  void LoadPoints(vtkDataSet* input, vtkDataArray* scalars)
+  {
+    double bounds[6];
+    input->GetBounds(bounds);
+    this->Centre = 0.5 * glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]);
+    const vtkIdType count = input->GetNumberOfPoints();
+    this->Points.resize(count);
+    this->Values.resize(count);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      input->GetPoint(i, &this->Points[i].x);
+      this->Points[i] -= this->Centre;
+      this->Values[i] = scalars->GetComponent(i, 0);
+    }
+  }
+
+  /// Collects the 3D cells; false at the first cell type it cannot take (Unsupported says which).
+  bool LoadCells(vtkDataSet* input)
+  {
+    vtkNew<vtkIdList> ids;
+    vtkNew<vtkGenericCell> probe;
+    for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+    {
+      const int type = input->GetCellType(c);
+      if (type != VTK_TETRA && !ShapeOf(type))
+      {
+        probe->SetCellType(type);
+        if (type == VTK_EMPTY_CELL || probe->GetCellDimension() < 3)
+        {
+          ++this->NotThreeDimensional;
+          continue;
+        }
+        this->Unsupported = c;
+        return false;
+      }
+      input->GetCellPoints(c, ids);
+      Cell cell{ ShapeOf(type), {} };
+      uv::BoundingVolumeHierarchy::Box box;
+      bool finite = true;
+      for (int k = 0; k < cell.Corners(); ++k)
+      {
+        const vtkIdType id = ids->GetId(type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k);
+        cell.Ids[k] = id;
+        box.Add({ this->Points[id], this->Points[id] });
+        finite = finite && std::isfinite(this->Values[id]);
+      }
+      if (!finite)
+      {
+        ++this->NonFinite;
+        continue;
+      }
+      this->Cells.push_back(cell);
+      this->Boxes.push_back(box);
+    }
+    return true;
+  }
+};
+
 struct Segment
 {
   uv::Interval Span;
   std::int64_t Cell;
+};
+
+/// The scalar along one segment of a ray: linear in a tetrahedron; in an isoparametric cell a
+/// certified Chebyshev fit (17 inverse solves stand in for the hundreds the quadrature makes), or
+/// the inverse map itself where the fit is not resolved.
+class SegmentScalar
+{
+public:
+  SegmentScalar(const Mesh& mesh, const Segment& segment, const uv::Ray& ray)
+    : Ray(ray)
+    , T0(segment.Span.Enter)
+    , T1(segment.Span.Exit)
+  {
+    const Cell& cell = mesh.Cells[segment.Cell];
+    for (int k = 0; k < cell.Corners(); ++k)
+    {
+      this->P[k] = mesh.Points[cell.Ids[k]];
+      this->F[k] = mesh.Values[cell.Ids[k]];
+    }
+    if (!cell.Shape)
+    {
+      this->S0 = uv::TetrahedronScalar(this->P, this->F, this->At(this->T0));
+      this->S1 = uv::TetrahedronScalar(this->P, this->F, this->At(this->T1));
+      return;
+    }
+    this->Shape = cell.Shape;
+    this->Xi0 = this->Xi1 = cell.Shape->Centre;
+    uv::InverseIsoparametric(*this->Shape, this->P, this->At(this->T0), this->Xi0);
+    uv::InverseIsoparametric(*this->Shape, this->P, this->At(this->T1), this->Xi1);
+    double magnitude = 1.0;
+    for (int k = 0; k < cell.Corners(); ++k)
+    {
+      magnitude = std::max(magnitude, 1.0 + std::abs(this->F[k]));
+    }
+    this->Fitted = this->Series.Fit([this](double t) { return this->Exact(t); }, this->T0, this->T1, 1e-12 * magnitude);
+  }
+
+  double operator()(double t) const
+  {
+    if (!this->Shape)
+    {
+      return this->S0 + (this->S1 - this->S0) * (t - this->T0) / (this->T1 - this->T0);
+    }
+    return this->Fitted ? this->Series(t) : this->Exact(t);
+  }
+
+private:
+  glm::dvec3 At(double t) const { return this->Ray.Origin + t * this->Ray.Direction; }
+
+  double Exact(double t) const
+  {
+    glm::dvec3 xi = this->Xi0 + (this->Xi1 - this->Xi0) * ((t - this->T0) / (this->T1 - this->T0));
+    uv::InverseIsoparametric(*this->Shape, this->P, this->At(t), xi);
+    return uv::IsoparametricScalar(*this->Shape, this->F, xi);
+  }
+
+  uv::Ray Ray;
+  double T0, T1, S0 = 0.0, S1 = 0.0;
+  const uv::IsoparametricShape* Shape = nullptr;
+  glm::dvec3 P[8];
+  double F[8] = {};
+  glm::dvec3 Xi0{ 0.0 }, Xi1{ 0.0 };
+  uv::ChebyshevSeries Series;
+  bool Fitted = false;
+};
+
+/// Per-thread scratch of one ray.
+struct RayScratch
+{
+  std::vector<Segment> Segments;
+  std::vector<uv::Interval> Parts;
+  std::vector<double> Hits;
+  std::vector<double> Events;
+  std::vector<SegmentScalar> Active;
+};
+
+/// Every ray's segments, in order, integrated exactly.
+class RayIntegrator
+{
+public:
+  RayIntegrator(const Mesh& mesh, const uv::BoundingVolumeHierarchy& hierarchy,
+    const uv::TransferFunction& transfer, double tolerance)
+    : TheMesh(mesh)
+    , Hierarchy(hierarchy)
+    , Transfer(transfer)
+    , Tolerance(tolerance)
+  {
+  }
+
+  uv::RayAccumulator Integrate(const uv::Ray& ray, RayScratch& scratch) const
+  {
+    this->Gather(ray, scratch);
+    std::vector<Segment>& segments = scratch.Segments;
+    std::sort(segments.begin(), segments.end(),
+      [](const Segment& a, const Segment& b) { return a.Span.Enter < b.Span.Enter; });
+    uv::RayAccumulator accumulator;
+    for (std::size_t first = 0; first < segments.size();)
+    {
+      if (accumulator.Transmittance < 1e-12)
+      {
+        break; // what lies behind cannot change any channel by more than 1e-12
+      }
+      // A run of segments that overlap one another (tangled or overlapping cells).
+      std::size_t last = first + 1;
+      double end = segments[first].Span.Exit;
+      for (; last < segments.size() && segments[last].Span.Enter < end; ++last)
+      {
+        end = std::max(end, segments[last].Span.Exit);
+      }
+      if (last == first + 1)
+      {
+        const Segment& segment = segments[first];
+        uv::IntegrateSegment(this->Transfer, SegmentScalar(this->TheMesh, segment, ray), segment.Span.Enter,
+          segment.Span.Exit, this->Tolerance, accumulator);
+      }
+      else
+      {
+        this->IntegrateOverlapping(ray, first, last, scratch, accumulator);
+      }
+      first = last;
+    }
+    return accumulator;
+  }
+
+private:
+  /// The parts of the ray inside each cell whose box it crosses, at t >= 0.
+  void Gather(const uv::Ray& ray, RayScratch& scratch) const
+  {
+    scratch.Segments.clear();
+    this->Hierarchy.Traverse(ray, [&](std::int64_t index) {
+      const Cell& cell = this->TheMesh.Cells[index];
+      glm::dvec3 p[8];
+      for (int k = 0; k < cell.Corners(); ++k)
+      {
+        p[k] = this->TheMesh.Points[cell.Ids[k]];
+      }
+      scratch.Parts.clear();
+      if (cell.Shape)
+      {
+        uv::IntersectIsoparametric(*cell.Shape, ray, p, cell.Ids, scratch.Parts, scratch.Hits);
+      }
+      else
+      {
+        uv::Interval span;
+        if (uv::IntersectTetrahedron(ray, p, cell.Ids, span))
+        {
+          scratch.Parts.push_back(span);
+        }
+      }
+      for (uv::Interval part : scratch.Parts)
+      {
+        part.Enter = std::max(part.Enter, 0.0);
+        if (part.Exit > part.Enter)
+        {
+          scratch.Segments.push_back({ part, index });
+        }
+      }
+    });
+  }
+
+  /// Segments [first, last) overlap: between consecutive end points the cells present superpose.
+  void IntegrateOverlapping(const uv::Ray& ray, std::size_t first, std::size_t last, RayScratch& scratch,
+    uv::RayAccumulator& accumulator) const
+  {
+    std::vector<double>& events = scratch.Events;
+    events.clear();
+    for (std::size_t i = first; i < last; ++i)
+    {
+      events.push_back(scratch.Segments[i].Span.Enter);
+      events.push_back(scratch.Segments[i].Span.Exit);
+    }
+    std::sort(events.begin(), events.end());
+    events.erase(std::unique(events.begin(), events.end()), events.end());
+    for (std::size_t e = 0; e + 1 < events.size(); ++e)
+    {
+      const double a = events[e], b = events[e + 1];
+      scratch.Active.clear();
+      for (std::size_t i = first; i < last; ++i)
+      {
+        const Segment& segment = scratch.Segments[i];
+        if (segment.Span.Enter <= a && segment.Span.Exit >= b)
+        {
+          scratch.Active.emplace_back(this->TheMesh, Segment{ { a, b }, segment.Cell }, ray);
+        }
+      }
+      if (scratch.Active.size() == 1)
+      {
+        uv::IntegrateSegment(this->Transfer, scratch.Active.front(), a, b, this->Tolerance, accumulator);
+      }
+      else if (!scratch.Active.empty())
+      {
+        uv::IntegrateOverlap(this->Transfer, scratch.Active, a, b, this->Tolerance, accumulator);
+      }
+    }
+  }
+
+  const Mesh& TheMesh;
+  const uv::BoundingVolumeHierarchy& Hierarchy;
+  const uv::TransferFunction& Transfer;
+  double Tolerance;
+};
+
+/// Pixel rays of a camera, in the mesh's recentred frame: the camera is moved by the same offset
+/// before its matrices are taken, so no large coordinate enters the unprojection.
+class PixelRays
+{
+public:
+  PixelRays(vtkCamera* camera, const glm::dvec3& centre, int width, int height)
+    : Width(width)
+    , Height(height)
+  {
+    vtkNew<vtkCamera> local;
+    local->DeepCopy(camera);
+    double position[3], focal[3];
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focal);
+    local->SetPosition(position[0] - centre.x, position[1] - centre.y, position[2] - centre.z);
+    local->SetFocalPoint(focal[0] - centre.x, focal[1] - centre.y, focal[2] - centre.z);
+    local->SetViewUp(camera->GetViewUp());
+    this->Unproject->DeepCopy(
+      local->GetCompositeProjectionTransformMatrix(static_cast<double>(width) / height, -1, 1));
+    this->Unproject->Invert();
+  }
+
+  /// The ray through a pixel's centre, from the near plane.
+  uv::Ray operator()(vtkIdType pixel) const
+  {
+    const double x = 2.0 * ((pixel % this->Width) + 0.5) / this->Width - 1.0;
+    const double y = 2.0 * ((pixel / this->Width) + 0.5) / this->Height - 1.0;
+    const glm::dvec3 nearPoint = this->Point(x, y, -1.0);
+    return uv::Ray{ nearPoint, glm::normalize(this->Point(x, y, 1.0) - nearPoint) };
+  }
+
+private:
+  glm::dvec3 Point(double x, double y, double z) const
+  {
+    double in[4] = { x, y, z, 1.0 }, out[4];
+    this->Unproject->MultiplyPoint(in, out);
+    return glm::dvec3(out[0], out[1], out[2]) / out[3];
+  }
+
+  int Width, Height;
+  vtkNew<vtkMatrix4x4> Unproject;
 };
 } // namespace
 
@@ -131,175 +445,35 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     return true;
   }
 
-  // Points, scalars and cells in double precision.
-  const vtkIdType numPoints = this->Input->GetNumberOfPoints();
-  std::vector<glm::dvec3> points(numPoints);
-  std::vector<double> values(numPoints);
-  for (vtkIdType i = 0; i < numPoints; ++i)
+  Mesh mesh;
+  mesh.LoadPoints(this->Input, scalars);
+  if (!mesh.LoadCells(this->Input))
   {
-    this->Input->GetPoint(i, &points[i].x);
-    values[i] = scalars->GetComponent(i, 0);
+    vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges and "
+                  "pyramids; cell "
+      << mesh.Unsupported << " is a "
+      << vtkCellTypes::GetClassNameFromTypeId(this->Input->GetCellType(mesh.Unsupported)) << ".");
+    return false;
   }
-  std::vector<Cell> cells;
-  std::vector<uv::BoundingVolumeHierarchy::Box> boxes;
-  vtkNew<vtkIdList> ids;
-  vtkNew<vtkGenericCell> probe;
-  vtkIdType ignored = 0, nonFinite = 0;
-  for (vtkIdType c = 0; c < this->Input->GetNumberOfCells(); ++c)
+  if (mesh.NotThreeDimensional > 0)
   {
-    const int type = this->Input->GetCellType(c);
-    if (type != VTK_TETRA && !ShapeOf(type))
-    {
-      probe->SetCellType(type);
-      if (type == VTK_EMPTY_CELL || probe->GetCellDimension() < 3)
-      {
-        ++ignored;
-        continue;
-      }
-      vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges and "
-                    "pyramids; cell "
-        << c << " is a " << vtkCellTypes::GetClassNameFromTypeId(type) << ".");
-      return false;
-    }
-    this->Input->GetCellPoints(c, ids);
-    Cell cell{ ShapeOf(type), {} };
-    const int corners = cell.Corners();
-    uv::BoundingVolumeHierarchy::Box box;
-    bool finite = true;
-    for (int k = 0; k < corners; ++k)
-    {
-      const vtkIdType id = ids->GetId(type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k);
-      cell.Ids[k] = id;
-      box.Add({ points[id], points[id] });
-      finite = finite && std::isfinite(values[id]);
-    }
-    if (!finite)
-    {
-      ++nonFinite;
-      continue;
-    }
-    cells.push_back(cell);
-    boxes.push_back(box);
+    vtkWarningMacro("Ignored " << mesh.NotThreeDimensional << " cells that are not 3D.");
   }
-  if (ignored > 0)
+  if (mesh.NonFinite > 0)
   {
-    vtkWarningMacro("Ignored " << ignored << " cells that are not 3D.");
+    vtkWarningMacro("Left out " << mesh.NonFinite << " cells with non-finite scalars.");
   }
-  if (nonFinite > 0)
-  {
-    vtkWarningMacro("Left out " << nonFinite << " cells with non-finite scalars.");
-  }
-  const uv::BoundingVolumeHierarchy hierarchy(std::move(boxes));
-
-  // Pixel centres unprojected through the camera's composite projection (both projections).
-  const double aspect = static_cast<double>(width) / height;
-  vtkNew<vtkMatrix4x4> unproject;
-  unproject->DeepCopy(this->Camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1));
-  unproject->Invert();
-  auto unprojectPoint = [&](double x, double y, double z) {
-    double in[4] = { x, y, z, 1.0 }, out[4];
-    unproject->MultiplyPoint(in, out);
-    return glm::dvec3(out[0], out[1], out[2]) / out[3];
-  };
+  const uv::BoundingVolumeHierarchy hierarchy(std::move(mesh.Boxes));
+  const RayIntegrator integrator(mesh, hierarchy, transfer, this->Tolerance);
+  const PixelRays rays(this->Camera, mesh.Centre, width, height);
 
   float* pixels = rgba->GetPointer(0);
-  const double tolerance = this->Tolerance;
-  vtkSMPThreadLocal<std::vector<Segment>> threadSegments;
-  vtkSMPThreadLocal<std::vector<uv::Interval>> threadParts;
-  vtkSMPThreadLocal<std::vector<double>> threadScratch;
+  vtkSMPThreadLocal<RayScratch> threadScratch;
   vtkSMPTools::For(0, static_cast<vtkIdType>(width) * height, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<Segment>& segments = threadSegments.Local();
-    std::vector<uv::Interval>& parts = threadParts.Local();
-    std::vector<double>& scratch = threadScratch.Local();
+    RayScratch& scratch = threadScratch.Local();
     for (vtkIdType pixel = begin; pixel < end; ++pixel)
     {
-      const double x = 2.0 * ((pixel % width) + 0.5) / width - 1.0;
-      const double y = 2.0 * ((pixel / width) + 0.5) / height - 1.0;
-      const glm::dvec3 nearPoint = unprojectPoint(x, y, -1.0);
-      const uv::Ray ray{ nearPoint, glm::normalize(unprojectPoint(x, y, 1.0) - nearPoint) };
-      segments.clear();
-      hierarchy.Traverse(ray, [&](std::int64_t index) {
-        const Cell& cell = cells[index];
-        glm::dvec3 p[8];
-        for (int k = 0; k < cell.Corners(); ++k)
-        {
-          p[k] = points[cell.Ids[k]];
-        }
-        parts.clear();
-        if (cell.Shape)
-        {
-          uv::IntersectIsoparametric(*cell.Shape, ray, p, cell.Ids, parts, scratch);
-        }
-        else
-        {
-          uv::Interval span;
-          if (uv::IntersectTetrahedron(ray, p, cell.Ids, span))
-          {
-            parts.push_back(span);
-          }
-        }
-        for (uv::Interval part : parts)
-        {
-          part.Enter = std::max(part.Enter, 0.0);
-          if (part.Exit > part.Enter)
-          {
-            segments.push_back({ part, index });
-          }
-        }
-      });
-      std::sort(segments.begin(), segments.end(),
-        [](const Segment& a, const Segment& b) { return a.Span.Enter < b.Span.Enter; });
-
-      uv::RayAccumulator accumulator;
-      for (const Segment& segment : segments)
-      {
-        if (accumulator.Transmittance < 1e-12)
-        {
-          break; // what lies behind cannot change any channel by more than 1e-12
-        }
-        const Cell& cell = cells[segment.Cell];
-        glm::dvec3 p[8];
-        double f[8];
-        for (int k = 0; k < cell.Corners(); ++k)
-        {
-          p[k] = points[cell.Ids[k]];
-          f[k] = values[cell.Ids[k]];
-        }
-        const double t0 = segment.Span.Enter, t1 = segment.Span.Exit;
-        if (!cell.Shape)
-        {
-          const double s0 = uv::TetrahedronScalar(p, f, ray.Origin + t0 * ray.Direction);
-          const double s1 = uv::TetrahedronScalar(p, f, ray.Origin + t1 * ray.Direction);
-          const auto linear = [&](double t) { return s0 + (s1 - s0) * (t - t0) / (t1 - t0); };
-          uv::IntegrateSegment(transfer, linear, t0, t1, tolerance, accumulator);
-          continue;
-        }
-        const uv::IsoparametricShape& shape = *cell.Shape;
-        glm::dvec3 xi0 = shape.Centre, xi1 = shape.Centre;
-        uv::InverseIsoparametric(shape, p, ray.Origin + t0 * ray.Direction, xi0);
-        uv::InverseIsoparametric(shape, p, ray.Origin + t1 * ray.Direction, xi1);
-        const auto isoparametric = [&](double t) {
-          glm::dvec3 xi = xi0 + (xi1 - xi0) * ((t - t0) / (t1 - t0));
-          uv::InverseIsoparametric(shape, p, ray.Origin + t * ray.Direction, xi);
-          return uv::IsoparametricScalar(shape, f, xi);
-        };
-        // s(t) is smooth inside the cell: a certified Chebyshev fit (17 inverse solves) stands in
-        // for the hundreds of solves the quadrature would make; unresolved fits use s(t) itself.
-        double magnitude = 1.0;
-        for (int k = 0; k < shape.Corners; ++k)
-        {
-          magnitude = std::max(magnitude, 1.0 + std::abs(f[k]));
-        }
-        uv::ChebyshevSeries series;
-        if (series.Fit(isoparametric, t0, t1, 1e-12 * magnitude))
-        {
-          uv::IntegrateSegment(transfer, series, t0, t1, tolerance, accumulator);
-        }
-        else
-        {
-          uv::IntegrateSegment(transfer, isoparametric, t0, t1, tolerance, accumulator);
-        }
-      }
+      const uv::RayAccumulator accumulator = integrator.Integrate(rays(pixel), scratch);
       float* out = pixels + 4 * pixel;
       out[0] = static_cast<float>(accumulator.Color.x);
       out[1] = static_cast<float>(accumulator.Color.y);
