@@ -3,6 +3,7 @@
 set(uv_rendering_classes
   vtkBarycentricShellMapper
   vtkHexahedralRayCastMapper
+  vtkLocatorRayMarcher
   vtkPreIntegratedTetrahedraMapper
   vtkUnstructuredVolumeReferenceRenderer
   vtkVolumeImageErrorMetrics)

@@ -1,11 +1,15 @@
 """Loaders for the real public meshes in ../shared/data (beside the repository), shared by the tests
 and the benchmark. Each returns a vtkUnstructuredGrid, or raises FileNotFoundError when its file is
 absent (tests skip then)."""
+import math
 import os
 
 from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkArrayCalculator
 from vtkmodules.vtkIOExodus import vtkExodusIIReader
-from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+from vtkmodules.vtkCommonCore import vtkDoubleArray
+from vtkmodules.vtkIOGeometry import vtkOpenFOAMReader
+from vtkmodules.vtkIOImage import vtkImageReader2
+from vtkmodules.vtkIOLegacy import vtkDataSetReader, vtkUnstructuredGridReader
 from vtkmodules.vtkIOXML import vtkXMLStructuredGridReader, vtkXMLUnstructuredGridReader
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -68,3 +72,99 @@ def legacy(*parts):
     reader.SetFileName(path(*parts))
     reader.Update()
     return reader.GetOutput()
+
+
+def _unstructured(algorithm):
+    to_grid = vtkAppendFilter()
+    to_grid.SetInputConnection(algorithm.GetOutputPort())
+    to_grid.Update()
+    return to_grid.GetOutput()
+
+
+def _any_legacy(*parts):
+    """A legacy .vtk file of any dataset type, made an unstructured grid."""
+    reader = vtkDataSetReader()
+    reader.ReadAllScalarsOn()
+    reader.ReadAllFieldsOn()
+    reader.SetFileName(path(*parts))
+    return _unstructured(reader)
+
+
+def _with_smooth_field(mesh):
+    """Meshes that carry no point scalar get a smooth one of position, "field"."""
+    low = [mesh.GetBounds()[2 * d] for d in range(3)]
+    size = max(mesh.GetLength(), 1e-30)
+    field = vtkDoubleArray()
+    field.SetName("field")
+    for i in range(mesh.GetNumberOfPoints()):
+        x, y, z = ((c - o) / size for c, o in zip(mesh.GetPoint(i), low))
+        field.InsertNextValue(math.sin(4.0 * x) + math.cos(3.0 * y) + z)
+    mesh.GetPointData().AddArray(field)
+    return mesh
+
+
+def _voxels(image):
+    return _unstructured(image)
+
+
+def office():
+    """A curvilinear structured grid (air flow in an office), 7220 hexahedra; "scalars"."""
+    return _any_legacy("office", "office.binary.vtk")
+
+
+def sample_struct_grid():
+    """VTK's SampleStructGrid: a curvilinear grid of 21489 hexahedra; "scalars"."""
+    return _any_legacy("sample_struct_grid", "SampleStructGrid.vtk")
+
+
+def openfoam_cavity_points():
+    """The OpenFOAM cavity's internal mesh (400 hexahedra) at its last time step, its cell data
+    averaged to the points by the reader; "p"."""
+    reader = vtkOpenFOAMReader()
+    reader.SetFileName(path("openfoam_cavity", "cavity", "case.foam"))
+    reader.CreateCellToPointOn()
+    reader.UpdateInformation()
+    steps = reader.GetTimeValues()
+    reader.UpdateTimeStep(steps.GetValue(steps.GetNumberOfTuples() - 1))
+    reader.Update()
+    return _unstructured_block(reader.GetOutput().GetBlock(0))
+
+
+def _unstructured_block(block):
+    to_grid = vtkAppendFilter()
+    to_grid.AddInputData(block)
+    to_grid.Update()
+    return to_grid.GetOutput()
+
+
+def bucky():
+    """NVIDIA's 32^3 uint8 Bucky ball as 29791 voxels; "density"."""
+    reader = vtkImageReader2()
+    reader.SetFileName(path("bucky", "Bucky_32x32x32_uint8.raw"))
+    reader.SetDataScalarTypeToUnsignedChar()
+    reader.SetNumberOfScalarComponents(1)
+    reader.SetDataExtent(0, 31, 0, 31, 0, 31)
+    reader.SetFileDimensionality(3)
+    reader.Update()
+    reader.GetOutput().GetPointData().GetScalars().SetName("density")
+    return _voxels(reader)
+
+
+# Every real mesh the reference renders with a point scalar: name, loader, scalar. The cell-data,
+# higher-order and polyhedral meshes of ../shared/data are not here (the reference does not take them yet).
+REFERENCE_MESHES = [
+    ("blunt_fin", bluntfin, "Density"),
+    ("super_phoenix", lambda: legacy("spx", "spx.vtk"), "scalars"),
+    ("lox_post", lambda: legacy("lox_post", "post.vtk"), "Pressure"),
+    ("disk_out_ref", disk_out_ref, "Temp"),
+    ("can", can, "DISPL_magnitude"),
+    ("hexa", lambda: legacy("hexa", "hexa.vtk"), "scalars"),
+    ("office", office, "scalars"),
+    ("sample_struct_grid", sample_struct_grid, "scalars"),
+    ("tetra_mesh", lambda: legacy("tetraMesh", "tetraMesh.vtk"), "scalars"),
+    ("ugrid_ex", lambda: legacy("uGridEx", "uGridEx.vtk"), "scalars"),
+    ("cylinder_linear", lambda: legacy("quadratic", "CylinderLinear.vtk"), "vel_norm"),
+    ("openfoam_cavity", openfoam_cavity_points, "p"),
+    ("bucky", bucky, "density"),
+] + [(f"mfem_{name}", (lambda name=name: _with_smooth_field(legacy("mfem_small", f"{name}.vtk"))), "field")
+     for name in ("beam-hex", "beam-tet", "beam-wedge", "escher", "fichera")]

@@ -1,0 +1,729 @@
+#include "vtkLocatorRayMarcher.h"
+
+#include "vtkCamera.h"
+#include "vtkCell.h"
+#include "vtkCellType.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+
+vtkStandardNewMacro(vtkLocatorRayMarcher);
+
+namespace
+{
+/// A piecewise-linear function of the scalar with constant extension: (x, values) nodes.
+template <int NV>
+struct LinearNodes
+{
+  std::vector<double> X;
+  std::vector<std::array<double, NV>> V;
+
+  /// Value at s (linear between nodes, the end values outside them).
+  std::array<double, NV> operator()(double s) const
+  {
+    if (s <= this->X.front())
+    {
+      return this->V.front();
+    }
+    if (s >= this->X.back())
+    {
+      return this->V.back();
+    }
+    // First node strictly above s; its predecessor is <= s.
+    const std::size_t hi =
+      static_cast<std::size_t>(std::upper_bound(this->X.begin(), this->X.end(), s) - this->X.begin());
+    const std::size_t lo = hi - 1;
+    const double width = this->X[hi] - this->X[lo];
+    const double f = width > 0 ? (s - this->X[lo]) / width : 0.0;
+    std::array<double, NV> out;
+    for (int c = 0; c < NV; ++c)
+    {
+      out[c] = this->V[lo][c] + f * (this->V[hi][c] - this->V[lo][c]);
+    }
+    return out;
+  }
+};
+
+/// The optical model: extinction and colour linear in s between the union nodes.
+struct OpticalModel
+{
+  LinearNodes<4> Nodes; // tau, r, g, b
+
+  /// Extinction tau(s) and emission c(s) tau(s).
+  void Evaluate(double s, double& tau, double emission[3]) const
+  {
+    const std::array<double, 4> v = this->Nodes(s);
+    tau = v[0];
+    for (int c = 0; c < 3; ++c)
+    {
+      emission[c] = v[c + 1] * v[0];
+    }
+  }
+};
+
+bool IsPlainNode(double midpoint, double sharpness)
+{
+  return midpoint == 0.5 && sharpness == 0.0;
+}
+
+/// Reads a vtkPiecewiseFunction into nodes; false (and a reason) when it is not plain.
+bool ReadPiecewise(vtkPiecewiseFunction* function, const char* what, LinearNodes<1>& nodes,
+  std::string& reason)
+{
+  if (!function || function->GetSize() < 1)
+  {
+    reason = std::string("The ") + what + " has no nodes.";
+    return false;
+  }
+  for (int i = 0; i < function->GetSize(); ++i)
+  {
+    double node[4];
+    function->GetNodeValue(i, node);
+    if (!IsPlainNode(node[2], node[3]))
+    {
+      reason = std::string("The ") + what +
+        " has a node with midpoint != 0.5 or sharpness != 0; only piecewise-linear functions are supported.";
+      return false;
+    }
+    nodes.X.push_back(node[0]);
+    nodes.V.push_back({ node[1] });
+  }
+  return true;
+}
+
+/// Builds the optical model from component 0 of the property; false (and a reason) if unsupported.
+bool BuildOpticalModel(vtkVolumeProperty* property, OpticalModel& model, std::string& reason)
+{
+  if (property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D)
+  {
+    reason = "Only 1D transfer functions are supported.";
+    return false;
+  }
+  const double unitDistance = property->GetScalarOpacityUnitDistance(0);
+  if (!(unitDistance > 0) || !std::isfinite(unitDistance))
+  {
+    reason = "The scalar opacity unit distance must be positive.";
+    return false;
+  }
+  LinearNodes<1> opacity;
+  if (!ReadPiecewise(property->GetScalarOpacity(0), "scalar opacity function", opacity, reason))
+  {
+    return false;
+  }
+  LinearNodes<3> colour;
+  if (property->GetColorChannels(0) == 1)
+  {
+    LinearNodes<1> gray;
+    if (!ReadPiecewise(property->GetGrayTransferFunction(0), "gray transfer function", gray, reason))
+    {
+      return false;
+    }
+    colour.X = gray.X;
+    for (const auto& v : gray.V)
+    {
+      colour.V.push_back({ v[0], v[0], v[0] });
+    }
+  }
+  else
+  {
+    vtkColorTransferFunction* function = property->GetRGBTransferFunction(0);
+    if (!function || function->GetSize() < 1)
+    {
+      reason = "The colour transfer function has no nodes.";
+      return false;
+    }
+    if (function->GetColorSpace() != VTK_CTF_RGB)
+    {
+      reason = "The colour transfer function's colour space is not RGB; only RGB-linear colour is supported.";
+      return false;
+    }
+    if (function->GetScale() != VTK_CTF_LINEAR)
+    {
+      reason = "The colour transfer function's scale is not linear.";
+      return false;
+    }
+    for (int i = 0; i < function->GetSize(); ++i)
+    {
+      double node[6];
+      function->GetNodeValue(i, node);
+      if (!IsPlainNode(node[4], node[5]))
+      {
+        reason = "The colour transfer function has a node with midpoint != 0.5 or sharpness != 0; "
+                 "only piecewise-linear functions are supported.";
+        return false;
+      }
+      colour.X.push_back(node[0]);
+      colour.V.push_back({ node[1], node[2], node[3] });
+    }
+  }
+
+  std::vector<double> xs = opacity.X;
+  xs.insert(xs.end(), colour.X.begin(), colour.X.end());
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  for (double x : xs)
+  {
+    if (!std::isfinite(x))
+    {
+      reason = "A transfer-function node has a non-finite scalar.";
+      return false;
+    }
+    const double alpha = std::min(std::max(opacity(x)[0], 0.0), 1.0 - 1e-9);
+    const double tau = -std::log(1.0 - alpha) / unitDistance;
+    const std::array<double, 3> c = colour(x);
+    model.Nodes.X.push_back(x);
+    model.Nodes.V.push_back({ tau, c[0], c[1], c[2] });
+  }
+  return true;
+}
+
+/// Strict containment: pcoords inside the cell's parametric domain (VTK's EvaluatePosition
+/// accepts a tolerance of 1e-3 around it, under which neighbouring cells would overlap).
+bool StrictlyInside(vtkCell* cell, const double pcoords[3])
+{
+  if (cell->GetParametricDistance(pcoords) > 0.0)
+  {
+    return false;
+  }
+  switch (cell->GetCellType())
+  {
+    case VTK_WEDGE:
+    case VTK_QUADRATIC_WEDGE:
+    case VTK_QUADRATIC_LINEAR_WEDGE:
+    case VTK_BIQUADRATIC_QUADRATIC_WEDGE:
+      return pcoords[0] + pcoords[1] <= 1.0;
+    case VTK_TETRA:
+    case VTK_QUADRATIC_TETRA:
+      // vtkTetra's parametric distance looks at r, s, t only, not at 1 - r - s - t.
+      return pcoords[0] + pcoords[1] + pcoords[2] <= 1.0;
+    default:
+      return true;
+  }
+}
+
+/// Everything the pixel workers read (shared, read-only) and their per-thread scratch.
+struct MarchPixelsWorker
+{
+  vtkDataSet* Input;
+  vtkStaticCellLocator* Locator;
+  const double* CellBounds;
+  const std::vector<unsigned char>* UsableCell;
+  const std::vector<double>* Scalars;
+  const OpticalModel* Model;
+  double InverseProjection[16];
+  double Bounds[6];
+  double Pad; // 1e-9 of the bounds' diagonal: query boxes, cell-bounds tests, membership shift
+  int Width, Height, Steps;
+  const vtkIdType* Pixels;
+  float* Output;
+
+  vtkSMPThreadLocalObject<vtkGenericCell> Cells;
+  vtkSMPThreadLocalObject<vtkIdList> Candidates;
+  vtkSMPThreadLocal<std::vector<double>> Weights;
+  int MaxCellSize;
+
+  void Initialize()
+  {
+    this->Weights.Local().resize(static_cast<std::size_t>(std::max(this->MaxCellSize, 1)));
+    this->Candidates.Local()->Allocate(64);
+  }
+
+  bool InCellBounds(vtkIdType cellId, const double x[3]) const
+  {
+    const double* b = this->CellBounds + 6 * cellId;
+    return x[0] >= b[0] - this->Pad && x[0] <= b[1] + this->Pad && x[1] >= b[2] - this->Pad &&
+      x[1] <= b[3] + this->Pad && x[2] >= b[4] - this->Pad && x[2] <= b[5] + this->Pad;
+  }
+
+  /// Visits every usable cell containing x with its interpolated scalar; `visit` returns false to
+  /// stop. Returns the number of containing cells visited.
+  ///
+  /// Membership is decided at x moved by Pad in a fixed generic direction (simulation of
+  /// simplicity): a point on a face between two cells (a whole ray does lie in one where an
+  /// axis-aligned grid is seen along an axis) then belongs to exactly one of them, while cells that
+  /// overlap over a volume still all count. The scalar moves by Pad times its gradient.
+  template <typename Visit>
+  int ForEachContainingCell(const double point[3], Visit&& visit)
+  {
+    static constexpr double generic[3] = { 0.4015393566, 0.5823305244, 0.7068016279 };
+    const double x[3] = { point[0] + this->Pad * generic[0], point[1] + this->Pad * generic[1],
+      point[2] + this->Pad * generic[2] };
+    vtkGenericCell* cell = this->Cells.Local();
+    vtkIdList* candidates = this->Candidates.Local();
+    std::vector<double>& weights = this->Weights.Local();
+    double box[6] = { x[0] - this->Pad, x[0] + this->Pad, x[1] - this->Pad, x[1] + this->Pad,
+      x[2] - this->Pad, x[2] + this->Pad };
+    this->Locator->FindCellsWithinBounds(box, candidates);
+    int found = 0;
+    const vtkIdType n = candidates->GetNumberOfIds();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const vtkIdType cellId = candidates->GetId(i);
+      if (!(*this->UsableCell)[cellId] || !this->InCellBounds(cellId, x))
+      {
+        continue;
+      }
+      this->Input->GetCell(cellId, cell);
+      double closest[3], pcoords[3], dist2;
+      int subId = 0;
+      if (cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) != 1 ||
+        !StrictlyInside(cell, pcoords))
+      {
+        continue;
+      }
+      double s = 0;
+      const vtkIdType np = cell->GetNumberOfPoints();
+      for (vtkIdType j = 0; j < np; ++j)
+      {
+        s += weights[j] * (*this->Scalars)[cell->GetPointId(j)];
+      }
+      ++found;
+      if (!visit(s))
+      {
+        break;
+      }
+    }
+    return found;
+  }
+
+  bool Inside(const double x[3])
+  {
+    return this->ForEachContainingCell(x, [](double) { return false; }) > 0;
+  }
+
+  /// Total extinction and emission at x (superposition over all containing cells); returns how
+  /// many cells contain x.
+  int Sample(const double x[3], double& tau, double emission[3])
+  {
+    tau = 0;
+    emission[0] = emission[1] = emission[2] = 0;
+    return this->ForEachContainingCell(x, [&](double s) {
+      double t, e[3];
+      this->Model->Evaluate(s, t, e);
+      tau += t;
+      for (int c = 0; c < 3; ++c)
+      {
+        emission[c] += e[c];
+      }
+      return true;
+    });
+  }
+
+  void MarchOne(vtkIdType p, float* out)
+  {
+    out[0] = out[1] = out[2] = out[3] = 0.0f;
+    const int px = static_cast<int>(p % this->Width), py = static_cast<int>(p / this->Width);
+    const double ndcX = 2.0 * (px + 0.5) / this->Width - 1.0;
+    const double ndcY = 2.0 * (py + 0.5) / this->Height - 1.0;
+    double nearPoint[4], farPoint[4];
+    const double nearNdc[4] = { ndcX, ndcY, -1.0, 1.0 }, farNdc[4] = { ndcX, ndcY, 1.0, 1.0 };
+    vtkMatrix4x4::MultiplyPoint(this->InverseProjection, nearNdc, nearPoint);
+    vtkMatrix4x4::MultiplyPoint(this->InverseProjection, farNdc, farPoint);
+    if (nearPoint[3] == 0 || farPoint[3] == 0)
+    {
+      return;
+    }
+    double origin[3], direction[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      origin[i] = nearPoint[i] / nearPoint[3];
+      direction[i] = farPoint[i] / farPoint[3] - origin[i];
+    }
+    const double rayLength =
+      std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+    if (!(rayLength > 0) || !std::isfinite(rayLength))
+    {
+      return;
+    }
+    // Cut the segment t in [0, 1] (near to far) to the bounding box.
+    double t0 = 0.0, t1 = 1.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      const double lo = this->Bounds[2 * i], hi = this->Bounds[2 * i + 1];
+      if (direction[i] == 0.0)
+      {
+        if (origin[i] < lo || origin[i] > hi)
+        {
+          return;
+        }
+        continue;
+      }
+      double a = (lo - origin[i]) / direction[i], b = (hi - origin[i]) / direction[i];
+      if (a > b)
+      {
+        std::swap(a, b);
+      }
+      t0 = std::max(t0, a);
+      t1 = std::min(t1, b);
+    }
+    if (!(t1 > t0))
+    {
+      return;
+    }
+
+    auto pointAt = [&](double t, double x[3]) {
+      for (int i = 0; i < 3; ++i)
+      {
+        x[i] = origin[i] + t * direction[i];
+      }
+    };
+    double transmittance = 1.0, colour[3] = { 0, 0, 0 };
+    // Composites a homogeneous piece of `h` world units (the medium sampled at its middle).
+    auto composite = [&](double h, double tau, const double emission[3]) {
+      if (tau > 0)
+      {
+        const double absorbed = -std::expm1(-tau * h);
+        for (int c = 0; c < 3; ++c)
+        {
+          colour[c] += transmittance * emission[c] / tau * absorbed;
+        }
+        transmittance *= 1.0 - absorbed;
+      }
+      else
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          colour[c] += transmittance * emission[c] * h;
+        }
+      }
+    };
+    // Integrates the medium over [a, b] (ray parameters) sampled at its middle.
+    auto integrate = [&](double a, double b) {
+      const double h = (b - a) * rayLength;
+      if (h > 0)
+      {
+        double x[3], tau, emission[3];
+        pointAt(0.5 * (a + b), x);
+        this->Sample(x, tau, emission);
+        composite(h, tau, emission);
+      }
+    };
+    // The boundary between lo (inside the mesh or not: loInside) and hi (the other), by bisection.
+    auto crossing = [&](double lo, double hi, bool loInside) {
+      double x[3];
+      for (int iteration = 0; iteration < 40; ++iteration)
+      {
+        const double mid = 0.5 * (lo + hi);
+        pointAt(mid, x);
+        (this->Inside(x) == loInside ? lo : hi) = mid;
+      }
+      return 0.5 * (lo + hi);
+    };
+
+    double x[3];
+    double ta = t0;
+    pointAt(ta, x);
+    bool insideA = this->Inside(x);
+    for (int step = 0; step < this->Steps && transmittance >= 1e-7; ++step)
+    {
+      const double tb = step + 1 == this->Steps
+        ? t1
+        : t0 + (t1 - t0) * (static_cast<double>(step + 1) / this->Steps);
+      const double tm = 0.5 * (ta + tb);
+      pointAt(tb, x);
+      const bool insideB = this->Inside(x);
+      if (insideA && insideB)
+      {
+        double tau, emission[3];
+        pointAt(tm, x);
+        if (this->Sample(x, tau, emission) > 0)
+        {
+          composite((tb - ta) * rayLength, tau, emission);
+        }
+        else
+        {
+          // A gap of the mesh around the step's middle: integrate up to it and after it.
+          integrate(ta, crossing(ta, tm, true));
+          integrate(crossing(tm, tb, false), tb);
+        }
+      }
+      else if (insideA != insideB)
+      {
+        // The boundary lies in (ta, tb): integrate only the inside part.
+        const double boundary = crossing(ta, tb, insideA);
+        if (insideA)
+        {
+          integrate(ta, boundary);
+        }
+        else
+        {
+          integrate(boundary, tb);
+        }
+      }
+      else
+      {
+        // Both ends outside: a thin part of the mesh may still hold the step's middle.
+        pointAt(tm, x);
+        if (this->Inside(x))
+        {
+          integrate(crossing(ta, tm, false), crossing(tm, tb, true));
+        }
+      }
+      ta = tb;
+      insideA = insideB;
+    }
+    out[0] = static_cast<float>(colour[0]);
+    out[1] = static_cast<float>(colour[1]);
+    out[2] = static_cast<float>(colour[2]);
+    out[3] = static_cast<float>(1.0 - transmittance);
+  }
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      this->MarchOne(this->Pixels[i], this->Output + 4 * i);
+    }
+  }
+
+  void Reduce() {}
+};
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkLocatorRayMarcher::vtkLocatorRayMarcher() = default;
+
+//------------------------------------------------------------------------------
+vtkLocatorRayMarcher::~vtkLocatorRayMarcher()
+{
+  this->SetScalarArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkLocatorRayMarcher::SetInputData(vtkDataSet* input)
+{
+  if (this->Input != input)
+  {
+    this->Input = input;
+    this->Modified();
+  }
+}
+
+vtkDataSet* vtkLocatorRayMarcher::GetInput()
+{
+  return this->Input;
+}
+
+void vtkLocatorRayMarcher::SetVolumeProperty(vtkVolumeProperty* property)
+{
+  if (this->VolumeProperty != property)
+  {
+    this->VolumeProperty = property;
+    this->Modified();
+  }
+}
+
+vtkVolumeProperty* vtkLocatorRayMarcher::GetVolumeProperty()
+{
+  return this->VolumeProperty;
+}
+
+void vtkLocatorRayMarcher::SetCamera(vtkCamera* camera)
+{
+  if (this->Camera != camera)
+  {
+    this->Camera = camera;
+    this->Modified();
+  }
+}
+
+vtkCamera* vtkLocatorRayMarcher::GetCamera()
+{
+  return this->Camera;
+}
+
+//------------------------------------------------------------------------------
+void vtkLocatorRayMarcher::UpdateLocator()
+{
+  if (this->Locator && this->Locator->GetDataSet() == this->Input &&
+    this->Input->GetMTime() <= this->LocatorBuildTime.GetMTime())
+  {
+    return;
+  }
+  this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+  this->Locator->SetDataSet(this->Input);
+  this->Locator->BuildLocator();
+  const vtkIdType numberOfCells = this->Input->GetNumberOfCells();
+  this->CellBounds.assign(static_cast<std::size_t>(6 * numberOfCells), 0.0);
+  for (vtkIdType i = 0; i < numberOfCells; ++i)
+  {
+    this->Input->GetCellBounds(i, this->CellBounds.data() + 6 * i);
+  }
+  this->LocatorBuildTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rgba)
+{
+  if (!pixels || !rgba)
+  {
+    vtkErrorMacro("MarchPixels needs a pixel array and an output array.");
+    return false;
+  }
+  if (!this->Input)
+  {
+    vtkErrorMacro("No input.");
+    return false;
+  }
+  if (!this->Camera)
+  {
+    vtkErrorMacro("No camera.");
+    return false;
+  }
+  if (!this->VolumeProperty)
+  {
+    vtkErrorMacro("No volume property.");
+    return false;
+  }
+  const int width = this->ImageSize[0], height = this->ImageSize[1];
+  if (width < 1 || height < 1)
+  {
+    vtkErrorMacro("Bad image size " << width << "x" << height << ".");
+    return false;
+  }
+  vtkDataArray* array = this->ScalarArrayName
+    ? this->Input->GetPointData()->GetArray(this->ScalarArrayName)
+    : this->Input->GetPointData()->GetScalars();
+  if (!array)
+  {
+    vtkErrorMacro("The input has no point array "
+      << (this->ScalarArrayName ? this->ScalarArrayName : "(active scalars)") << ".");
+    return false;
+  }
+  const vtkIdType numberOfPoints = this->Input->GetNumberOfPoints();
+  if (array->GetNumberOfTuples() != numberOfPoints || array->GetNumberOfComponents() < 1)
+  {
+    vtkErrorMacro("The scalar array has " << array->GetNumberOfTuples() << " tuples for "
+                                          << numberOfPoints << " points.");
+    return false;
+  }
+  OpticalModel model;
+  std::string reason;
+  if (!BuildOpticalModel(this->VolumeProperty, model, reason))
+  {
+    vtkErrorMacro(<< reason);
+    return false;
+  }
+  const vtkIdType numberOfPixels = pixels->GetNumberOfTuples();
+  if (pixels->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro("The pixel array must have one component.");
+    return false;
+  }
+  for (vtkIdType i = 0; i < numberOfPixels; ++i)
+  {
+    const vtkIdType p = pixels->GetValue(i);
+    if (p < 0 || p >= static_cast<vtkIdType>(width) * height)
+    {
+      vtkErrorMacro("Pixel index " << p << " is outside the " << width << "x" << height
+                                   << " image.");
+      return false;
+    }
+  }
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(numberOfPixels);
+  if (numberOfPixels == 0)
+  {
+    return true;
+  }
+  std::fill_n(rgba->GetPointer(0), 4 * numberOfPixels, 0.0f);
+  const vtkIdType numberOfCells = this->Input->GetNumberOfCells();
+  if (numberOfCells == 0)
+  {
+    return true;
+  }
+
+  // Scalars and usable cells (3D, all point scalars finite), single-threaded.
+  std::vector<double> scalars(static_cast<std::size_t>(numberOfPoints));
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    scalars[i] = array->GetComponent(i, 0);
+  }
+  vtkNew<vtkGenericCell> cell;
+  this->Input->GetCell(0, cell); // VTK's lazy initialisation, before any thread calls GetCell
+  std::map<int, int> dimensionOfType;
+  vtkNew<vtkGenericCell> typeProbe;
+  vtkNew<vtkIdList> pointIds;
+  std::vector<unsigned char> usable(static_cast<std::size_t>(numberOfCells), 0);
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    const int type = this->Input->GetCellType(c);
+    auto found = dimensionOfType.find(type);
+    if (found == dimensionOfType.end())
+    {
+      typeProbe->SetCellType(type);
+      found = dimensionOfType.emplace(type, typeProbe->GetCellDimension()).first;
+    }
+    if (found->second != 3)
+    {
+      continue;
+    }
+    this->Input->GetCellPoints(c, pointIds);
+    bool finite = pointIds->GetNumberOfIds() > 0;
+    for (vtkIdType j = 0; j < pointIds->GetNumberOfIds() && finite; ++j)
+    {
+      finite = std::isfinite(scalars[pointIds->GetId(j)]);
+    }
+    usable[c] = finite ? 1 : 0;
+  }
+
+  this->UpdateLocator();
+
+  MarchPixelsWorker worker;
+  worker.Input = this->Input;
+  worker.Locator = this->Locator;
+  worker.CellBounds = this->CellBounds.data();
+  worker.UsableCell = &usable;
+  worker.Scalars = &scalars;
+  worker.Model = &model;
+  this->Input->GetBounds(worker.Bounds);
+  const double dx = worker.Bounds[1] - worker.Bounds[0], dy = worker.Bounds[3] - worker.Bounds[2],
+               dz = worker.Bounds[5] - worker.Bounds[4];
+  worker.Pad = 1e-9 * std::sqrt(dx * dx + dy * dy + dz * dz);
+  worker.Width = width;
+  worker.Height = height;
+  worker.Steps = this->NumberOfSteps;
+  worker.Pixels = pixels->GetPointer(0);
+  worker.Output = rgba->GetPointer(0);
+  worker.MaxCellSize = this->Input->GetMaxCellSize();
+  vtkMatrix4x4* projection = this->Camera->GetCompositeProjectionTransformMatrix(
+    width / static_cast<double>(height), -1.0, 1.0);
+  vtkMatrix4x4::Invert(projection->GetData(), worker.InverseProjection);
+
+  vtkSMPTools::For(0, numberOfPixels, 1, worker);
+  rgba->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLocatorRayMarcher::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Input: " << this->Input.Get() << "\n";
+  os << indent << "ScalarArrayName: " << (this->ScalarArrayName ? this->ScalarArrayName : "(none)")
+     << "\n";
+  os << indent << "VolumeProperty: " << this->VolumeProperty.Get() << "\n";
+  os << indent << "Camera: " << this->Camera.Get() << "\n";
+  os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
+  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+}

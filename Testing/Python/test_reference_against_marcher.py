@@ -1,0 +1,148 @@
+"""vtkUnstructuredVolumeReferenceRenderer against an independent check, vtkLocatorRayMarcher (VTK's
+own cell locator and cell functions, fine uniform steps; no code shared with the reference), on
+every real mesh in ../shared/data that the reference takes (skipped when absent) and on generated
+distortions and nearly degenerate cells.
+
+Per mesh: a 96x96 image, a three-node colour map with an opacity ramp whose unit distance is 5% of
+the mesh's diagonal. At 2000 random pixels, the largest difference in premultiplied RGBA between
+the reference and the marcher must stay below BOUND. The marcher's own error is estimated by
+halving its step (second order: error(N) ~ |I(N/2) - I(N)| / 3) and must be below a quarter of
+BOUND, so that a difference above BOUND is the reference's."""
+import os
+import random
+import sys
+import unittest
+import zlib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import shared_data  # noqa: E402
+import uvrender  # noqa: E402
+from test_preintegrated_tetrahedra import camera_for, reference  # noqa: E402
+
+from unstructuredvolume import vtkAnalyticMeshSource, vtkLocatorRayMarcher  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdTypeArray  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid  # noqa: E402
+
+SIZE = 96
+PIXELS = 2000
+STEPS = 1000
+BOUND = 1e-3
+
+
+def scene(mesh, scalar):
+    mesh.GetPointData().SetActiveScalars(scalar)
+    prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+    prop.SetScalarOpacityUnitDistance(0.05 * mesh.GetLength())
+    return prop, camera_for(mesh, 30, 25, distance=1.6)
+
+
+def march(mesh, scalar, prop, camera, pixels, steps):
+    marcher = vtkLocatorRayMarcher()
+    marcher.SetInputData(mesh)
+    marcher.SetScalarArrayName(scalar)
+    marcher.SetVolumeProperty(prop)
+    marcher.SetCamera(camera)
+    marcher.SetImageSize(SIZE, SIZE)
+    marcher.SetNumberOfSteps(steps)
+    ids = vtkIdTypeArray()
+    for p in pixels:
+        ids.InsertNextValue(p)
+    rgba = vtkFloatArray()
+    assert marcher.MarchPixels(ids, rgba)
+    return [rgba.GetTuple4(i) for i in range(len(pixels))]
+
+
+def largest(a, b):
+    return max(max(abs(x - y) for x, y in zip(p, q)) for p, q in zip(a, b))
+
+
+def compare(mesh, scalar, pixel_count=PIXELS, size=SIZE, steps=STEPS):
+    """Reference and marcher at pixel_count seeded random pixels: (difference, marcher error, wrong
+    share of covered pixels, covered)."""
+    prop, camera = scene(mesh, scalar)
+    image = reference(mesh, prop, camera, size).GetPointData().GetScalars()
+    chooser = random.Random(zlib.crc32(f"{mesh.GetNumberOfCells()} {mesh.GetLength():.9g}".encode()))
+    pixels = chooser.sample(range(size * size), min(pixel_count, size * size))
+    fine = march(mesh, scalar, prop, camera, pixels, steps)
+    coarse = march(mesh, scalar, prop, camera, pixels, steps // 2)
+    truth = [image.GetTuple4(p) for p in pixels]
+    covered = [i for i, (r, m) in enumerate(zip(truth, fine)) if max(r[3], m[3]) > 1e-3]
+    wrong = sum(1 for i in covered if max(abs(x - y) for x, y in zip(truth[i], fine[i])) > 0.02)
+    return largest(truth, fine), largest(fine, coarse) / 3.0, wrong / max(len(covered), 1), len(covered)
+
+
+def generated(distortion, resolution=6, cells=vtkAnalyticMeshSource.HEXAHEDRA):
+    source = vtkAnalyticMeshSource()
+    source.SetResolution(resolution, resolution, resolution)
+    source.SetField(vtkAnalyticMeshSource.MARSCHNER_LOBB)
+    source.SetDistortion(distortion)
+    source.SetCellKind(cells)
+    source.Update()
+    return source.GetOutput()
+
+
+def collapsed_layers():
+    """A hexahedral grid whose every other layer of cells is 1e-6 thin: nearly flat cells."""
+    mesh = vtkUnstructuredGrid()
+    mesh.DeepCopy(generated(vtkAnalyticMeshSource.TWIST))
+    points = mesh.GetPoints()
+    for i in range(points.GetNumberOfPoints()):
+        x, y, z = points.GetPoint(i)
+        layer = round((z + 1.0) * 3.0)  # 7 point layers at z = -1 + k / 3
+        if layer % 2 == 1:
+            points.SetPoint(i, x, y, z - 1.0 / 3.0 + 1e-6)
+    points.Modified()
+    return mesh
+
+
+def slivers():
+    """A jittered tetrahedral grid squashed to a hundredth in z: nearly flat tetrahedra."""
+    mesh = vtkUnstructuredGrid()
+    mesh.DeepCopy(generated(vtkAnalyticMeshSource.JITTER, 5, vtkAnalyticMeshSource.SIX_TETRAHEDRA))
+    points = mesh.GetPoints()
+    for i in range(points.GetNumberOfPoints()):
+        x, y, z = points.GetPoint(i)
+        points.SetPoint(i, x, y, 0.01 * z)
+    points.Modified()
+    return mesh
+
+
+# Name, mesh, marcher steps (the thin layers need finer steps for the marcher's own error).
+GENERATED = [
+    ("twisted_hexahedra", lambda: generated(vtkAnalyticMeshSource.TWIST), STEPS),
+    ("jittered_hexahedra", lambda: generated(vtkAnalyticMeshSource.JITTER), STEPS),
+    ("rotated_tetrahedra", lambda: generated(vtkAnalyticMeshSource.ROTATE_45, 6, vtkAnalyticMeshSource.SIX_TETRAHEDRA),
+     STEPS),
+    ("collapsed_layers", collapsed_layers, 4 * STEPS),
+    ("slivers", slivers, STEPS),
+]
+
+
+class ReferenceAgainstMarcher(unittest.TestCase):
+    def check(self, mesh, scalar, steps=STEPS):
+        difference, marcher_error, wrong, covered = compare(mesh, scalar, steps=steps)
+        print(f"\n  {covered} of {PIXELS} pixels covered, {100 * wrong:.2f}% off by > 0.02; largest difference "
+              f"{difference:.3g} (bound {BOUND}), marcher's own error {marcher_error:.2g}", end="")
+        self.assertGreater(covered, 50)
+        self.assertLess(marcher_error, BOUND / 4)
+        self.assertLess(difference, BOUND)
+
+
+def _real(loader, scalar):
+    def test(self):
+        try:
+            mesh = loader()
+        except FileNotFoundError as missing:
+            self.skipTest(f"{missing} is absent")
+        self.check(mesh, scalar)
+    return test
+
+
+for _name, _loader, _scalar in shared_data.REFERENCE_MESHES:
+    setattr(ReferenceAgainstMarcher, f"test_{_name.replace('-', '_')}", _real(_loader, _scalar))
+for _name, _make, _steps in GENERATED:
+    setattr(ReferenceAgainstMarcher, f"test_{_name}",
+            (lambda make, steps: lambda self: self.check(make(), "MarschnerLobb", steps))(_make, _steps))
+
+if __name__ == "__main__":
+    unittest.main()
