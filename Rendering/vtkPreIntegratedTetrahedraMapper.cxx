@@ -507,8 +507,8 @@ void vtkPreIntegratedTetrahedraMapper::Render(vtkRenderer* renderer, vtkVolume* 
   }
   double clippingRange[2];
   camera->GetClippingRange(clippingRange);
-  // A vertex nearer than half the near distance is too close to project safely.
-  program->SetUniformf("minimumClipW", parallel ? -1e30f : static_cast<float>(0.5 * clippingRange[0]));
+  // Tetrahedra crossing the near plane (where rays begin) are ray-cast, in both projections.
+  program->SetUniformf("nearDepth", static_cast<float>(clippingRange[0]));
   program->SetUniformf("zeroTolerance", 1e-6f);
   const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
   program->SetUniform2f("viewportSize", viewport);

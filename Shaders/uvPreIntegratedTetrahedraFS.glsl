@@ -63,7 +63,9 @@ void main()
       g[k] = vec3(0.0);
 #endif
     }
-    float enter = 0.0, leave = 3.0e38; // ray parameter: eye z distance (direction.z = -1)
+    // Ray parameter: eye depth (direction.z = -1); the ray begins on the near plane, as in the
+    // reference, so matter between the eye and that plane is not seen.
+    float enter = -nearPoint.z, leave = 3.0e38;
     for (int k = 0; k < 4; ++k)
     {
       vec3 a = p[(k + 1) % 4], b = p[(k + 2) % 4], c = p[(k + 3) % 4];

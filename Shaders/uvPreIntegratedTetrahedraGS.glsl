@@ -24,7 +24,7 @@ void main()
     for (int corner = 0; corner < 3; ++corner)
     {
       if (projection.mode == 2)
-        SetRayCastSlot(slots[corner], id);
+        SetRayCastSlot(slots[corner], id, projection.screen[0], projection.screen[1]);
       else
         SetSlot(projection, slots[corner]);
       EmitVertex();

@@ -21,10 +21,10 @@ void main()
   }
   else if (projection.mode == 2)
   {
-    SetRayCastSlot(slot, id);
+    SetRayCastSlot(slot, id, projection.screen[0], projection.screen[1]);
   }
   else
   {
-    SetRayCastSlot(4, id); // every slot at one point: no area, no fragment
+    SetRayCastSlot(4, id, vec2(2.0), vec2(2.0)); // every slot at one point: no area, no fragment
   }
 }

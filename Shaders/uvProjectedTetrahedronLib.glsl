@@ -5,8 +5,9 @@
 // uvProjectedTetrahedron.h (same steps, same names). Every attribute is interpolated without
 // perspective (noperspective) as value/w and 1/w of the surface it lies on, so the fragment stage
 // recovers exact eye-space points on the front and back faces under any projection. A tetrahedron
-// reaching behind the near limit cannot be projected; it is drawn as a screen-covering quad whose
-// fragments intersect the eye ray with the tetrahedron's faces instead.
+// crossing the near plane (where rays begin) is drawn as the screen rectangle of its part beyond the
+// plane, whose fragments intersect the eye ray with the tetrahedron's faces instead; one wholly
+// before the near plane is not drawn.
 uniform usamplerBuffer tetrahedronPoints; // 4 point ids per tetrahedron
 uniform samplerBuffer pointData;          // model position (recentred) and normalised scalar
 #ifdef UV_GRADIENTS
@@ -15,7 +16,7 @@ uniform mat3 modelToEyeNormals;
 #endif
 uniform mat4 modelToEye;
 uniform mat4 eyeToClip;
-uniform float minimumClipW;               // below it (perspective), a vertex is too near to project
+uniform float nearDepth;                  // the near plane's eye depth: rays begin there
 uniform float zeroTolerance;              // relative size of a dependency coefficient taken as zero
 
 noperspective out vec3 frontData;        // (scalar, eye z, 1) / w on the front surface
@@ -85,11 +86,11 @@ SurfacePoint SidePoint(float side, float sides[4], float weights[4])
   return p;
 }
 
-/// Slot `slot` of the screen-covering fan drawn for a tetrahedron that cannot be projected: the
-/// fragments intersect the eye ray with tetrahedron `id` themselves.
-void SetRayCastSlot(int slot, int id)
+/// Slot `slot` of the rectangle [low, high] (normalised device coordinates) drawn for a tetrahedron
+/// that crosses the near plane: the fragments intersect the eye ray with tetrahedron `id` themselves.
+void SetRayCastSlot(int slot, int id, vec2 low, vec2 high)
 {
-  vec2 corners[5] = vec2[5](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(1.0, 1.0), vec2(-1.0, 1.0), vec2(0.0));
+  vec2 corners[5] = vec2[5](low, vec2(high.x, low.y), high, vec2(low.x, high.y), 0.5 * (low + high));
   gl_Position = vec4(corners[slot], 0.0, 1.0);
   frontData = vec3(0.0, 0.0, 1.0);
   backData = vec3(0.0, 0.0, 1.0);
@@ -104,9 +105,9 @@ void SetRayCastSlot(int slot, int id)
 /// hull[i + 1 mod 4]) around the projected outline; repeated hull entries make empty triangles.
 struct Projection
 {
-  int mode;            // 0: nothing to draw, 1: the fan, 2: too near, draw the ray-cast fan
+  int mode;            // 0: nothing to draw, 1: the fan, 2: crosses the near plane, ray-cast
   int hull[4];         // vertex indices around the outline
-  vec2 screen[4];
+  vec2 screen[4];      // mode 2: screen[0] and screen[1] bound the part beyond the near plane
   vec2 thick;
   SurfacePoint thickFront;
   SurfacePoint thickBack;
@@ -129,16 +130,51 @@ void LoadTetrahedron(int id)
 #endif
   }
 }
+/// Screen bounds of the loaded tetrahedron's part beyond the near plane: the hull of its vertices
+/// there and of its edges' crossings of the plane, projected (slightly widened, clamped to the screen).
+void NearClippedBounds(out vec2 low, out vec2 high)
+{
+  low = vec2(1.0);
+  high = vec2(-1.0);
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int j = k; j < 4; ++j)
+    {
+      float dk = -eye[k].z - nearDepth, dj = -eye[j].z - nearDepth;
+      vec3 point;
+      if (j == k && dk >= 0.0)
+        point = eye[k];
+      else if (j != k && dk * dj < 0.0)
+        point = mix(eye[k], eye[j], dk / (dk - dj));
+      else
+        continue;
+      vec4 c = eyeToClip * vec4(point, 1.0);
+      vec2 p = c.xy / c.w;
+      low = min(low, p);
+      high = max(high, p);
+    }
+  }
+  vec2 margin = 1e-3 * (vec2(1.0) + abs(low) + abs(high));
+  low = clamp(low - margin, vec2(-1.0), vec2(1.0));
+  high = clamp(high + margin, vec2(-1.0), vec2(1.0));
+}
+
 Projection Project()
 {
   Projection result;
   result.mode = 0;
+  int beyond = 0;
   for (int k = 0; k < 4; ++k)
   {
-    result.mode = !(clip[k].w >= minimumClipW) ? 2 : result.mode;
+    beyond += -eye[k].z >= nearDepth ? 1 : 0;
   }
-  if (result.mode == 2)
+  if (beyond < 4)
   {
+    result.mode = beyond == 0 ? 0 : 2; // wholly before the near plane: no ray reaches it
+    if (beyond > 0)
+    {
+      NearClippedBounds(result.screen[0], result.screen[1]);
+    }
     return result;
   }
   vec2 p[4];

@@ -244,8 +244,24 @@ class AccuracyTests(SceneTestCase):
         camera.SetViewUp(0, 0, 1)
         camera.SetViewAngle(60)
         camera.SetClippingRange(0.01, 10)
-        # Measured 3.3e-3: near the eye the centroid order of large tetrahedra is least reliable.
-        self.check(mesh, prop, camera, 96, 5e-3)
+        # Tetrahedra crossing the near plane are ray-cast from that plane, where the reference's rays
+        # begin (from the eye, over the whole screen, before: 3.3e-3). Measured 8.0e-4; the rest is
+        # the centroid order of large tetrahedra near the eye.
+        self.check(mesh, prop, camera, 96, 1.5e-3)
+
+    def test_parallel_camera_inside_the_mesh(self):
+        # Parallel projection with the near plane cutting the mesh: what lies before the plane is not
+        # seen (it was, projected whole: 4664 pixels covered where the reference covers 4142).
+        mesh = analytic(6)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        camera = vtkCamera()
+        camera.ParallelProjectionOn()
+        camera.SetParallelScale(0.8)
+        camera.SetPosition(0.3, -0.2, 0.4)
+        camera.SetFocalPoint(0.8, 0.9, 0.1)
+        camera.SetViewUp(0, 0, 1)
+        camera.SetClippingRange(0.2, 10)
+        self.check(mesh, prop, camera, 96, 1.5e-3)
 
 
 class BaselineTests(SceneTestCase):
