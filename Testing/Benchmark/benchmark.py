@@ -52,7 +52,7 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
 from shared_data import SHARED, bluntfin, can, disk_out_ref, legacy  # noqa: E402
-REFERENCE_VERSION = "1"  # bump when the reference renderer's output changes
+REFERENCE_VERSION = "2"  # bump when the reference renderer's output changes (2: no lost cells, superposition)
 
 # ---------------------------------------------------------------------------------------------
 # Mappers: (name, factory, input: "tets" or "hexahedra"). This project's mappers register here as they land.
