@@ -475,7 +475,7 @@ class RealMeshTests(SceneTestCase):
         return scene
 
     def test_blunt_fin(self):
-        # Curvilinear hexahedra with collapsed cells. Measured 1.6e-4.
+        # Curvilinear hexahedra with collapsed cells. Measured 1.5e-4.
         import shared_data
         self.check(self.load(shared_data.bluntfin, "Density"), 0.01, 1e-3, "hexahedral_blunt_fin", (0.55,))
 
@@ -485,11 +485,12 @@ class RealMeshTests(SceneTestCase):
         self.check(self.load(shared_data.disk_out_ref, "Temp"), 0.05, 1e-3, "hexahedral_disk_out_ref", (0.4, 0.8))
 
     def test_can(self):
-        # The crushed can: 51 of its 4800 hexahedra are tangled (Jacobian of both signs), and there the
-        # walk and the reference (every cell's every interval) disagree: measured 8.6e-3, 430 pixels.
+        # The crushed can: 51 of its 4800 hexahedra are tangled (Jacobian of both signs). Measured
+        # 3.5e-3 (8.6e-3 against the reference before it stopped losing cells): the walk takes one
+        # cell at a time where the optical model superposes overlapping cells.
         import shared_data
         mesh = self.load(shared_data.can, "DISPL_magnitude")
-        scene = self.check(mesh, 0.05, 0.015, "hexahedral_can", (0.5,))
+        scene = self.check(mesh, 0.05, 0.007, "hexahedral_can", (0.5,))
         self.assertEqual(scene.mapper.GetNumberOfTangledCells(), 51)
         self.assertEqual(scene.events.warnings, 1)
 
