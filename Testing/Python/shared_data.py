@@ -9,7 +9,7 @@ from vtkmodules.vtkIOExodus import vtkExodusIIReader
 from vtkmodules.vtkCommonCore import vtkDoubleArray
 from vtkmodules.vtkIOGeometry import vtkOpenFOAMReader
 from vtkmodules.vtkIOImage import vtkImageReader2
-from vtkmodules.vtkIOLegacy import vtkDataSetReader, vtkUnstructuredGridReader
+from vtkmodules.vtkIOLegacy import vtkDataSetReader
 from vtkmodules.vtkIOXML import vtkXMLStructuredGridReader, vtkXMLUnstructuredGridReader
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -64,16 +64,6 @@ def can():
     return magnitude.GetOutput()
 
 
-def legacy(*parts):
-    """A legacy .vtk unstructured grid, every scalar and field read."""
-    reader = vtkUnstructuredGridReader()
-    reader.ReadAllScalarsOn()
-    reader.ReadAllFieldsOn()
-    reader.SetFileName(path(*parts))
-    reader.Update()
-    return reader.GetOutput()
-
-
 def _unstructured(algorithm):
     to_grid = vtkAppendFilter()
     to_grid.SetInputConnection(algorithm.GetOutputPort())
@@ -81,8 +71,8 @@ def _unstructured(algorithm):
     return to_grid.GetOutput()
 
 
-def _any_legacy(*parts):
-    """A legacy .vtk file of any dataset type, made an unstructured grid."""
+def legacy(*parts):
+    """A legacy .vtk file of any dataset type (every scalar and field read) as an unstructured grid."""
     reader = vtkDataSetReader()
     reader.ReadAllScalarsOn()
     reader.ReadAllFieldsOn()
@@ -109,12 +99,12 @@ def _voxels(image):
 
 def office():
     """A curvilinear structured grid (air flow in an office), 7220 hexahedra; "scalars"."""
-    return _any_legacy("office", "office.binary.vtk")
+    return legacy("office", "office.binary.vtk")
 
 
 def sample_struct_grid():
     """VTK's SampleStructGrid: a curvilinear grid of 21489 hexahedra; "scalars"."""
-    return _any_legacy("sample_struct_grid", "SampleStructGrid.vtk")
+    return legacy("sample_struct_grid", "SampleStructGrid.vtk")
 
 
 def openfoam_cavity_points():

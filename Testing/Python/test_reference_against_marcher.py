@@ -17,7 +17,7 @@ import zlib
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
-from test_preintegrated_tetrahedra import camera_for, reference  # noqa: E402
+from test_preintegrated_tetrahedra import SceneTestCase, camera_for, reference  # noqa: E402
 
 from unstructuredvolume import vtkAnalyticMeshSource, vtkLocatorRayMarcher  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdTypeArray  # noqa: E402
@@ -180,14 +180,7 @@ def render_mapper(kind, mesh, prop, camera):
     return image, scene.events.errors
 
 
-class MappersAgainstMarcher(unittest.TestCase):
-    def tearDown(self):
-        from test_preintegrated_tetrahedra import OPEN_SCENES
-        while OPEN_SCENES:
-            scene = OPEN_SCENES.pop()
-            scene.mapper.ReleaseGraphicsResources(scene.window)
-            scene.window.RemoveRenderer(scene.renderer)
-
+class MappersAgainstMarcher(SceneTestCase):
     def check(self, name, mesh, scalar):
         from unstructuredvolume import vtkHexahedraToTetrahedra
         from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_TETRA, VTK_VOXEL
