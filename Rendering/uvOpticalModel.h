@@ -264,9 +264,7 @@ void IntegrateOverlap(const TransferFunction& tf, const std::vector<ScalarAt>& s
   std::vector<double> cuts = { t0 };
   for (const ScalarAt& scalarAt : scalarsAt)
   {
-    std::vector<double> own;
-    detail::AppendNodeCrossings(tf, scalarAt, t0, t1, probes, own);
-    cuts.insert(cuts.end(), own.begin(), own.end());
+    detail::AppendNodeCrossings(tf, scalarAt, t0, t1, probes, cuts);
   }
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());

@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 vtkStandardNewMacro(vtkUnstructuredVolumeReferenceRenderer);
@@ -206,7 +207,8 @@ struct RayScratch
   std::vector<uv::Interval> Parts;
   std::vector<double> Hits;
   std::vector<double> Events;
-  std::vector<SegmentScalar> Active;
+  std::vector<SegmentScalar> Scalars;                              // of a run of overlapping segments
+  std::vector<std::reference_wrapper<const SegmentScalar>> Active; // those present on one stretch
 };
 
 /// Every ray's segments, in order, integrated exactly.
@@ -306,6 +308,12 @@ private:
     }
     std::sort(events.begin(), events.end());
     events.erase(std::unique(events.begin(), events.end()), events.end());
+    // Each segment's scalar once, over its whole span (the fit holds on every stretch of it).
+    scratch.Scalars.clear();
+    for (std::size_t i = first; i < last; ++i)
+    {
+      scratch.Scalars.emplace_back(this->TheMesh, scratch.Segments[i], ray);
+    }
     for (std::size_t e = 0; e + 1 < events.size(); ++e)
     {
       const double a = events[e], b = events[e + 1];
@@ -315,7 +323,7 @@ private:
         const Segment& segment = scratch.Segments[i];
         if (segment.Span.Enter <= a && segment.Span.Exit >= b)
         {
-          scratch.Active.emplace_back(this->TheMesh, Segment{ { a, b }, segment.Cell }, ray);
+          scratch.Active.push_back(std::cref(scratch.Scalars[i - first]));
         }
       }
       if (scratch.Active.size() == 1)
