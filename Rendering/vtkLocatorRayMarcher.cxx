@@ -512,39 +512,19 @@ vtkLocatorRayMarcher::~vtkLocatorRayMarcher()
 //------------------------------------------------------------------------------
 void vtkLocatorRayMarcher::SetInputData(vtkDataSet* input)
 {
-  if (this->Input != input)
-  {
-    this->Input = input;
-    this->Modified();
-  }
+  vtkSetSmartPointerBodyMacro(Input, vtkDataSet, input);
 }
+vtkCxxSetSmartPointerMacro(vtkLocatorRayMarcher, VolumeProperty, vtkVolumeProperty);
+vtkCxxSetSmartPointerMacro(vtkLocatorRayMarcher, Camera, vtkCamera);
 
 vtkDataSet* vtkLocatorRayMarcher::GetInput()
 {
   return this->Input;
 }
 
-void vtkLocatorRayMarcher::SetVolumeProperty(vtkVolumeProperty* property)
-{
-  if (this->VolumeProperty != property)
-  {
-    this->VolumeProperty = property;
-    this->Modified();
-  }
-}
-
 vtkVolumeProperty* vtkLocatorRayMarcher::GetVolumeProperty()
 {
   return this->VolumeProperty;
-}
-
-void vtkLocatorRayMarcher::SetCamera(vtkCamera* camera)
-{
-  if (this->Camera != camera)
-  {
-    this->Camera = camera;
-    this->Modified();
-  }
 }
 
 vtkCamera* vtkLocatorRayMarcher::GetCamera()
