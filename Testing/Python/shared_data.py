@@ -23,14 +23,19 @@ def path(*parts):
     return found
 
 
+def _unstructured(algorithm):
+    """An algorithm's output as a vtkUnstructuredGrid."""
+    to_grid = vtkAppendFilter()
+    to_grid.SetInputConnection(algorithm.GetOutputPort())
+    to_grid.Update()
+    return to_grid.GetOutput()
+
+
 def bluntfin():
     """NASA's Blunt Fin (PLOT3D), 40 x 32 x 32 points of curvilinear hexahedra; "Density" and more."""
     reader = vtkXMLStructuredGridReader()
     reader.SetFileName(path("bluntfin", "bluntfin.vts"))
-    to_grid = vtkAppendFilter()
-    to_grid.SetInputConnection(reader.GetOutputPort())
-    to_grid.Update()
-    return to_grid.GetOutput()
+    return _unstructured(reader)
 
 
 def disk_out_ref():
@@ -64,13 +69,6 @@ def can():
     return magnitude.GetOutput()
 
 
-def _unstructured(algorithm):
-    to_grid = vtkAppendFilter()
-    to_grid.SetInputConnection(algorithm.GetOutputPort())
-    to_grid.Update()
-    return to_grid.GetOutput()
-
-
 def legacy(*parts):
     """A legacy .vtk file of any dataset type (every scalar and field read) as an unstructured grid."""
     reader = vtkDataSetReader()
@@ -93,10 +91,6 @@ def _with_smooth_field(mesh):
     return mesh
 
 
-def _voxels(image):
-    return _unstructured(image)
-
-
 def office():
     """A curvilinear structured grid (air flow in an office), 7220 hexahedra; "scalars"."""
     return legacy("office", "office.binary.vtk")
@@ -117,14 +111,7 @@ def openfoam_cavity_points():
     steps = reader.GetTimeValues()
     reader.UpdateTimeStep(steps.GetValue(steps.GetNumberOfTuples() - 1))
     reader.Update()
-    return _unstructured_block(reader.GetOutput().GetBlock(0))
-
-
-def _unstructured_block(block):
-    to_grid = vtkAppendFilter()
-    to_grid.AddInputData(block)
-    to_grid.Update()
-    return to_grid.GetOutput()
+    return reader.GetOutput().GetBlock(0)  # the internal mesh, an unstructured grid
 
 
 def bucky():
@@ -137,7 +124,7 @@ def bucky():
     reader.SetFileDimensionality(3)
     reader.Update()
     reader.GetOutput().GetPointData().GetScalars().SetName("density")
-    return _voxels(reader)
+    return _unstructured(reader)
 
 
 # Every real mesh the reference renders with a point scalar: name, loader, scalar. The cell-data,

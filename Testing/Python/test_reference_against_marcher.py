@@ -17,11 +17,13 @@ import zlib
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
-from test_preintegrated_tetrahedra import SceneTestCase, camera_for, reference  # noqa: E402
+from test_hexahedral_ray_cast import HexScene  # noqa: E402
+from test_preintegrated_tetrahedra import Scene, SceneTestCase, camera_for, reference  # noqa: E402
 
-from unstructuredvolume import vtkAnalyticMeshSource, vtkLocatorRayMarcher  # noqa: E402
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
+                                vtkHexahedraToTetrahedra, vtkLocatorRayMarcher)
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdTypeArray  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_TETRA, VTK_VOXEL, vtkUnstructuredGrid  # noqa: E402
 
 SIZE = 96
 PIXELS = 2000
@@ -56,13 +58,13 @@ def largest(a, b):
     return max(max(abs(x - y) for x, y in zip(p, q)) for p, q in zip(a, b))
 
 
-def compare(mesh, scalar, pixel_count=PIXELS, size=SIZE, steps=STEPS):
-    """Reference and marcher at pixel_count seeded random pixels: (difference, marcher error, wrong
-    share of covered pixels, covered)."""
+def compare(mesh, scalar, steps=STEPS):
+    """Reference and marcher at PIXELS seeded random pixels: (difference, marcher error, wrong share
+    of covered pixels, covered)."""
     prop, camera = scene(mesh, scalar)
-    image = reference(mesh, prop, camera, size).GetPointData().GetScalars()
+    image = reference(mesh, prop, camera, SIZE).GetPointData().GetScalars()
     chooser = random.Random(zlib.crc32(f"{mesh.GetNumberOfCells()} {mesh.GetLength():.9g}".encode()))
-    pixels = chooser.sample(range(size * size), min(pixel_count, size * size))
+    pixels = chooser.sample(range(SIZE * SIZE), PIXELS)
     fine = march(mesh, scalar, prop, camera, pixels, steps)
     coarse = march(mesh, scalar, prop, camera, pixels, steps // 2)
     truth = [image.GetTuple4(p) for p in pixels]
@@ -128,18 +130,17 @@ class ReferenceAgainstMarcher(unittest.TestCase):
         self.assertLess(difference, BOUND)
 
 
-def _real(loader, scalar):
-    def test(self):
-        try:
-            mesh = loader()
-        except FileNotFoundError as missing:
-            self.skipTest(f"{missing} is absent")
-        self.check(mesh, scalar)
-    return test
+def load(test, loader):
+    """A shared mesh, or the test skipped when ../shared/data lacks it."""
+    try:
+        return loader()
+    except FileNotFoundError as missing:
+        test.skipTest(f"{missing} is absent")
 
 
 for _name, _loader, _scalar in shared_data.REFERENCE_MESHES:
-    setattr(ReferenceAgainstMarcher, f"test_{_name.replace('-', '_')}", _real(_loader, _scalar))
+    setattr(ReferenceAgainstMarcher, f"test_{_name.replace('-', '_')}",
+            (lambda loader, scalar: lambda self: self.check(load(self, loader), scalar))(_loader, _scalar))
 for _name, _make, _steps in GENERATED:
     setattr(ReferenceAgainstMarcher, f"test_{_name}",
             (lambda make, steps: lambda self: self.check(make(), "MarschnerLobb", steps))(_make, _steps))
@@ -169,9 +170,6 @@ def float_image_tuples(image):
 
 
 def render_mapper(kind, mesh, prop, camera):
-    from test_preintegrated_tetrahedra import Scene
-    from test_hexahedral_ray_cast import HexScene
-    from unstructuredvolume import vtkBarycentricShellMapper
     if kind == "hexahedral":
         scene = HexScene(mesh, prop, camera, SIZE)
     else:
@@ -182,8 +180,6 @@ def render_mapper(kind, mesh, prop, camera):
 
 class MappersAgainstMarcher(SceneTestCase):
     def check(self, name, mesh, scalar):
-        from unstructuredvolume import vtkHexahedraToTetrahedra
-        from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_TETRA, VTK_VOXEL
         types = {mesh.GetCellType(i) for i in range(mesh.GetNumberOfCells())}
         prop, camera = scene(mesh, scalar)
         split = mesh
@@ -197,16 +193,18 @@ class MappersAgainstMarcher(SceneTestCase):
             runs.append(("hexahedral", mesh))
         chooser = random.Random(zlib.crc32(f"mappers {mesh.GetNumberOfCells()}".encode()))
         randoms = chooser.sample(range(SIZE * SIZE), MAPPER_PIXELS)
-        marched = {}
+        # Per grid (both tetrahedral mappers take the same split): its reference and marched pixels.
+        references, marched = {}, {}
         report = []
         for kind, grid in runs:
             image, errors = render_mapper(kind, grid, prop, camera)
             self.assertEqual(errors, 0, kind)
-            truth = float_image_tuples(reference(grid, prop, camera, SIZE))
+            if id(grid) not in references:
+                references[id(grid)] = float_image_tuples(reference(grid, prop, camera, SIZE))
+            truth = references[id(grid)]
             worst = sorted(range(SIZE * SIZE), key=lambda p: -max(abs(a - b) for a, b in zip(image[p], truth[p])))
             pixels = sorted(set(randoms) | set(worst[:WORST_PIXELS]))
-            key = id(grid)
-            known = marched.setdefault(key, {})
+            known = marched.setdefault(id(grid), {})
             missing = [p for p in pixels if p not in known]
             if missing:
                 known.update(zip(missing, march(grid, scalar, prop, camera, missing, STEPS)))
@@ -221,18 +219,8 @@ class MappersAgainstMarcher(SceneTestCase):
 
 for _name, _loader, _scalar in shared_data.REFERENCE_MESHES:
     setattr(MappersAgainstMarcher, f"test_{_name.replace('-', '_')}",
-            (lambda name, loader, scalar: lambda self: self._real(name, loader, scalar))(_name, _loader, _scalar))
-
-
-def _load_and_check(self, name, loader, scalar):
-    try:
-        mesh = loader()
-    except FileNotFoundError as missing:
-        self.skipTest(f"{missing} is absent")
-    self.check(name, mesh, scalar)
-
-
-MappersAgainstMarcher._real = _load_and_check
+            (lambda name, loader, scalar: lambda self: self.check(name, load(self, loader), scalar))(
+                _name, _loader, _scalar))
 
 
 if __name__ == "__main__":
