@@ -5,6 +5,7 @@ set(uv_rendering_classes
   vtkHexahedralRayCastMapper
   vtkLocatorRayMarcher
   vtkPreIntegratedTetrahedraMapper
+  vtkUnstructuredVolumeMapper
   vtkUnstructuredVolumeReferenceRenderer
   vtkVolumeImageErrorMetrics)
 set(uv_rendering_sources)
@@ -13,18 +14,18 @@ foreach (class IN LISTS uv_rendering_classes)
   list(APPEND uv_rendering_sources "${CMAKE_CURRENT_LIST_DIR}/${class}.cxx")
   list(APPEND uv_rendering_headers "${CMAKE_CURRENT_LIST_DIR}/${class}.h")
 endforeach ()
-# VTK-free math, unit-tested on its own, and the one VTK-reading helper the mappers share.
-set(uv_rendering_private_headers
-  "${CMAKE_CURRENT_LIST_DIR}/uvBarycentricShell.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvChebyshevSeries.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvHexahedronRay.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvImageErrorMetrics.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvIsosurfaceList.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvMapperOpenGL.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvOpticalModel.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvPreIntegration.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvProjectedTetrahedron.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvRayCellGeometry.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvTetrahedralMesh.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvTransferFunctionFromVolumeProperty.h"
-  "${CMAKE_CURRENT_LIST_DIR}/uvVisibilitySort.h")
+# Not wrapped: VTK-free math (uv*.h, unit-tested on its own), the VTK-reading helpers the mappers
+# share and the OpenGL layer under vtkUnstructuredVolumeMapper (vtkUnstructuredVolume*.h).
+set(uv_rendering_private_headers)
+foreach (header IN ITEMS
+    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedronRay uvImageErrorMetrics
+    uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
+    uvVisibilitySort
+    vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
+    vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL vtkUnstructuredVolumeTetrahedralMesh
+    vtkUnstructuredVolumeTexture vtkUnstructuredVolumeTransferFunction
+    vtkUnstructuredVolumeTransferFunctionTexture)
+  list(APPEND uv_rendering_private_headers "${CMAKE_CURRENT_LIST_DIR}/${header}.h")
+endforeach ()
+# The float target has a source file of its own (the other OpenGL-layer classes are header-only).
+list(APPEND uv_rendering_sources "${CMAKE_CURRENT_LIST_DIR}/vtkUnstructuredVolumeFloatTarget.cxx")

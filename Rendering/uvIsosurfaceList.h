@@ -51,6 +51,12 @@ public:
     return drawn;
   }
 
+  /// Columns of Texels(drawn): one per surface, at least one.
+  static int TexelColumns(const std::vector<Isosurface>& drawn)
+  {
+    return static_cast<int>(std::max<std::size_t>(1, drawn.size()));
+  }
+
   /// As a 2-row float RGBA texture: row 0 (r, g, b, opacity), row 1 (value, 0, 0, 0); at least one
   /// column (a zero one when empty) so the texture always exists.
   static std::vector<float> Texels(const std::vector<Isosurface>& drawn)

@@ -37,6 +37,12 @@ public:
     double Scalar;
     glm::dvec3 Color;
     double Extinction;
+
+    bool operator==(const Node& other) const
+    {
+      return this->Scalar == other.Scalar && this->Color == other.Color && this->Extinction == other.Extinction;
+    }
+    bool operator!=(const Node& other) const { return !(*this == other); }
   };
 
   /// Nodes must be sorted by scalar, with distinct scalars; at least one.

@@ -12,10 +12,10 @@
 #include "uvBarycentricShellMaskFS.h"
 #include "uvBarycentricShellSliceFS.h"
 #include "uvFullScreenTriangleVS.h"
-#include "uvMapperOpenGL.h"
+#include "vtkUnstructuredVolumeOpenGL.h"
 #include "uvSegmentIntegrationLib.h"
-#include "uvTetrahedralMesh.h"
-#include "uvTransferFunctionFromVolumeProperty.h"
+#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+#include "vtkUnstructuredVolumeTransferFunction.h"
 #include "uvTransferFunctionLib.h"
 #include "uvVisibilitySort.h"
 
@@ -133,10 +133,10 @@ std::array<int, 4> ScreenRectangle(const double bounds[6], const glm::dmat4& wor
 class vtkBarycentricShellMapper::Internals
 {
 public:
-  uv::TetrahedralMesh Mesh;
+  uvvtk::TetrahedralMesh Mesh;
   std::vector<std::uint32_t> OrientedPoints; // Mesh.TetrahedronPoints, each positively oriented
 
-  uv::NormalisedTransferFunction TransferFunction;
+  uvvtk::NormalisedTransferFunction TransferFunction;
   const std::vector<uv::TransferFunction::Node>& Nodes = TransferFunction.Nodes; // normalised scalars
   uv::IsosurfaceList Isosurfaces;
   vtkMTimeType IsosurfaceTime = 0, UploadedIsosurfaceTime = 0;
@@ -146,7 +146,7 @@ public:
   std::string ListKey;
   std::vector<std::uint32_t> VolumeCells, IsosurfaceCells, DrawnCells;
 
-  uv::VertexGradientCache Gradients;
+  uvvtk::VertexGradientCache Gradients;
 
   // Per frame.
   std::vector<glm::vec3> EyePoints;
@@ -159,7 +159,7 @@ public:
   std::string AutomaticDistanceKey;
   double AutomaticDistance = 0.0;
   int SegmentTableBuilds = 0;
-  uv::CentroidOrder Order; // cell projection
+  uvvtk::CentroidOrder Order; // cell projection
   bool OrderUploaded = false;
 
   // GPU state, for one context.
@@ -182,7 +182,7 @@ public:
   int Shells = 0, SkippedShells = 0, IsosurfaceLayers = 0;
   vtkIdType DrawnTetrahedra = 0;
   double LastSampleDistance = 0.0;
-  uv::MeshWarnings Warned;
+  uvvtk::MeshWarnings Warned;
   bool WarnedMultisample = false, WarnedShells = false, WarnedTexture = false;
 
   // An image sampled through the points' texture coordinates (SetTextureImage).
@@ -499,7 +499,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // ---- The mesh: rebuilt when the cells or the scalar changed, positions only when the points moved.
   int cellFlag = 0;
-  vtkDataArray* inputScalars = uv::MapperScalars(this, input, cellFlag);
+  vtkDataArray* inputScalars = uvvtk::MapperScalars(this, input, cellFlag);
   if (textured && (!inputScalars || cellFlag != 0))
   {
     inputScalars = textureCoordinates; // the mesh's own scalar is not drawn: any point array will do
@@ -515,12 +515,12 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     vtkErrorMacro("cell scalars are not supported: convert them to point data (vtkCellDataToPointData)");
     return;
   }
-  uv::TetrahedralMesh::Change change;
+  uvvtk::TetrahedralMesh::Change change;
   const std::string error = impl.Mesh.Update(
     input, inputScalars,
     [this](vtkDataSet* split) {
       int flag = 0;
-      return uv::MapperScalars(this, split, flag);
+      return uvvtk::MapperScalars(this, split, flag);
     },
     [this](double progress) { this->UpdateProgress(progress); }, change);
   if (!error.empty())
@@ -528,17 +528,17 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     vtkErrorMacro(<< error);
     return;
   }
-  if (change == uv::TetrahedralMesh::Change::All)
+  if (change == uvvtk::TetrahedralMesh::Change::All)
   {
     impl.MeshOnGpu = false;
     for (const std::string& warning : impl.Warned.New(impl.Mesh, input->GetNumberOfCells()))
       vtkWarningMacro(<< warning);
   }
-  if (change == uv::TetrahedralMesh::Change::Points)
+  if (change == uvvtk::TetrahedralMesh::Change::Points)
   {
     impl.PointsOnGpu = false;
   }
-  if (change != uv::TetrahedralMesh::Change::Nothing)
+  if (change != uvvtk::TetrahedralMesh::Change::Nothing)
   {
     // Vertex order with a positive orientation, for the pulling route's culling; moving points can
     // turn a tetrahedron inside out, so this is redone (and re-uploaded only if it changed).
@@ -619,9 +619,9 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   const double aspect = static_cast<double>(width) / height;
   const glm::dmat4 modelToWorld =
-    uv::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Mesh.Center);
-  const glm::dmat4 worldToEye = uv::ToGlm(camera->GetModelViewTransformMatrix());
-  const glm::dmat4 eyeToClip = uv::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+    uvgl::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Mesh.Center);
+  const glm::dmat4 worldToEye = uvgl::ToGlm(camera->GetModelViewTransformMatrix());
+  const glm::dmat4 eyeToClip = uvgl::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1));
   const glm::dmat4 modelToEye = worldToEye * modelToWorld;
   const bool parallel = camera->GetParallelProjection() != 0;
 
@@ -648,7 +648,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     // mesh keeps its sample distance, and so its segment table.
     const std::string key =
       std::to_string(volume->GetMatrix()->GetMTime()) + ":" + std::to_string(this->AutomaticSamplesAcross);
-    if (change == uv::TetrahedralMesh::Change::All || key != impl.AutomaticDistanceKey || !(impl.AutomaticDistance > 0.0))
+    if (change == uvvtk::TetrahedralMesh::Change::All || key != impl.AutomaticDistanceKey || !(impl.AutomaticDistance > 0.0))
     {
       double bounds[6];
       volume->GetBounds(bounds);
@@ -795,32 +795,32 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   vtkOpenGLState* state = window->GetState();
   if (!impl.MeshOnGpu)
   {
-    uv::UploadBufferTexture(window, impl.TetrahedronBuffer, impl.TetrahedronTexture, impl.OrientedPoints, 4);
+    uvgl::UploadBufferTexture(window, impl.TetrahedronBuffer, impl.TetrahedronTexture, impl.OrientedPoints, 4);
     impl.MeshOnGpu = true;
     impl.PointsOnGpu = false;
   }
   if (!impl.PointsOnGpu)
   {
     // A deforming mesh pays this upload and nothing else.
-    uv::UploadBufferTexture(window, impl.PointBuffer, impl.PointTexture, impl.Mesh.PointData, 4);
+    uvgl::UploadBufferTexture(window, impl.PointBuffer, impl.PointTexture, impl.Mesh.PointData, 4);
     impl.PointsOnGpu = true;
   }
   if (needGradients && !impl.GradientsOnGpu)
   {
-    uv::UploadBufferTexture(window, impl.GradientBuffer, impl.GradientTexture, impl.Gradients.Values, 4);
+    uvgl::UploadBufferTexture(window, impl.GradientBuffer, impl.GradientTexture, impl.Gradients.Values, 4);
     impl.GradientsOnGpu = true;
   }
   if (!impl.TransferFunctionOnGpu)
   {
-    uv::UploadTransferFunctionTexture(impl.TransferTexture, window, impl.Nodes);
+    uvgl::UploadTransferFunctionTexture(impl.TransferTexture, window, impl.Nodes);
     impl.TransferFunctionOnGpu = true;
   }
   if (impl.UploadedIsosurfaceTime != impl.IsosurfaceTime || !impl.IsosurfaceTexture->GetHandle())
   {
-    uv::UploadIsosurfaces(impl.IsosurfaceTexture, window, drawnIsosurfaces);
+    uvgl::UploadIsosurfaces(impl.IsosurfaceTexture, window, drawnIsosurfaces);
     impl.UploadedIsosurfaceTime = impl.IsosurfaceTime;
   }
-  uv::EnsurePsiTexture(impl.PsiTexture, window);
+  uvgl::EnsurePsiTexture(impl.PsiTexture, window);
   if (textured)
   {
     const auto id = [](const void* p) { return std::to_string(reinterpret_cast<std::uintptr_t>(p)); };
@@ -864,7 +864,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
           for (int d = 0; d < 3; ++d)
             coordinates[4 * p + d] = static_cast<float>(meshCoordinates->GetComponent(p, d));
       });
-      uv::UploadBufferTexture(window, impl.TextureCoordinateBuffer, impl.TextureCoordinateTexture, coordinates, 4);
+      uvgl::UploadBufferTexture(window, impl.TextureCoordinateBuffer, impl.TextureCoordinateTexture, coordinates, 4);
       impl.TextureCoordinatesKey = coordinatesKey;
     }
   }
@@ -903,7 +903,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   // Cell lists as buffer textures: both routes read a list entry by vertex id.
   auto uploadList = [window](vtkOpenGLBufferObject* buffer, vtkTextureObject* texture,
                       const std::vector<std::uint32_t>& cells) {
-    uv::UploadBufferTexture(window, buffer, texture, cells, 1);
+    uvgl::UploadBufferTexture(window, buffer, texture, cells, 1);
   };
   if (cellProjection && !impl.OrderUploaded)
   {
@@ -930,7 +930,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   impl.EnsureImages(window, width, height, targets, layers);
 
   // ---- The depth of what VTK drew so far (opaque geometry), from the current framebuffer.
-  if (!uv::CopySceneDepth(impl.SceneDepth, originX, originY, width, height) && !impl.WarnedMultisample)
+  if (!uvgl::CopySceneDepth(impl.SceneDepth, originX, originY, width, height) && !impl.WarnedMultisample)
   {
     vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
     impl.WarnedMultisample = true;
@@ -983,7 +983,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
 
   // ---- Programs.
-  std::string defines = uv::TransferFunctionDefines(impl.Nodes) + "#define UV_SLICES " +
+  std::string defines = uvgl::TransferFunctionDefines(impl.Nodes) + "#define UV_SLICES " +
     std::to_string(slicesPerShell + 1) + "\n#define UV_TARGETS " + std::to_string(targets) +
     "\n#define UV_MAX_LAYERS " + std::to_string(layers) + "\n";
   if (needGradients)
@@ -1004,11 +1004,11 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     { "//UV::BarycentricTetrahedron", uvBarycentricTetrahedronLib }
   };
   const std::string cellVertex =
-    uv::ShaderSource(pulling ? uvBarycentricPullVS : uvBarycentricCellListVS, defines, tetrahedron);
-  const std::string cellGeometry = pulling ? std::string() : uv::ShaderSource(uvBarycentricShellGS, defines, tetrahedron);
-  const std::string screenVertex = uv::ShaderSource(uvFullScreenTriangleVS, defines);
+    uvgl::ShaderSource(pulling ? uvBarycentricPullVS : uvBarycentricCellListVS, defines, tetrahedron);
+  const std::string cellGeometry = pulling ? std::string() : uvgl::ShaderSource(uvBarycentricShellGS, defines, tetrahedron);
+  const std::string screenVertex = uvgl::ShaderSource(uvFullScreenTriangleVS, defines);
   auto ready = [&](const std::string& vertex, const char* fragment, const std::string& geometry) {
-    const std::string fragmentSource = uv::ShaderSource(fragment, defines, libraries);
+    const std::string fragmentSource = uvgl::ShaderSource(fragment, defines, libraries);
     return cache->ReadyShaderProgram(vertex.c_str(), fragmentSource.c_str(), geometry.c_str());
   };
   const glm::mat3 normals(glm::transpose(glm::inverse(glm::dmat3(modelToEye))));
@@ -1040,12 +1040,12 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     }
   };
   auto setIntegrationUniforms = [&](vtkShaderProgram* program, int isosurfaceCount) {
-    uv::SetTransferFunctionUniforms(program, impl.Nodes, impl.TransferTexture, impl.PsiTexture);
+    uvgl::SetTransferFunctionUniforms(program, impl.Nodes, impl.TransferTexture, impl.PsiTexture);
     program->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
     program->SetUniformi("isosurfaceCount", isosurfaceCount);
     program->SetUniformi("averageScalar", 0);
     program->SetUniformi("shadeVolume", shade ? 1 : 0);
-    uv::SetPhongUniforms(program, renderer, property, worldToEye);
+    uvgl::SetPhongUniforms(program, renderer, property, worldToEye);
   };
 
   // Draws the tetrahedra at places [first, first + count) of a cell list, by the chosen route.
@@ -1160,7 +1160,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
         setCellUniforms(program);
         program->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
         program->SetUniformi("isosurfaceCount", static_cast<int>(isovalues.size()));
-        uv::SetPhongUniforms(program, renderer, property, worldToEye);
+        uvgl::SetPhongUniforms(program, renderer, property, worldToEye);
         impl.PreviousLayer->Activate();
         program->SetUniformi("previousLayer", impl.PreviousLayer->GetTextureUnit());
         state->vtkglEnable(GL_DEPTH_TEST);
@@ -1321,7 +1321,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   impl.AccumulationFramebuffer->Bind();
   if (this->KeepFloatImage && !failed)
   {
-    uv::ReadFloatImage(impl.AccumulationFramebuffer, 0, width, height, impl.FloatImage);
+    uvgl::ReadFloatImage(impl.AccumulationFramebuffer, 0, width, height, impl.FloatImage);
   }
   impl.AccumulationFramebuffer->RestorePreviousBindingsAndBuffers();
   if (failed)
@@ -1333,7 +1333,7 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   // ---- Blend the float image into VTK's scene.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST); // the rectangles above are the image's, not the window's
-  if (!uv::CompositeIntoScene(window, impl.Accumulation, impl.NoAttributes, originX, originY, width, height))
+  if (!uvgl::CompositeIntoScene(window, impl.Accumulation, impl.NoAttributes, originX, originY, width, height))
   {
     vtkErrorMacro("the composite shaders failed to compile or link");
     return;

@@ -8,12 +8,12 @@
 #include "uvHexahedronRay.h"
 #include "uvIsosurfaceList.h"
 #include "uvLinearCellSplit.h"
-#include "uvMapperOpenGL.h"
+#include "vtkUnstructuredVolumeOpenGL.h"
 #include "uvPhongLib.h"
 #include "uvPreIntegration.h"
 #include "uvRayCellGeometry.h"
 #include "uvTransferFunctionLib.h"
-#include "uvTransferFunctionFromVolumeProperty.h"
+#include "vtkUnstructuredVolumeTransferFunction.h"
 
 #include "vtkCamera.h"
 #include "vtkCellType.h"
@@ -400,28 +400,28 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
 
   // ---- Transfer function as at most 64 uniform nodes, normalised like the scalar.
   vtkVolumeProperty* property = volume->GetProperty();
-  std::vector<uv::TransferFunction::Node> nodes = uv::TransferFunctionNodes(property);
+  std::vector<uv::TransferFunction::Node> nodes = uvvtk::TransferFunctionNodes(property);
   if (nodes.empty())
   {
     vtkErrorMacro("the volume property has no scalar opacity function");
     return;
   }
-  if (nodes.size() > static_cast<std::size_t>(uv::MaximumUniformNodes))
+  if (nodes.size() > static_cast<std::size_t>(uvgl::MaximumUniformNodes))
   {
     // Fewer subdivisions of curved functions first; resample evenly as a last resort.
-    nodes = uv::TransferFunctionNodes(property, 1);
-    if (nodes.size() > static_cast<std::size_t>(uv::MaximumUniformNodes))
+    nodes = uvvtk::TransferFunctionNodes(property, 1);
+    if (nodes.size() > static_cast<std::size_t>(uvgl::MaximumUniformNodes))
     {
       const uv::TransferFunction tf(nodes);
       const double first = nodes.front().Scalar, last = nodes.back().Scalar;
       nodes.clear();
-      for (int k = 0; k < uv::MaximumUniformNodes; ++k)
+      for (int k = 0; k < uvgl::MaximumUniformNodes; ++k)
       {
-        const double s = first + (last - first) * k / (uv::MaximumUniformNodes - 1);
+        const double s = first + (last - first) * k / (uvgl::MaximumUniformNodes - 1);
         const auto n = tf.Evaluate(s);
         nodes.push_back({ s, n.Color, n.Extinction });
       }
-      vtkWarningMacro("more than " << uv::MaximumUniformNodes << " transfer-function nodes: resampled to that many");
+      vtkWarningMacro("more than " << uvgl::MaximumUniformNodes << " transfer-function nodes: resampled to that many");
     }
   }
   for (auto& node : nodes)
@@ -438,16 +438,16 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   }
   vtkCamera* camera = renderer->GetActiveCamera();
   const double aspect = static_cast<double>(width) / height;
-  const glm::dmat4 modelToWorld = uv::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
-  const glm::dmat4 worldToEye = uv::ToGlm(camera->GetModelViewTransformMatrix());
+  const glm::dmat4 modelToWorld = uvgl::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
+  const glm::dmat4 worldToEye = uvgl::ToGlm(camera->GetModelViewTransformMatrix());
   const glm::dmat4 modelToEye = worldToEye * modelToWorld;
-  const glm::dmat4 modelToClip = uv::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) * modelToEye;
+  const glm::dmat4 modelToClip = uvgl::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) * modelToEye;
   const glm::mat4 modelToEyeF(modelToEye);
   const glm::mat3 normalToEyeF(glm::transpose(glm::inverse(glm::dmat3(modelToEye))));
   const glm::mat4 modelToClipF(modelToClip), clipToModelF(glm::inverse(modelToClip));
   // A perspective eye inside the mesh: rays start there, in the cell that holds it.
   const glm::dvec3 eyeModel =
-    glm::dvec3(glm::inverse(uv::ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld) * glm::dvec4(0, 0, 0, 1));
+    glm::dvec3(glm::inverse(uvgl::ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld) * glm::dvec4(0, 0, 0, 1));
   int eyeCell = -1;
   if (!camera->GetParallelProjection())
   {
@@ -487,13 +487,13 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   vtkOpenGLState* state = window->GetState();
   if (!impl.MeshOnGpu)
   {
-    uv::UploadBufferTexture(window, impl.CellPointBuffer, impl.CellPointTexture, impl.CellPoints, 4);
-    uv::UploadBufferTexture(window, impl.PointBuffer, impl.PointTexture, impl.PointData, 4);
-    uv::UploadBufferTexture(window, impl.NeighbourBuffer, impl.NeighbourTexture, impl.Neighbours, 4);
-    uv::UploadBufferTexture(window, impl.BoundaryBuffer, impl.BoundaryTexture, impl.BoundaryFaces, 4);
+    uvgl::UploadBufferTexture(window, impl.CellPointBuffer, impl.CellPointTexture, impl.CellPoints, 4);
+    uvgl::UploadBufferTexture(window, impl.PointBuffer, impl.PointTexture, impl.PointData, 4);
+    uvgl::UploadBufferTexture(window, impl.NeighbourBuffer, impl.NeighbourTexture, impl.Neighbours, 4);
+    uvgl::UploadBufferTexture(window, impl.BoundaryBuffer, impl.BoundaryTexture, impl.BoundaryFaces, 4);
     impl.MeshOnGpu = true;
   }
-  uv::EnsurePsiTexture(impl.PsiTexture, window);
+  uvgl::EnsurePsiTexture(impl.PsiTexture, window);
   // Isosurfaces, normalised like the scalar: uploaded when they or the normalisation change.
   const std::vector<uv::Isosurface> isosurfaces = impl.Isosurfaces.Drawn(impl.ScalarOffset, impl.ScalarScale);
   std::string isosurfacesKey = "n" + std::to_string(isosurfaces.size());
@@ -502,7 +502,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
       std::to_string(s.Color[1]) + "," + std::to_string(s.Color[2]) + "," + std::to_string(s.Opacity);
   if (isosurfacesKey != impl.UploadedIsosurfacesKey || !impl.IsosurfaceTexture->GetHandle())
   {
-    uv::UploadIsosurfaces(impl.IsosurfaceTexture, window, isosurfaces);
+    uvgl::UploadIsosurfaces(impl.IsosurfaceTexture, window, isosurfaces);
     impl.UploadedIsosurfacesKey = isosurfacesKey;
   }
   if (impl.ImageSize[0] != width || impl.ImageSize[1] != height)
@@ -523,7 +523,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     impl.ImageSize[0] = width;
     impl.ImageSize[1] = height;
   }
-  uv::CopySceneDepth(impl.OpaqueDepthTexture, originX, originY, width, height); // far if multisampled
+  uvgl::CopySceneDepth(impl.OpaqueDepthTexture, originX, originY, width, height); // far if multisampled
 
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
@@ -535,11 +535,11 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
 
-  const std::string defines = uv::TransferFunctionDefines(nodes); // at most 64 nodes: uniforms
+  const std::string defines = uvgl::TransferFunctionDefines(nodes); // at most 64 nodes: uniforms
   const std::initializer_list<std::pair<const char*, const char*>> faces = { { "//UV::BilinearFace", uvBilinearFaceLib } };
-  const std::string entryVertexSource = uv::ShaderSource(uvHexahedralEntryVS, defines);
-  const std::string entryFragmentSource = uv::ShaderSource(uvHexahedralEntryFS, defines, faces);
-  const std::string traverseSource = uv::ShaderSource(uvHexahedralTraverseFS, defines,
+  const std::string entryVertexSource = uvgl::ShaderSource(uvHexahedralEntryVS, defines);
+  const std::string entryFragmentSource = uvgl::ShaderSource(uvHexahedralEntryFS, defines, faces);
+  const std::string traverseSource = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
     { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
       { "//UV::Phong", uvPhongLib } });
   const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
@@ -635,13 +635,13 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
     traverse->SetUniformi("cellPoints", impl.CellPointTexture->GetTextureUnit());
     traverse->SetUniformi("cellNeighbours", impl.NeighbourTexture->GetTextureUnit());
     traverse->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
-    uv::SetTransferFunctionUniforms(traverse, nodes, nullptr, impl.PsiTexture); // at most 64: uniforms
+    uvgl::SetTransferFunctionUniforms(traverse, nodes, nullptr, impl.PsiTexture); // at most 64: uniforms
     traverse->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
     traverse->SetUniformi("isosurfaceCount", static_cast<int>(isosurfaces.size()));
     traverse->SetUniformMatrix4x4("modelToEye", const_cast<float*>(glm::value_ptr(modelToEyeF)));
     traverse->SetUniformMatrix3x3("normalToEye", const_cast<float*>(glm::value_ptr(normalToEyeF)));
     traverse->SetUniformi("parallelProjection", camera->GetParallelProjection() ? 1 : 0);
-    uv::SetPhongUniforms(traverse, renderer, property, worldToEye);
+    uvgl::SetPhongUniforms(traverse, renderer, property, worldToEye);
     traverse->SetUniformMatrix4x4("clipToModel", const_cast<float*>(glm::value_ptr(clipToModelF)));
     traverse->SetUniform2f("viewportSize", viewport);
     traverse->SetUniformi("integrationMode", this->IntegrationMode);
@@ -669,7 +669,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   if (this->KeepFloatImage && !failed)
   {
     impl.Framebuffer->AddColorAttachment(0, impl.AccumulationTexture[source]);
-    uv::ReadFloatImage(impl.Framebuffer, 0, width, height, impl.FloatImage);
+    uvgl::ReadFloatImage(impl.Framebuffer, 0, width, height, impl.FloatImage);
   }
   impl.Framebuffer->RestorePreviousBindingsAndBuffers();
   if (failed)
@@ -679,7 +679,7 @@ void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume
   }
 
   // ---- Blend the result into VTK's scene.
-  if (!uv::CompositeIntoScene(
+  if (!uvgl::CompositeIntoScene(
         window, impl.AccumulationTexture[source], impl.NoAttributes, originX, originY, width, height))
   {
     vtkErrorMacro("the composite shaders failed to compile or link");

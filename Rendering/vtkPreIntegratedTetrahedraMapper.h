@@ -39,18 +39,16 @@
 #ifndef vtkPreIntegratedTetrahedraMapper_h
 #define vtkPreIntegratedTetrahedraMapper_h
 
-#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkUnstructuredVolumeMapper.h"
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class vtkImageData;
-
-class VTKUNSTRUCTUREDVOLUME_EXPORT vtkPreIntegratedTetrahedraMapper : public vtkUnstructuredGridVolumeMapper
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkPreIntegratedTetrahedraMapper : public vtkUnstructuredVolumeMapper
 {
 public:
   static vtkPreIntegratedTetrahedraMapper* New();
-  vtkTypeMacro(vtkPreIntegratedTetrahedraMapper, vtkUnstructuredGridVolumeMapper);
+  vtkTypeMacro(vtkPreIntegratedTetrahedraMapper, vtkUnstructuredVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum IntegrationModes
@@ -64,30 +62,6 @@ public:
   vtkGetMacro(IntegrationMode, int);
   void SetIntegrationModeToAverageScalar() { this->SetIntegrationMode(AVERAGE_SCALAR); }
   void SetIntegrationModeToPartialPreIntegration() { this->SetIntegrationMode(PARTIAL_PRE_INTEGRATION); }
-  ///@}
-
-  enum ProjectionRoutes
-  {
-    VERTEX_PULLING = 0,
-    GEOMETRY_SHADER = 1
-  };
-  ///@{
-  /// How tetrahedra become triangle fans on the GPU. VERTEX_PULLING (default): 5 vertex slots per
-  /// tetrahedron (outline and thick vertex) under a fixed index buffer of 4 triangles each, every
-  /// vertex shader invocation projecting its tetrahedron.
-  /// GEOMETRY_SHADER: one point per tetrahedron, a geometry shader emitting the fan (the paper's
-  /// route). Same image; the benchmark compares their speed (llvmpipe runs geometry shaders slowly).
-  vtkSetClampMacro(ProjectionRoute, int, VERTEX_PULLING, GEOMETRY_SHADER);
-  vtkGetMacro(ProjectionRoute, int);
-  void SetProjectionRouteToVertexPulling() { this->SetProjectionRoute(VERTEX_PULLING); }
-  void SetProjectionRouteToGeometryShader() { this->SetProjectionRoute(GEOMETRY_SHADER); }
-  ///@}
-
-  ///@{
-  /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each.
-  void AddIsosurface(double value, double red, double green, double blue, double opacity);
-  void RemoveAllIsosurfaces();
-  int GetNumberOfIsosurfaces();
   ///@}
 
   ///@{
@@ -106,39 +80,31 @@ public:
   ///@}
 
   ///@{
-  /// Keep a copy of the last frame's premultiplied float RGBA image (for accuracy tests and the
-  /// benchmark; costs a read-back per frame). GetFloatImage returns it, or null.
-  vtkSetMacro(KeepFloatImage, bool);
-  vtkGetMacro(KeepFloatImage, bool);
-  vtkImageData* GetFloatImage();
-  ///@}
-
-  ///@{
   /// What the last frames did, for tests: tetrahedra drawn in the last frame, visibility sorts,
   /// gradient computations, uploads of the mesh and of the transfer function, visible-list builds.
   vtkIdType GetNumberOfDrawnTetrahedra();
   int GetNumberOfSorts();
   int GetNumberOfGradientComputations();
   int GetNumberOfMeshUploads();
-  /// Bytes of GPU buffers the mesh takes (ids, points, gradients, order, fan indices; not the
-  /// screen-sized images), as of the last frame.
-  vtkIdType GetMeshMemoryInBytes();
   int GetNumberOfTransferFunctionUploads();
   int GetNumberOfVisibleListBuilds();
   ///@}
 
-  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
-  void ReleaseGraphicsResources(vtkWindow* window) override;
+  /// Ids, points, gradients, order and fan indices (not the screen-sized images).
+  vtkIdType GetMeshMemoryInBytes() override;
 
 protected:
   vtkPreIntegratedTetrahedraMapper();
   ~vtkPreIntegratedTetrahedraMapper() override;
 
+  bool Prepare(const vtkUnstructuredVolumeFrame& frame) override;
+  bool Upload(const vtkUnstructuredVolumeFrame& frame) override;
+  bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) override;
+  void ReleaseMapperGraphics() override;
+
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
-  int ProjectionRoute = VERTEX_PULLING;
   char* GradientArrayName = nullptr;
   bool SkipInvisibleCells = true;
-  bool KeepFloatImage = false;
 
 private:
   vtkPreIntegratedTetrahedraMapper(const vtkPreIntegratedTetrahedraMapper&) = delete;

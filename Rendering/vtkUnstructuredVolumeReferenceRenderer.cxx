@@ -4,7 +4,7 @@
 #include "uvLinearCellSplit.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
-#include "uvTransferFunctionFromVolumeProperty.h"
+#include "vtkUnstructuredVolumeTransferFunction.h"
 
 #include "vtkCamera.h"
 #include "vtkCellType.h"
@@ -441,7 +441,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
       << (this->ScalarArrayName ? this->ScalarArrayName : "(active scalars)") << " on the input.");
     return false;
   }
-  const std::vector<uv::TransferFunction::Node> nodes = uv::TransferFunctionNodes(this->VolumeProperty);
+  const std::vector<uv::TransferFunction::Node> nodes = uvvtk::TransferFunctionNodes(this->VolumeProperty);
   if (nodes.empty())
   {
     vtkErrorMacro("The volume property has no scalar opacity function.");

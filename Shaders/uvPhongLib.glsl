@@ -1,6 +1,6 @@
 // Phong lighting of isosurfaces (and shaded volume colours) from the vtkVolumeProperty's
 // coefficients and the renderer's first light; two-sided. Shared by the mappers' fragment shaders
-// (marker //UV::Phong); the uniforms are set by uv::SetPhongUniforms (uvMapperOpenGL.h).
+// (marker //UV::Phong); the uniforms are set by uvgl::SetPhongUniforms (vtkUnstructuredVolumeOpenGL.h).
 uniform vec3 lightDirection; // eye space, towards the light
 uniform vec3 lightColor;
 uniform float ambient;

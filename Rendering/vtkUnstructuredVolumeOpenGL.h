@@ -2,8 +2,8 @@
 // texture, the copy of the scene's depth, embedded GLSL with defines and shared libraries, and the
 // final blend of a premultiplied float image into VTK's scene. (Uses VTK's OpenGL2 classes; the
 // mappers' math lives in the VTK-free uv*.h headers.)
-#ifndef uvMapperOpenGL_h
-#define uvMapperOpenGL_h
+#ifndef vtkUnstructuredVolumeOpenGL_h
+#define vtkUnstructuredVolumeOpenGL_h
 
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
@@ -38,7 +38,7 @@
 #include <utility>
 #include <vector>
 
-namespace uv
+namespace uvgl
 {
 
 /// A VTK (row-major) matrix as a GLM (column-major) one.
@@ -91,7 +91,7 @@ inline void EnsurePsiTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* w
   {
     return;
   }
-  static const PsiTable table;
+  static const uv::PsiTable table;
   texture->SetContext(window);
   texture->SetMinificationFilter(vtkTextureObject::Linear);
   texture->SetMagnificationFilter(vtkTextureObject::Linear);
@@ -123,12 +123,12 @@ inline bool CopySceneDepth(vtkTextureObject* depth, int originX, int originY, in
 /// texture (then TransferFunctionDefines adds UV_NODE_TEXTURE).
 constexpr int MaximumUniformNodes = 64;
 
-inline bool NodesNeedTexture(const std::vector<TransferFunction::Node>& nodes)
+inline bool NodesNeedTexture(const std::vector<uv::TransferFunction::Node>& nodes)
 {
   return nodes.size() > static_cast<std::size_t>(MaximumUniformNodes);
 }
 
-inline std::string TransferFunctionDefines(const std::vector<TransferFunction::Node>& nodes)
+inline std::string TransferFunctionDefines(const std::vector<uv::TransferFunction::Node>& nodes)
 {
   std::string defines = "#define UV_MAX_UNIFORM_NODES " + std::to_string(MaximumUniformNodes) + "\n";
   if (NodesNeedTexture(nodes))
@@ -136,9 +136,47 @@ inline std::string TransferFunctionDefines(const std::vector<TransferFunction::N
   return defines;
 }
 
+/// The node texture's texels: row 0 (r, g, b, extinction), row 1 the scalar.
+inline std::vector<float> TransferFunctionTexels(const std::vector<uv::TransferFunction::Node>& nodes)
+{
+  const std::size_t count = nodes.size();
+  std::vector<float> texels(8 * count, 0.0f);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    texels[4 * k + 0] = static_cast<float>(nodes[k].Color.r);
+    texels[4 * k + 1] = static_cast<float>(nodes[k].Color.g);
+    texels[4 * k + 2] = static_cast<float>(nodes[k].Color.b);
+    texels[4 * k + 3] = static_cast<float>(nodes[k].Extinction);
+    texels[4 * (count + k)] = static_cast<float>(nodes[k].Scalar);
+  }
+  return texels;
+}
+
+/// The uniforms of uvTransferFunctionLib.glsl other than its textures: the node count, the nodes
+/// themselves when they fit in uniforms, and the Psi table's size.
+inline void SetTransferFunctionUniforms(vtkShaderProgram* program, const std::vector<uv::TransferFunction::Node>& nodes)
+{
+  program->SetUniformi("nodeCount", static_cast<int>(nodes.size()));
+  if (!NodesNeedTexture(nodes))
+  {
+    std::vector<float> values(4 * MaximumUniformNodes, 0.0f), scalars(MaximumUniformNodes, 0.0f);
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+    {
+      values[4 * k + 0] = static_cast<float>(nodes[k].Color.r);
+      values[4 * k + 1] = static_cast<float>(nodes[k].Color.g);
+      values[4 * k + 2] = static_cast<float>(nodes[k].Color.b);
+      values[4 * k + 3] = static_cast<float>(nodes[k].Extinction);
+      scalars[k] = static_cast<float>(nodes[k].Scalar);
+    }
+    program->SetUniform4fv("nodeValues", MaximumUniformNodes, values.data());
+    program->SetUniform4fv("nodeScalars", MaximumUniformNodes / 4, scalars.data());
+  }
+  program->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
+}
+
 /// The node texture: row 0 (r, g, b, extinction), row 1 the scalar; nearest filtering.
 inline void UploadTransferFunctionTexture(
-  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, const std::vector<TransferFunction::Node>& nodes)
+  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, const std::vector<uv::TransferFunction::Node>& nodes)
 {
   const int count = static_cast<int>(nodes.size());
   std::vector<float> texels(8 * count, 0.0f);
@@ -158,7 +196,7 @@ inline void UploadTransferFunctionTexture(
 
 /// The uniforms of uvTransferFunctionLib.glsl (nodes, Psi table); `nodeTexture` and `psiTable` must be
 /// active (the node texture is read only when the nodes need it).
-inline void SetTransferFunctionUniforms(vtkShaderProgram* program, const std::vector<TransferFunction::Node>& nodes,
+inline void SetTransferFunctionUniforms(vtkShaderProgram* program, const std::vector<uv::TransferFunction::Node>& nodes,
   vtkTextureObject* nodeTexture, vtkTextureObject* psiTable)
 {
   program->SetUniformi("nodeCount", static_cast<int>(nodes.size()));
@@ -181,7 +219,7 @@ inline void SetTransferFunctionUniforms(vtkShaderProgram* program, const std::ve
     program->SetUniform4fv("nodeScalars", MaximumUniformNodes / 4, scalars.data());
   }
   program->SetUniformi("psiTable", psiTable->GetTextureUnit());
-  program->SetUniformf("psiTableSize", static_cast<float>(PsiTableSize));
+  program->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
 }
 
 /// Embedded GLSL made ready to compile: `defines` inserted after VTK's version marker, and each
@@ -240,9 +278,9 @@ inline void SetPhongUniforms(
 /// The drawn isosurfaces as the shaders read them (uniform `isosurfaces`, see
 /// uv::IsosurfaceList::Texels): a 2-row float RGBA texture, nearest filtering.
 inline void UploadIsosurfaces(
-  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, const std::vector<Isosurface>& drawn)
+  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, const std::vector<uv::Isosurface>& drawn)
 {
-  std::vector<float> texels = IsosurfaceList::Texels(drawn);
+  std::vector<float> texels = uv::IsosurfaceList::Texels(drawn);
   texture->SetContext(window);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
@@ -273,6 +311,6 @@ inline bool CompositeIntoScene(vtkOpenGLRenderWindow* window, vtkTextureObject* 
   return true;
 }
 
-} // namespace uv
+} // namespace uvgl
 
 #endif

@@ -2,9 +2,10 @@
 // Mapper, vtkBarycentricShellMapper): other linear cells split, a normalised scalar, recentred float
 // positions, per-tetrahedron scalar ranges and centroids; the cells the transfer function makes
 // invisible; vertex gradients. Reads VTK data; the mappers' GPU code is elsewhere.
-#ifndef uvTetrahedralMesh_h
-#define uvTetrahedralMesh_h
+#ifndef vtkUnstructuredVolumeTetrahedralMesh_h
+#define vtkUnstructuredVolumeTetrahedralMesh_h
 
+#include "uvCellVisibility.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
 
@@ -32,8 +33,16 @@
 #include <utility>
 #include <vector>
 
-namespace uv
+namespace uvvtk
 {
+
+/// vtkSMPTools::For over [0, count) in the (begin, end) form the VTK-free helpers take.
+inline void ParallelFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& function)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+    function(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+  });
+}
 
 class TetrahedralMesh
 {
@@ -57,6 +66,9 @@ public:
   vtkIdType SplitCells = 0;       // input cells that were not tetrahedra, as of the last build
   vtkIdType NaNTetrahedra = 0;    // tetrahedra left out for a NaN scalar
   int Builds = 0, PointRefreshes = 0;
+  // Versions of what the GPU copies: bumped by every change (so from 1 after the first build).
+  std::uint64_t Version = 0;      // anything: positions, scalar, cells
+  std::uint64_t CellsVersion = 0; // TetrahedronPoints, ScalarLow/High (not a point-only refresh)
 
   std::size_t Size() const { return this->TetrahedronPoints.size() / 4; }
   /// Identifies the current build (changes whenever anything does).
@@ -98,10 +110,13 @@ public:
       this->FullKey = fullKey;
       change = Change::Points;
       ++this->PointRefreshes;
+      ++this->Version;
       return std::string();
     }
     this->Invalidate();
     change = Change::All;
+    ++this->Version;
+    ++this->CellsVersion;
     std::string error = this->Build(input, inputScalars, findScalars, progress);
     if (error.empty())
     {
@@ -305,42 +320,6 @@ struct MeshWarnings
   }
 };
 
-/// Closed intervals of normalised scalar where the extinction is zero: the set that decides which
-/// tetrahedra are invisible.
-inline std::vector<std::pair<double, double>> ZeroExtinctionIntervals(const std::vector<TransferFunction::Node>& nodes)
-{
-  std::vector<std::pair<double, double>> intervals;
-  const double infinity = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-  {
-    if (nodes[i].Extinction > 0.0)
-      continue;
-    const double begin = i == 0 ? -infinity : nodes[i].Scalar;
-    std::size_t j = i;
-    while (j + 1 < nodes.size() && nodes[j + 1].Extinction <= 0.0)
-      ++j;
-    const double end = j + 1 == nodes.size() ? infinity : nodes[j].Scalar;
-    intervals.emplace_back(begin, end);
-    i = j;
-  }
-  return intervals;
-}
-
-/// True when one zero-extinction interval holds the whole scalar range [low, high].
-inline bool RangeHasZeroExtinction(double low, double high, const std::vector<std::pair<double, double>>& zeroSet)
-{
-  auto after = std::upper_bound(zeroSet.begin(), zeroSet.end(), low,
-    [](double v, const std::pair<double, double>& z) { return v < z.first; });
-  return after != zeroSet.begin() && std::prev(after)->second >= high;
-}
-
-/// True when a sorted isovalue lies in [low, high].
-inline bool RangeHoldsIsovalue(double low, double high, const std::vector<double>& sortedIsovalues)
-{
-  auto iso = std::lower_bound(sortedIsovalues.begin(), sortedIsovalues.end(), low);
-  return iso != sortedIsovalues.end() && *iso <= high;
-}
-
 /// Vertex gradients of the mesh's rendered scalar (component 0), 4 floats per point (w unused):
 /// `given` when it is a 3-component point array, otherwise computed by vtkVertexGradientFilter.
 inline std::vector<float> VertexGradients(const TetrahedralMesh& mesh, vtkDataArray* given)
@@ -401,17 +380,21 @@ struct VertexGradientCache
     ignoredArray = given && given->GetNumberOfComponents() != 3;
     if (ignoredArray)
       given = nullptr;
-    const std::string key = mesh.Key() + (given ? ":given" : ":computed");
-    if (key == this->Key)
+    if (mesh.Version == this->MeshVersion && (given != nullptr) == this->Given)
       return false;
     this->Values = VertexGradients(mesh, given);
     this->Computations += given ? 0 : 1;
-    this->Key = key;
+    this->MeshVersion = mesh.Version;
+    this->Given = given != nullptr;
+    ++this->Version;
     return true;
   }
 
+  std::uint64_t Version = 0; ///< bumped whenever Values change
+
 private:
-  std::string Key;
+  std::uint64_t MeshVersion = 0;
+  bool Given = false;
 };
 
 /// Tetrahedra in back-to-front order of their centroids' distance from the eye (along the view under
@@ -422,6 +405,7 @@ class CentroidOrder
 public:
   std::vector<std::uint32_t> Order;
   int Sorts = 0;
+  std::uint64_t Version = 0; ///< bumped by every sort
 
   void Invalidate() { this->Valid = false; }
 
@@ -441,7 +425,7 @@ public:
         const float* c = &mesh.Centroids[3 * this->Order[i]];
         const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eyeF;
         const float distance = parallel ? glm::dot(offset, directionF) : glm::dot(offset, offset);
-        this->Keys[i] = OrderedKey(-distance); // farthest first
+        this->Keys[i] = uv::OrderedKey(-distance); // farthest first
       }
     });
     auto parallelChunks = [](int count, const auto& function) {
@@ -450,12 +434,13 @@ public:
           function(static_cast<int>(chunk));
       });
     };
-    RadixSortPairs(this->Keys, this->Order, this->ScratchKeys, this->ScratchOrder, parallelChunks);
+    uv::RadixSortPairs(this->Keys, this->Order, this->ScratchKeys, this->ScratchOrder, parallelChunks);
     this->Eye = eye;
     this->Direction = direction;
     this->Parallel = parallel;
     this->Valid = true;
     ++this->Sorts;
+    ++this->Version;
     return true;
   }
 
@@ -465,6 +450,6 @@ private:
   bool Parallel = false, Valid = false;
 };
 
-} // namespace uv
+} // namespace uvvtk
 
 #endif

@@ -1,7 +1,7 @@
 // The project's transfer function (uvOpticalModel.h) from a vtkVolumeProperty: one place, so the
 // reference renderer and every mapper read a property the same way.
-#ifndef uvTransferFunctionFromVolumeProperty_h
-#define uvTransferFunctionFromVolumeProperty_h
+#ifndef vtkUnstructuredVolumeTransferFunction_h
+#define vtkUnstructuredVolumeTransferFunction_h
 
 #include "uvOpticalModel.h"
 
@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-namespace uv
+namespace uvvtk
 {
 
 /// Nodes: the union of the colour and opacity nodes. Where VTK's functions are not linear between
@@ -26,10 +26,10 @@ namespace uv
 /// `maximumSubdivisions` pieces: the piecewise-linear model follows the curves, with nodes only where
 /// they bend (every node is a split point of every ray integral, so their number is frame time).
 /// Returns no nodes when the property has no opacity function.
-inline std::vector<TransferFunction::Node> TransferFunctionNodes(
+inline std::vector<uv::TransferFunction::Node> TransferFunctionNodes(
   vtkVolumeProperty* property, int maximumSubdivisions = 32, double tolerance = 2e-3)
 {
-  std::vector<TransferFunction::Node> nodes;
+  std::vector<uv::TransferFunction::Node> nodes;
   vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
   if (!opacity || opacity->GetSize() == 0)
   {
@@ -127,7 +127,7 @@ inline std::vector<TransferFunction::Node> TransferFunctionNodes(
     {
       rgb = glm::dvec3(grayFunction->GetValue(s));
     }
-    nodes.push_back({ s, rgb, ExtinctionFromOpacity(opacity->GetValue(s), unitDistance) });
+    nodes.push_back({ s, rgb, uv::ExtinctionFromOpacity(opacity->GetValue(s), unitDistance) });
   }
   return nodes;
 }
@@ -137,7 +137,7 @@ inline std::vector<TransferFunction::Node> TransferFunctionNodes(
 class NormalisedTransferFunction
 {
 public:
-  std::vector<TransferFunction::Node> Nodes;
+  std::vector<uv::TransferFunction::Node> Nodes;
 
   /// True when the nodes were rebuilt (upload them again; isovalues normalised the same way too).
   /// Nodes stays empty when the property has no opacity function.
@@ -159,6 +159,6 @@ private:
   double Offset = std::numeric_limits<double>::quiet_NaN(), Scale = std::numeric_limits<double>::quiet_NaN();
 };
 
-} // namespace uv
+} // namespace uvvtk
 
 #endif

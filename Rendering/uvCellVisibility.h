@@ -1,0 +1,126 @@
+// Which cells a transfer function makes invisible: a cell whose whole scalar range lies where the
+// extinction is zero, and that holds no isovalue, adds nothing to any ray and need not be drawn.
+// VTK-free (unit-tested with the rest of the math); every mapper decides visibility with it.
+#ifndef uvCellVisibility_h
+#define uvCellVisibility_h
+
+#include "uvOpticalModel.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace uv
+{
+
+/// Closed intervals of normalised scalar where the extinction is zero: the set that decides which
+/// tetrahedra are invisible.
+inline std::vector<std::pair<double, double>> ZeroExtinctionIntervals(const std::vector<TransferFunction::Node>& nodes)
+{
+  std::vector<std::pair<double, double>> intervals;
+  const double infinity = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if (nodes[i].Extinction > 0.0)
+      continue;
+    const double begin = i == 0 ? -infinity : nodes[i].Scalar;
+    std::size_t j = i;
+    while (j + 1 < nodes.size() && nodes[j + 1].Extinction <= 0.0)
+      ++j;
+    const double end = j + 1 == nodes.size() ? infinity : nodes[j].Scalar;
+    intervals.emplace_back(begin, end);
+    i = j;
+  }
+  return intervals;
+}
+
+/// True when one zero-extinction interval holds the whole scalar range [low, high].
+inline bool RangeHasZeroExtinction(double low, double high, const std::vector<std::pair<double, double>>& zeroSet)
+{
+  auto after = std::upper_bound(zeroSet.begin(), zeroSet.end(), low,
+    [](double v, const std::pair<double, double>& z) { return v < z.first; });
+  return after != zeroSet.begin() && std::prev(after)->second >= high;
+}
+
+/// True when a sorted isovalue lies in [low, high].
+inline bool RangeHoldsIsovalue(double low, double high, const std::vector<double>& sortedIsovalues)
+{
+  auto iso = std::lower_bound(sortedIsovalues.begin(), sortedIsovalues.end(), low);
+  return iso != sortedIsovalues.end() && *iso <= high;
+}
+
+/// What a cell with scalar range [low, high] contributes: some extinction (VolumeRole), an isovalue
+/// (IsosurfaceRole), both, or nothing (0: never drawn).
+enum CellRole : unsigned char
+{
+  VolumeRole = 1,
+  IsosurfaceRole = 2
+};
+
+inline unsigned char RoleOf(double low, double high, const std::vector<std::pair<double, double>>& zeroSet,
+  const std::vector<double>& sortedIsovalues)
+{
+  return static_cast<unsigned char>((RangeHasZeroExtinction(low, high, zeroSet) ? 0 : VolumeRole) |
+    (RangeHoldsIsovalue(low, high, sortedIsovalues) ? IsosurfaceRole : 0));
+}
+
+/// The cells a mapper draws, by role, rebuilt only when the cells' ranges (their version), the
+/// zero-extinction set or the isovalues change. An empty zero set (skipping off) makes every cell a
+/// volume cell.
+class CellLists
+{
+public:
+  std::vector<std::uint32_t> Volume, Isosurface, Drawn; // Drawn: either role
+  std::uint64_t Version = 0; ///< bumped by every rebuild
+  int Builds = 0;
+
+  /// `parallelFor(count, function(begin, end))` runs the classification in chunks. True when rebuilt.
+  template <typename ParallelFor>
+  bool Update(std::uint64_t cellsVersion, const std::vector<float>& low, const std::vector<float>& high,
+    const std::vector<std::pair<double, double>>& zeroSet, const std::vector<double>& sortedIsovalues,
+    ParallelFor&& parallelFor)
+  {
+    if (this->Version != 0 && cellsVersion == this->CellsVersion && zeroSet == this->ZeroSet &&
+      sortedIsovalues == this->Isovalues)
+    {
+      return false;
+    }
+    const std::size_t count = low.size();
+    std::vector<unsigned char> roles(count, 0);
+    parallelFor(count, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t c = begin; c < end; ++c)
+        roles[c] = RoleOf(low[c], high[c], zeroSet, sortedIsovalues);
+    });
+    this->Volume.clear();
+    this->Isosurface.clear();
+    this->Drawn.clear();
+    for (std::size_t c = 0; c < count; ++c)
+    {
+      const auto id = static_cast<std::uint32_t>(c);
+      if (roles[c] & VolumeRole)
+        this->Volume.push_back(id);
+      if (roles[c] & IsosurfaceRole)
+        this->Isosurface.push_back(id);
+      if (roles[c])
+        this->Drawn.push_back(id);
+    }
+    this->CellsVersion = cellsVersion;
+    this->ZeroSet = zeroSet;
+    this->Isovalues = sortedIsovalues;
+    ++this->Version;
+    ++this->Builds;
+    return true;
+  }
+
+private:
+  std::uint64_t CellsVersion = 0;
+  std::vector<std::pair<double, double>> ZeroSet;
+  std::vector<double> Isovalues;
+};
+
+} // namespace uv
+
+#endif

@@ -1,0 +1,73 @@
+/**
+ * @class vtkUnstructuredVolumeFloatTarget
+ * @brief The premultiplied RGBA32F image a mapper draws into, with a copy of the scene's depth.
+ *
+ * Every mapper integrates in float, away from VTK's 8-bit framebuffer, and blends the result into
+ * the scene at the end: Resize (per frame; reallocates only on change), CopySceneDepth (the depth of
+ * the opaque geometry VTK drew so far, so volumes end there), Bind / Unbind around the mapper's
+ * passes, ReadBack (KeepFloatImage) and Composite (ONE, ONE_MINUS_SRC_ALPHA over the viewport).
+ * A mapper that masks finished pixels may attach its own depth texture. (OpenGL layer; not wrapped.)
+ */
+#ifndef vtkUnstructuredVolumeFloatTarget_h
+#define vtkUnstructuredVolumeFloatTarget_h
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+class vtkImageData;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
+class vtkTextureObject;
+
+class vtkUnstructuredVolumeFloatTarget
+{
+public:
+  vtkUnstructuredVolumeFloatTarget();
+  ~vtkUnstructuredVolumeFloatTarget();
+
+  /// Allocates the colour image and the scene-depth copy at width x height (only when changed).
+  void Resize(vtkOpenGLRenderWindow* window, int width, int height);
+  /// Attaches `depth` (a depth texture of the target's size) to the framebuffer, or detaches with null.
+  void AttachDepth(vtkTextureObject* depth);
+
+  /// Copies the depth of VTK's current framebuffer at (originX, originY) into SceneDepth. A
+  /// multisampled framebuffer cannot be copied from: SceneDepth is then the far plane and false is
+  /// returned. Call before Bind.
+  bool CopySceneDepth(int originX, int originY);
+
+  /// Saves VTK's framebuffer bindings, binds the target (one draw buffer) and sets the viewport.
+  void Bind();
+  /// Clears the colour image to transparent black (the target must be bound).
+  void Clear();
+  /// The colour image into `image` (made when null); the target must be bound.
+  void ReadBack(vtkSmartPointer<vtkImageData>& image);
+  /// Restores the bindings Bind saved.
+  void Unbind();
+  /// Blends the colour image over VTK's scene at (originX, originY); false when the composite shaders
+  /// do not compile.
+  bool Composite(int originX, int originY);
+
+  vtkTextureObject* GetColor();
+  vtkTextureObject* GetSceneDepth();
+  vtkOpenGLFramebufferObject* GetFramebuffer();
+  /// An empty vertex array, for passes whose vertices come from gl_VertexID or buffer textures.
+  vtkOpenGLVertexArrayObject* GetNoAttributes();
+  int GetWidth() const { return this->Width; }
+  int GetHeight() const { return this->Height; }
+
+  void Release();
+
+private:
+  vtkUnstructuredVolumeFloatTarget(const vtkUnstructuredVolumeFloatTarget&) = delete;
+  void operator=(const vtkUnstructuredVolumeFloatTarget&) = delete;
+
+  vtkNew<vtkTextureObject> Color, SceneDepth;
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
+  vtkOpenGLRenderWindow* Context = nullptr;
+  vtkTextureObject* AttachedDepth = nullptr;
+  int Width = 0, Height = 0;
+};
+
+#endif

@@ -1,0 +1,88 @@
+/**
+ * @class vtkUnstructuredVolumeFrame
+ * @brief What one frame of a mapper looks through: renderer, volume, viewport and camera matrices.
+ *
+ * Made once per frame by vtkUnstructuredVolumeMapper::Render and handed to each step (Prepare,
+ * Upload, Draw), so no mapper reads the camera twice or differently. "Model" space is the volume's
+ * coordinates moved by -center: the mappers recentre their mesh in double before converting it to
+ * float, so positions keep their precision on meshes far from the origin.
+ * (A plain struct of the OpenGL layer; not wrapped.)
+ */
+#ifndef vtkUnstructuredVolumeFrame_h
+#define vtkUnstructuredVolumeFrame_h
+
+#include "vtkUnstructuredVolumeOpenGL.h"
+
+#include "vtkCamera.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+struct vtkUnstructuredVolumeFrame
+{
+  vtkRenderer* Renderer = nullptr;
+  vtkVolume* Volume = nullptr;
+  vtkVolumeProperty* Property = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkCamera* Camera = nullptr;
+  int Width = 0, Height = 0, OriginX = 0, OriginY = 0; // the renderer's tile of the window
+  bool Parallel = false;
+  double NearDepth = 0.0; // eye distance of the near clipping plane, where rays begin
+  glm::dmat4 VolumeToWorld{ 1.0 }, WorldToEye{ 1.0 }, EyeToClip{ 1.0 };
+
+  /// The frame `renderer` shows `volume` in; Width and Height are 0 when the tile is empty.
+  static vtkUnstructuredVolumeFrame Make(vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window)
+  {
+    vtkUnstructuredVolumeFrame frame;
+    frame.Renderer = renderer;
+    frame.Volume = volume;
+    frame.Property = volume->GetProperty();
+    frame.Window = window;
+    frame.Camera = renderer->GetActiveCamera();
+    renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.OriginX, &frame.OriginY);
+    if (frame.Width < 1 || frame.Height < 1)
+    {
+      frame.Width = frame.Height = 0;
+      return frame;
+    }
+    const double aspect = static_cast<double>(frame.Width) / frame.Height;
+    frame.Parallel = frame.Camera->GetParallelProjection() != 0;
+    double clippingRange[2];
+    frame.Camera->GetClippingRange(clippingRange);
+    frame.NearDepth = clippingRange[0];
+    frame.VolumeToWorld = uvgl::ToGlm(volume->GetMatrix());
+    frame.WorldToEye = uvgl::ToGlm(frame.Camera->GetModelViewTransformMatrix());
+    frame.EyeToClip = uvgl::ToGlm(frame.Camera->GetProjectionTransformMatrix(aspect, -1, 1));
+    return frame;
+  }
+
+  bool IsEmpty() const { return this->Width < 1 || this->Height < 1; }
+
+  glm::dmat4 ModelToWorld(const glm::dvec3& center) const
+  {
+    return this->VolumeToWorld * glm::translate(glm::dmat4(1.0), center);
+  }
+  glm::dmat4 ModelToEye(const glm::dvec3& center) const { return this->WorldToEye * this->ModelToWorld(center); }
+  glm::dmat4 ModelToClip(const glm::dvec3& center) const { return this->EyeToClip * this->ModelToEye(center); }
+  /// The eye's position in model space (perspective; under parallel projection a point on the view axis).
+  glm::dvec3 EyeInModel(const glm::dvec3& center) const
+  {
+    return glm::dvec3(glm::inverse(this->ModelToEye(center)) * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  }
+  /// The view direction in model space, unit length.
+  glm::dvec3 ViewInModel(const glm::dvec3& center) const
+  {
+    return glm::normalize(glm::dvec3(glm::inverse(this->ModelToEye(center)) * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
+  }
+  /// Eye-space normals from model-space ones (inverse transpose).
+  glm::dmat3 ModelToEyeNormals(const glm::dvec3& center) const
+  {
+    return glm::transpose(glm::inverse(glm::dmat3(this->ModelToEye(center))));
+  }
+};
+
+#endif

@@ -1,0 +1,196 @@
+#include "vtkUnstructuredVolumeMapper.h"
+
+#include "uvIsosurfaceList.h"
+#include "vtkUnstructuredVolumeFloatTarget.h"
+#include "vtkUnstructuredVolumeFrame.h"
+#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+
+#include "vtkDataSet.h"
+#include "vtkImageData.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+struct vtkUnstructuredVolumeMapper::Shared
+{
+  uv::IsosurfaceList Isosurfaces;
+  vtkUnstructuredVolumeFloatTarget Target;
+  vtkSmartPointer<vtkImageData> FloatImage;
+  vtkOpenGLRenderWindow* Context = nullptr;
+  bool WarnedMultisample = false;
+};
+
+vtkUnstructuredVolumeMapper::vtkUnstructuredVolumeMapper()
+  : Base(new Shared)
+{
+}
+
+vtkUnstructuredVolumeMapper::~vtkUnstructuredVolumeMapper() = default;
+
+void vtkUnstructuredVolumeMapper::AddIsosurface(double value, double red, double green, double blue, double opacity)
+{
+  this->Base->Isosurfaces.Add(value, red, green, blue, opacity);
+  this->Modified();
+  this->IsosurfaceTime = this->GetMTime();
+}
+
+void vtkUnstructuredVolumeMapper::RemoveAllIsosurfaces()
+{
+  if (this->Base->Isosurfaces.Clear())
+  {
+    this->Modified();
+    this->IsosurfaceTime = this->GetMTime();
+  }
+}
+
+int vtkUnstructuredVolumeMapper::GetNumberOfIsosurfaces()
+{
+  return this->Base->Isosurfaces.Size();
+}
+
+const uv::IsosurfaceList& vtkUnstructuredVolumeMapper::GetIsosurfaces() const
+{
+  return this->Base->Isosurfaces;
+}
+
+vtkImageData* vtkUnstructuredVolumeMapper::GetFloatImage()
+{
+  return this->Base->FloatImage;
+}
+
+vtkDataArray* vtkUnstructuredVolumeMapper::FindPointScalars(vtkDataSet* data)
+{
+  int cellFlag = 0;
+  vtkDataArray* scalars = uvvtk::MapperScalars(this, data, cellFlag);
+  if (!scalars)
+  {
+    vtkErrorMacro("the input has no point scalar to render (set one, or select an array with SelectScalarArray)");
+    return nullptr;
+  }
+  if (cellFlag != 0)
+  {
+    vtkErrorMacro("cell scalars are not supported: convert them to point data (vtkCellDataToPointData)");
+    return nullptr;
+  }
+  return scalars;
+}
+
+bool vtkUnstructuredVolumeMapper::CheckArguments(vtkRenderer* renderer, vtkVolume* volume)
+{
+  if (!vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) || !volume || !volume->GetProperty())
+  {
+    vtkErrorMacro("needs an OpenGL render window and a volume with a property");
+    return false;
+  }
+  vtkDataSet* input = this->GetDataSetInput();
+  if (!input)
+  {
+    vtkErrorMacro("no input");
+    return false;
+  }
+  return input->GetNumberOfCells() > 0 && input->GetNumberOfPoints() > 0; // an empty input draws nothing
+}
+
+void vtkUnstructuredVolumeMapper::UseContext(vtkOpenGLRenderWindow* window)
+{
+  if (this->Base->Context != window)
+  {
+    this->ReleaseGraphicsResources(this->Base->Context);
+    this->Base->Context = window;
+  }
+  window->MakeCurrent();
+}
+
+void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+{
+  if (!this->CheckArguments(renderer, volume))
+  {
+    return;
+  }
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  const vtkUnstructuredVolumeFrame frame = vtkUnstructuredVolumeFrame::Make(renderer, volume, window);
+  if (frame.IsEmpty() || !this->Prepare(frame))
+  {
+    return;
+  }
+  this->UseContext(window);
+  vtkOpenGLClearErrorMacro();
+  if (!this->Upload(frame))
+  {
+    return;
+  }
+  if (this->DrawAndComposite(frame))
+  {
+    vtkOpenGLCheckErrorMacro("failed after rendering the volume");
+  }
+}
+
+bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFrame& frame)
+{
+  vtkUnstructuredVolumeFloatTarget& target = this->Base->Target;
+  target.Resize(frame.Window, frame.Width, frame.Height);
+  if (!target.CopySceneDepth(frame.OriginX, frame.OriginY) && !this->Base->WarnedMultisample)
+  {
+    vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
+    this->Base->WarnedMultisample = true;
+  }
+  // Every state a mapper's passes may change is restored when this scope ends.
+  vtkOpenGLState* state = frame.Window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunctionSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFunctionSaver(state);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglScissor scissorBoxSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+
+  target.Bind();
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  target.Clear();
+  const bool drawn = this->Draw(frame, target);
+  if (drawn && this->KeepFloatImage)
+  {
+    target.ReadBack(this->Base->FloatImage);
+  }
+  target.Unbind();
+  if (!drawn)
+  {
+    return false;
+  }
+  // The composite blends over the whole viewport: no scissor or depth test left from the passes.
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  if (!target.Composite(frame.OriginX, frame.OriginY))
+  {
+    vtkErrorMacro("the composite shaders failed to compile or link");
+    return false;
+  }
+  return true;
+}
+
+void vtkUnstructuredVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
+{
+  this->ReleaseMapperGraphics();
+  this->Base->Target.Release();
+  this->Base->Context = nullptr;
+}
+
+void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Isosurfaces: " << this->Base->Isosurfaces.Size() << "\n";
+  os << indent << "KeepFloatImage: " << this->KeepFloatImage << "\n";
+  os << indent << "ProjectionRoute: " << (this->ProjectionRoute == VERTEX_PULLING ? "VertexPulling" : "GeometryShader")
+     << "\n";
+}

@@ -1,0 +1,122 @@
+/**
+ * @class vtkUnstructuredVolumeMapper
+ * @brief The base of this module's volume mappers: one frame as Prepare, Upload, Draw.
+ *
+ * What every mapper shares lives here, once: the isosurface list, the float image a test or the
+ * benchmark may keep, the projection route of the tetrahedral mappers, the checks of the render
+ * call's arguments with one set of error messages, the camera (vtkUnstructuredVolumeFrame), the
+ * premultiplied float target with the scene's depth (vtkUnstructuredVolumeFloatTarget), the OpenGL
+ * state saved around the mapper's passes, the final blend into VTK's scene, and releasing it all.
+ *
+ * Render is final and reads as the frame's steps:
+ *   1. check the window, the volume's property and the input (an empty input draws nothing);
+ *   2. Prepare: the mapper's CPU work (mesh, transfer function, visibility, order); false means
+ *      nothing to draw, after the mapper reported any error;
+ *   3. Upload: GPU resources brought to the versions Prepare produced;
+ *   4. Draw: the mapper's passes into the bound float target, which the base cleared;
+ *   5. read back (KeepFloatImage), blend into the scene, check for a GL error.
+ * Each subclass implements those three steps, ReleaseMapperGraphics and GetMeshMemoryInBytes.
+ */
+#ifndef vtkUnstructuredVolumeMapper_h
+#define vtkUnstructuredVolumeMapper_h
+
+#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkUnstructuredVolumeModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkDataArray;
+class vtkDataSet;
+class vtkImageData;
+class vtkOpenGLRenderWindow;
+class vtkUnstructuredVolumeFloatTarget;
+struct vtkUnstructuredVolumeFrame;
+namespace uv
+{
+class IsosurfaceList;
+}
+
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkUnstructuredVolumeMapper : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  vtkTypeMacro(vtkUnstructuredVolumeMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each (any number; equal
+  /// values keep the order they were added in).
+  void AddIsosurface(double value, double red, double green, double blue, double opacity);
+  void RemoveAllIsosurfaces();
+  int GetNumberOfIsosurfaces();
+  ///@}
+
+  ///@{
+  /// Keep a copy of the last frame's premultiplied float RGBA image (for accuracy tests and the
+  /// benchmark; costs a read-back per frame). GetFloatImage returns it, or null.
+  vtkSetMacro(KeepFloatImage, bool);
+  vtkGetMacro(KeepFloatImage, bool);
+  vtkImageData* GetFloatImage();
+  ///@}
+
+  enum ProjectionRoutes
+  {
+    VERTEX_PULLING = 0,
+    GEOMETRY_SHADER = 1
+  };
+  ///@{
+  /// How the tetrahedral mappers turn tetrahedra into fragments: VERTEX_PULLING (default), vertices
+  /// pulled from buffer textures under a fixed index pattern; GEOMETRY_SHADER, one point per
+  /// tetrahedron and a geometry shader emitting its faces (the papers' route; llvmpipe runs geometry
+  /// shaders slowly). Same image; the benchmark compares their speed. The hexahedral ray caster
+  /// rasterises boundary faces and ignores it.
+  vtkSetClampMacro(ProjectionRoute, int, VERTEX_PULLING, GEOMETRY_SHADER);
+  vtkGetMacro(ProjectionRoute, int);
+  void SetProjectionRouteToVertexPulling() { this->SetProjectionRoute(VERTEX_PULLING); }
+  void SetProjectionRouteToGeometryShader() { this->SetProjectionRoute(GEOMETRY_SHADER); }
+  ///@}
+
+  /// Bytes of GPU buffers the mesh takes (not the screen-sized images), as of the last frame.
+  virtual vtkIdType GetMeshMemoryInBytes() = 0;
+
+  void Render(vtkRenderer* renderer, vtkVolume* volume) final;
+  void ReleaseGraphicsResources(vtkWindow* window) final;
+
+protected:
+  vtkUnstructuredVolumeMapper();
+  ~vtkUnstructuredVolumeMapper() override;
+
+  /// CPU work of a frame; false when there is nothing to draw (errors reported by the mapper).
+  virtual bool Prepare(const vtkUnstructuredVolumeFrame& frame) = 0;
+  /// Brings GPU resources up to date (the context is current); false on failure.
+  virtual bool Upload(const vtkUnstructuredVolumeFrame& frame) = 0;
+  /// Draws into `target`, bound and cleared; must leave it bound. False on failure (reported).
+  virtual bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) = 0;
+  /// Releases the mapper's own GPU resources (the base releases the float target).
+  virtual void ReleaseMapperGraphics() = 0;
+
+  /// The point scalar the mapper is set to render on `data` (scalar mode, array access, id or name),
+  /// or null after reporting why (none, or cell data).
+  vtkDataArray* FindPointScalars(vtkDataSet* data);
+
+  /// The isosurfaces, in value order.
+  const uv::IsosurfaceList& GetIsosurfaces() const;
+  /// Changes whenever the isosurface list does.
+  vtkMTimeType GetIsosurfaceTime() const { return this->IsosurfaceTime; }
+
+  bool KeepFloatImage = false;
+  int ProjectionRoute = VERTEX_PULLING;
+
+private:
+  vtkUnstructuredVolumeMapper(const vtkUnstructuredVolumeMapper&) = delete;
+  void operator=(const vtkUnstructuredVolumeMapper&) = delete;
+
+  bool CheckArguments(vtkRenderer* renderer, vtkVolume* volume);
+  void UseContext(vtkOpenGLRenderWindow* window);
+  bool DrawAndComposite(const vtkUnstructuredVolumeFrame& frame);
+
+  struct Shared;
+  std::unique_ptr<Shared> Base;
+  vtkMTimeType IsosurfaceTime = 0;
+};
+
+#endif
