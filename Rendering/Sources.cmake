@@ -21,6 +21,7 @@ foreach (header IN ITEMS
     uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedronRay uvImageErrorMetrics
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
     uvVisibilitySort
+    vtkPreIntegratedTetrahedraPrograms
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
     vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL vtkUnstructuredVolumeTetrahedralMesh
     vtkUnstructuredVolumeTexture vtkUnstructuredVolumeTransferFunction

@@ -2,13 +2,7 @@
 
 #include "uvCellVisibility.h"
 #include "uvIsosurfaceList.h"
-#include "uvPreIntegratedTetrahedraFS.h"
-#include "uvPreIntegratedTetrahedraGS.h"
-#include "uvPreIntegratedTetrahedraPullVS.h"
-#include "uvPreIntegratedTetrahedraVS.h"
-#include "uvProjectedTetrahedronLib.h"
-#include "uvSegmentIntegrationLib.h"
-#include "uvTransferFunctionLib.h"
+#include "vtkPreIntegratedTetrahedraPrograms.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
@@ -21,7 +15,6 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkSMPTools.h"
@@ -107,13 +100,6 @@ public:
       this->Order.Invalidate();
   }
 
-  std::string Defines() const
-  {
-    std::string defines = uvgl::TransferFunctionDefines(this->TransferFunction.Nodes);
-    if (this->NeedGradients)
-      defines += "#define UV_GRADIENTS\n";
-    return defines;
-  }
 };
 
 vtkPreIntegratedTetrahedraMapper::vtkPreIntegratedTetrahedraMapper()
@@ -279,19 +265,12 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
   const bool pulling = this->ProjectionRoute == VERTEX_PULLING;
-  const std::string defines = impl.Defines();
-  const std::initializer_list<std::pair<const char*, const char*>> projection = {
-    { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
-  };
-  const std::string vertexSource = uvgl::ShaderSource(
-    pulling ? uvPreIntegratedTetrahedraPullVS : uvPreIntegratedTetrahedraVS, defines, projection);
-  const std::string geometrySource =
-    pulling ? std::string() : uvgl::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
-  const std::string fragmentSource = uvgl::ShaderSource(uvPreIntegratedTetrahedraFS, defines,
-    { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
-      { "//UV::SegmentIntegration", uvSegmentIntegrationLib } });
-  vtkShaderProgram* program = frame.Window->GetShaderCache()->ReadyShaderProgram(
-    vertexSource.c_str(), fragmentSource.c_str(), geometrySource.c_str());
+  vtkPreIntegratedTetrahedraPrograms::Options options;
+  options.VertexPulling = pulling;
+  options.Gradients = impl.NeedGradients;
+  options.NodeTexture = uvgl::NodesNeedTexture(impl.TransferFunction.Nodes);
+  vtkShaderProgram* program =
+    uvgl::ReadyProgram(frame.Window, vtkPreIntegratedTetrahedraPrograms::Sources(options));
   if (!program)
   {
     vtkErrorMacro("the projected-tetrahedra shaders failed to compile or link");

@@ -128,12 +128,19 @@ inline bool NodesNeedTexture(const std::vector<uv::TransferFunction::Node>& node
   return nodes.size() > static_cast<std::size_t>(MaximumUniformNodes);
 }
 
-inline std::string TransferFunctionDefines(const std::vector<uv::TransferFunction::Node>& nodes)
+/// The defines uvTransferFunctionLib.glsl needs: its uniform capacity and, when the nodes do not
+/// fit in it, UV_NODE_TEXTURE.
+inline std::string TransferFunctionDefines(bool nodeTexture)
 {
   std::string defines = "#define UV_MAX_UNIFORM_NODES " + std::to_string(MaximumUniformNodes) + "\n";
-  if (NodesNeedTexture(nodes))
+  if (nodeTexture)
     defines += "#define UV_NODE_TEXTURE\n";
   return defines;
+}
+
+inline std::string TransferFunctionDefines(const std::vector<uv::TransferFunction::Node>& nodes)
+{
+  return TransferFunctionDefines(NodesNeedTexture(nodes));
 }
 
 /// The node texture's texels: row 0 (r, g, b, extinction), row 1 the scalar.
@@ -239,6 +246,20 @@ inline std::string ShaderSource(const char* source, const std::string& defines,
       text.replace(where, std::string(marker).size(), library);
   }
   return text;
+}
+
+/// The sources of one shader program, ready to compile (no geometry stage when Geometry is empty).
+struct ProgramSources
+{
+  std::string Vertex, Fragment, Geometry;
+};
+
+/// The program from VTK's shader cache (compiled once per distinct source), bound; null when it
+/// does not compile or link.
+inline vtkShaderProgram* ReadyProgram(vtkOpenGLRenderWindow* window, const ProgramSources& sources)
+{
+  return window->GetShaderCache()->ReadyShaderProgram(
+    sources.Vertex.c_str(), sources.Fragment.c_str(), sources.Geometry.c_str());
 }
 
 /// The uniforms of uvPhongLib.glsl: the property's coefficients and the renderer's first switched-on

@@ -1,7 +1,9 @@
 // The GLSL embedded from Shaders/ compiles in VTK's OpenGL context and does what the mappers need of
-// it: the composite pass copies a premultiplied float image exactly and leaves no GL error.
+// it: every program a mapper can use links, with every define combination its options allow, and
+// the composite pass copies a premultiplied float image exactly and leaves no GL error.
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
+#include "vtkPreIntegratedTetrahedraPrograms.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -19,26 +21,61 @@
 #include <string>
 #include <vector>
 
-TEST(EmbeddedShaders, CompositePassCopiesAFloatImage)
+namespace
 {
-  if (!std::getenv("DISPLAY"))
+/// An off-screen VTK window whose OpenGL context is current, with no GL error pending.
+class EmbeddedShaders : public ::testing::Test
+{
+protected:
+  void SetUp() override
   {
-    GTEST_SKIP() << "no X display (the test suite runs under Xvfb)";
+    if (!std::getenv("DISPLAY"))
+    {
+      GTEST_SKIP() << "no X display (the test suite runs under Xvfb)";
+    }
+    this->Window->AddRenderer(this->Renderer);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetSize(8, 8);
+    this->Window->Render();
+    this->Context = vtkOpenGLRenderWindow::SafeDownCast(this->Window);
+    ASSERT_NE(this->Context, nullptr);
+    this->Context->MakeCurrent();
+    while (glGetError() != GL_NO_ERROR)
+    {
+    }
   }
-  EXPECT_NE(std::string(uvFullScreenTriangleVS).find("gl_VertexID"), std::string::npos);
 
-  vtkNew<vtkRenderWindow> window;
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  window->SetOffScreenRendering(1);
-  window->SetSize(8, 8);
-  window->Render();
-  auto context = vtkOpenGLRenderWindow::SafeDownCast(window);
-  ASSERT_NE(context, nullptr);
-  context->MakeCurrent();
-  while (glGetError() != GL_NO_ERROR)
+  /// Compiles and links `sources`; the failure message names the variant.
+  void ExpectLinks(const uvgl::ProgramSources& sources, const std::string& variant)
   {
+    vtkShaderProgram* program = uvgl::ReadyProgram(this->Context, sources);
+    EXPECT_NE(program, nullptr) << variant << " does not compile or link";
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << variant;
   }
+
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkOpenGLRenderWindow* Context = nullptr;
+};
+}
+
+TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
+{
+  const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
+  EXPECT_EQ(all.size(), 8u);
+  for (const auto& options : all)
+  {
+    const std::string variant = std::string("tetrahedra program, ") +
+      (options.VertexPulling ? "vertex pulling" : "geometry shader") + (options.Gradients ? ", gradients" : "") +
+      (options.NodeTexture ? ", node texture" : "");
+    this->ExpectLinks(vtkPreIntegratedTetrahedraPrograms::Sources(options), variant);
+  }
+}
+
+TEST_F(EmbeddedShaders, CompositePassCopiesAFloatImage)
+{
+  EXPECT_NE(std::string(uvFullScreenTriangleVS).find("gl_VertexID"), std::string::npos);
+  vtkOpenGLRenderWindow* context = this->Context;
 
   vtkShaderProgram* program =
     context->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, uvCompositePremultipliedFS, "");

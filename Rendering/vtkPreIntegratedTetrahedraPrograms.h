@@ -1,0 +1,64 @@
+/**
+ * @class vtkPreIntegratedTetrahedraPrograms
+ * @brief Every shader program vtkPreIntegratedTetrahedraMapper can use, by its options.
+ *
+ * The mapper compiles Sources(options) for the frame's options; Testing/Cxx/TestEmbeddedShaders
+ * compiles Sources of every entry of AllOptions(), so a define combination that does not compile
+ * fails a test rather than a user's frame. (OpenGL layer; not wrapped.)
+ */
+#ifndef vtkPreIntegratedTetrahedraPrograms_h
+#define vtkPreIntegratedTetrahedraPrograms_h
+
+#include "uvPhongLib.h"
+#include "uvPreIntegratedTetrahedraFS.h"
+#include "uvPreIntegratedTetrahedraGS.h"
+#include "uvPreIntegratedTetrahedraPullVS.h"
+#include "uvPreIntegratedTetrahedraVS.h"
+#include "uvProjectedTetrahedronLib.h"
+#include "uvSegmentIntegrationLib.h"
+#include "uvTransferFunctionLib.h"
+#include "vtkUnstructuredVolumeOpenGL.h"
+
+#include <string>
+#include <vector>
+
+struct vtkPreIntegratedTetrahedraPrograms
+{
+  struct Options
+  {
+    bool VertexPulling = true; // else a geometry shader emits the fans
+    bool Gradients = false;    // vertex gradients for lighting
+    bool NodeTexture = false;  // more transfer-function nodes than fit in uniforms
+  };
+
+  static uvgl::ProgramSources Sources(const Options& options)
+  {
+    std::string defines = uvgl::TransferFunctionDefines(options.NodeTexture);
+    if (options.Gradients)
+      defines += "#define UV_GRADIENTS\n";
+    const std::initializer_list<std::pair<const char*, const char*>> projection = {
+      { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
+    };
+    uvgl::ProgramSources sources;
+    sources.Vertex = uvgl::ShaderSource(
+      options.VertexPulling ? uvPreIntegratedTetrahedraPullVS : uvPreIntegratedTetrahedraVS, defines, projection);
+    if (!options.VertexPulling)
+      sources.Geometry = uvgl::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
+    sources.Fragment = uvgl::ShaderSource(uvPreIntegratedTetrahedraFS, defines,
+      { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
+        { "//UV::SegmentIntegration", uvSegmentIntegrationLib } });
+    return sources;
+  }
+
+  static std::vector<Options> AllOptions()
+  {
+    std::vector<Options> all;
+    for (bool pulling : { true, false })
+      for (bool gradients : { false, true })
+        for (bool nodeTexture : { false, true })
+          all.push_back({ pulling, gradients, nodeTexture });
+    return all;
+  }
+};
+
+#endif

@@ -1,0 +1,83 @@
+// Which cells a transfer function makes invisible (uvCellVisibility.h): roles against a brute-force
+// check of the definition, and lists rebuilt exactly when their inputs change.
+#include "uvCellVisibility.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+
+namespace
+{
+void Serial(std::size_t count, const std::function<void(std::size_t, std::size_t)>& function)
+{
+  function(0, count);
+}
+
+// The definition, by sampling: some scalar of [low, high] has extinction > 0 (linear between nodes,
+// constant beyond the ends).
+bool HasExtinction(double low, double high, const std::vector<uv::TransferFunction::Node>& nodes)
+{
+  auto tau = [&](double s) {
+    if (s <= nodes.front().Scalar)
+      return nodes.front().Extinction;
+    if (s >= nodes.back().Scalar)
+      return nodes.back().Extinction;
+    std::size_t i = 1;
+    while (nodes[i].Scalar < s)
+      ++i;
+    const double f = (s - nodes[i - 1].Scalar) / (nodes[i].Scalar - nodes[i - 1].Scalar);
+    return (1 - f) * nodes[i - 1].Extinction + f * nodes[i].Extinction;
+  };
+  for (int k = 0; k <= 400; ++k)
+    if (tau(low + (high - low) * k / 400.0) > 0.0)
+      return true;
+  for (const auto& node : nodes) // nodes strictly inside the range the samples may step over
+    if (node.Scalar > low && node.Scalar < high && node.Extinction > 0.0)
+      return true;
+  return false;
+}
+}
+
+TEST(CellVisibility, RolesMatchTheDefinition)
+{
+  const std::vector<uv::TransferFunction::Node> nodes = { { 0.0, glm::dvec3(1), 0.0 }, { 0.2, glm::dvec3(1), 0.0 },
+    { 0.3, glm::dvec3(1), 2.0 }, { 0.5, glm::dvec3(1), 0.0 }, { 0.7, glm::dvec3(1), 0.0 },
+    { 0.8, glm::dvec3(1), 1.0 } };
+  const auto zeroSet = uv::ZeroExtinctionIntervals(nodes);
+  const std::vector<double> isovalues = { 0.1, 0.6 };
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> scalar(-0.2, 1.2);
+  for (int trial = 0; trial < 2000; ++trial)
+  {
+    double low = scalar(random), high = scalar(random);
+    if (low > high)
+      std::swap(low, high);
+    if (trial % 5 == 0)
+      high = low; // constant cells
+    const unsigned char role = uv::RoleOf(low, high, zeroSet, isovalues);
+    const bool holdsIsovalue = (low <= 0.1 && 0.1 <= high) || (low <= 0.6 && 0.6 <= high);
+    EXPECT_EQ((role & uv::VolumeRole) != 0, HasExtinction(low, high, nodes)) << low << " " << high;
+    EXPECT_EQ((role & uv::IsosurfaceRole) != 0, holdsIsovalue) << low << " " << high;
+  }
+}
+
+TEST(CellVisibility, ListsRebuildOnlyWhenTheirInputsChange)
+{
+  const std::vector<float> low = { 0.0f, 0.4f, 0.6f }, high = { 0.1f, 0.5f, 0.9f };
+  std::vector<std::pair<double, double>> zeroSet = { { -1e300, 0.45 } };
+  uv::CellLists lists;
+  EXPECT_TRUE(lists.Update(1, low, high, zeroSet, {}, Serial));
+  EXPECT_EQ(lists.Volume, (std::vector<std::uint32_t>{ 1, 2 }));
+  EXPECT_TRUE(lists.Isosurface.empty());
+  EXPECT_FALSE(lists.Update(1, low, high, zeroSet, {}, Serial));
+  EXPECT_TRUE(lists.Update(1, low, high, zeroSet, { 0.05 }, Serial)); // an isovalue in cell 0
+  EXPECT_EQ(lists.Isosurface, (std::vector<std::uint32_t>{ 0 }));
+  EXPECT_EQ(lists.Drawn, (std::vector<std::uint32_t>{ 0, 1, 2 }));
+  EXPECT_TRUE(lists.Update(2, low, high, zeroSet, { 0.05 }, Serial)); // new cells
+  zeroSet.clear(); // skipping off: every cell is a volume cell
+  EXPECT_TRUE(lists.Update(2, low, high, zeroSet, { 0.05 }, Serial));
+  EXPECT_EQ(lists.Volume.size(), 3u);
+  EXPECT_EQ(lists.Builds, 4);
+  EXPECT_EQ(lists.Version, 4u);
+}
