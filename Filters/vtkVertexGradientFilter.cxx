@@ -154,6 +154,87 @@ bool ImageDataVertexGradients(vtkImageData* image, const std::vector<double>& va
   });
   return true;
 }
+
+/// The points in double, read in parallel.
+std::vector<glm::dvec3> PointsOf(vtkDataSet* input)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  std::vector<glm::dvec3> points(numPoints);
+  double first[3];
+  input->GetPoint(0, first); // the first call must come from one thread
+  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType id = begin; id < end; ++id)
+      input->GetPoint(id, &points[id].x);
+  });
+  return points;
+}
+
+/// Offsets of each cell's corners in a flat connectivity holding only the cells that carry a
+/// gradient (the others get an empty row). Returns how many non-empty cells were ignored.
+vtkIdType GradientCellOffsets(vtkDataSet* input, std::vector<vtkIdType>& cellOffsets)
+{
+  const vtkIdType numCells = input->GetNumberOfCells();
+  cellOffsets.assign(numCells + 1, 0);
+  if (numCells > 0)
+    input->GetCellType(0); // the first call must come from one thread
+  vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType cell = begin; cell < end; ++cell)
+      cellOffsets[cell + 1] = GradientCellCorners(input->GetCellType(cell));
+  });
+  vtkIdType ignored = 0;
+  for (vtkIdType cell = 0; cell < numCells; ++cell)
+  {
+    ignored += cellOffsets[cell + 1] == 0 && input->GetCellType(cell) != VTK_EMPTY_CELL ? 1 : 0;
+    cellOffsets[cell + 1] += cellOffsets[cell];
+  }
+  return ignored;
+}
+
+/// Each cell's gradient and weight, and the flat connectivity the offsets describe.
+std::vector<uv::CellGradient> GradientsOfCells(vtkDataSet* input, const std::vector<vtkIdType>& cellOffsets,
+  const std::vector<glm::dvec3>& points, const std::vector<double>& values, std::vector<vtkIdType>& connectivity)
+{
+  const vtkIdType numCells = input->GetNumberOfCells();
+  connectivity.assign(cellOffsets[numCells], 0);
+  std::vector<uv::CellGradient> cellGradients(numCells);
+  vtkSMPThreadLocalObject<vtkIdList> threadIds;
+  vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
+    vtkIdList* ids = threadIds.Local();
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      if (cellOffsets[cell + 1] == cellOffsets[cell])
+        continue;
+      input->GetCellPoints(cell, ids);
+      std::copy(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfIds(),
+        connectivity.begin() + cellOffsets[cell]);
+      cellGradients[cell] = GradientOfCell(input->GetCellType(cell), ids->GetPointer(0), points, values);
+    }
+  });
+  return cellGradients;
+}
+
+/// The weighted mean of the gradients of the cells around each vertex (NaN where no cell is).
+std::vector<glm::dvec3> AverageAtVertices(
+  const uv::VertexCellLinks& links, const std::vector<uv::CellGradient>& cellGradients, vtkIdType numPoints)
+{
+  std::vector<glm::dvec3> vertexGradients(numPoints);
+  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType vertex = begin; vertex < end; ++vertex)
+    {
+      glm::dvec3 sum(0.0);
+      double weight = 0.0;
+      for (std::int64_t k = links.Offsets[vertex]; k < links.Offsets[vertex + 1]; ++k)
+      {
+        const uv::CellGradient& cell = cellGradients[links.Cells[k]];
+        sum += cell.Weight * cell.Gradient;
+        weight += cell.Weight;
+      }
+      vertexGradients[vertex] =
+        weight > 0.0 ? sum / weight : glm::dvec3(std::numeric_limits<double>::quiet_NaN());
+    }
+  });
+  return vertexGradients;
+}
 } // namespace
 
 vtkVertexGradientFilter::vtkVertexGradientFilter()
@@ -229,79 +310,27 @@ int vtkVertexGradientFilter::RequestData(
     return 1;
   }
 
-  std::vector<glm::dvec3> points(numPoints);
-  double first[3];
-  input->GetPoint(0, first); // the first call must come from one thread
-  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType id = begin; id < end; ++id)
-    {
-      input->GetPoint(id, &points[id].x);
-    }
-  });
+  const std::vector<glm::dvec3> points = PointsOf(input);
   this->UpdateProgress(0.2);
 
   // Flat connectivity of the cells that can carry a gradient (others keep an empty row).
-  std::vector<vtkIdType> cellOffsets(numCells + 1, 0);
-  if (numCells > 0)
-  {
-    input->GetCellType(0); // the first call must come from one thread
-  }
-  vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType cell = begin; cell < end; ++cell)
-    {
-      cellOffsets[cell + 1] = GradientCellCorners(input->GetCellType(cell));
-    }
-  });
-  vtkIdType ignored = 0;
-  for (vtkIdType cell = 0; cell < numCells; ++cell)
-  {
-    ignored += cellOffsets[cell + 1] == 0 && input->GetCellType(cell) != VTK_EMPTY_CELL ? 1 : 0;
-    cellOffsets[cell + 1] += cellOffsets[cell];
-  }
+  std::vector<vtkIdType> cellOffsets;
+  const vtkIdType ignored = GradientCellOffsets(input, cellOffsets);
   if (ignored > 0)
   {
     vtkWarningMacro("Ignored " << ignored
                                << " cells that are not linear 3D cells (tetrahedron, hexahedron, "
                                   "voxel, wedge, pyramid).");
   }
-  std::vector<vtkIdType> connectivity(cellOffsets[numCells]);
-  std::vector<uv::CellGradient> cellGradients(numCells);
-  vtkSMPThreadLocalObject<vtkIdList> threadIds;
-  vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
-    vtkIdList* ids = threadIds.Local();
-    for (vtkIdType cell = begin; cell < end; ++cell)
-    {
-      if (cellOffsets[cell + 1] == cellOffsets[cell])
-      {
-        continue;
-      }
-      input->GetCellPoints(cell, ids);
-      std::copy(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfIds(),
-        connectivity.begin() + cellOffsets[cell]);
-      cellGradients[cell] = GradientOfCell(input->GetCellType(cell), ids->GetPointer(0), points, values);
-    }
-  });
+  std::vector<vtkIdType> connectivity;
+  const std::vector<uv::CellGradient> cellGradients =
+    GradientsOfCells(input, cellOffsets, points, values, connectivity);
   this->UpdateProgress(0.6);
 
   const uv::VertexCellLinks links = uv::BuildVertexCellLinks(numPoints, cellOffsets, connectivity);
   this->UpdateProgress(0.8);
 
-  vertexGradients.resize(numPoints);
-  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType vertex = begin; vertex < end; ++vertex)
-    {
-      glm::dvec3 sum(0.0);
-      double weight = 0.0;
-      for (std::int64_t k = links.Offsets[vertex]; k < links.Offsets[vertex + 1]; ++k)
-      {
-        const uv::CellGradient& cell = cellGradients[links.Cells[k]];
-        sum += cell.Weight * cell.Gradient;
-        weight += cell.Weight;
-      }
-      vertexGradients[vertex] =
-        weight > 0.0 ? sum / weight : glm::dvec3(std::numeric_limits<double>::quiet_NaN());
-    }
-  });
+  vertexGradients = AverageAtVertices(links, cellGradients, numPoints);
   this->AddGradientArray(output, scalars, vertexGradients);
   this->UpdateProgress(1.0);
   return 1;

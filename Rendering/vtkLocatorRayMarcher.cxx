@@ -221,6 +221,58 @@ bool StrictlyInside(vtkCell* cell, const double pcoords[3])
   }
 }
 
+/// The first component of every tuple.
+std::vector<double> FirstComponent(vtkDataArray* array)
+{
+  std::vector<double> values(static_cast<std::size_t>(array->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    values[i] = array->GetComponent(i, 0);
+  return values;
+}
+
+/// 1 for the cells the marcher samples: 3D, every point scalar finite. Single-threaded; it also
+/// makes VTK's lazy cell initialisation happen before any thread calls GetCell.
+std::vector<unsigned char> UsableCells(vtkDataSet* input, const std::vector<double>& scalars)
+{
+  const vtkIdType numberOfCells = input->GetNumberOfCells();
+  vtkNew<vtkGenericCell> cell;
+  input->GetCell(0, cell);
+  std::map<int, int> dimensionOfType;
+  vtkNew<vtkGenericCell> typeProbe;
+  vtkNew<vtkIdList> pointIds;
+  std::vector<unsigned char> usable(static_cast<std::size_t>(numberOfCells), 0);
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    const int type = input->GetCellType(c);
+    auto found = dimensionOfType.find(type);
+    if (found == dimensionOfType.end())
+    {
+      typeProbe->SetCellType(type);
+      found = dimensionOfType.emplace(type, typeProbe->GetCellDimension()).first;
+    }
+    if (found->second != 3)
+      continue;
+    input->GetCellPoints(c, pointIds);
+    bool finite = pointIds->GetNumberOfIds() > 0;
+    for (vtkIdType j = 0; j < pointIds->GetNumberOfIds() && finite; ++j)
+      finite = std::isfinite(scalars[pointIds->GetId(j)]);
+    usable[c] = finite ? 1 : 0;
+  }
+  return usable;
+}
+
+/// The index of the first pixel outside a width x height image, or -1.
+vtkIdType FirstPixelOutside(vtkIdTypeArray* pixels, int width, int height)
+{
+  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
+  {
+    const vtkIdType p = pixels->GetValue(i);
+    if (p < 0 || p >= static_cast<vtkIdType>(width) * height)
+      return i;
+  }
+  return -1;
+}
+
 /// Everything the pixel workers read (shared, read-only) and their per-thread scratch.
 struct MarchPixelsWorker
 {
@@ -329,9 +381,23 @@ struct MarchPixelsWorker
     });
   }
 
-  void MarchOne(vtkIdType p, float* out)
+  /// The pixel's ray from the near to the far plane, cut to the mesh's bounds: x(t) = Origin +
+  /// t Direction for t in [Begin, End]. False when it misses the bounds.
+  struct Ray
   {
-    out[0] = out[1] = out[2] = out[3] = 0.0f;
+    double Origin[3], Direction[3];
+    double Length; // |Direction|: world units per unit of t
+    double Begin, End;
+
+    void At(double t, double x[3]) const
+    {
+      for (int i = 0; i < 3; ++i)
+        x[i] = this->Origin[i] + t * this->Direction[i];
+    }
+  };
+
+  bool PixelRay(vtkIdType p, Ray& ray) const
+  {
     const int px = static_cast<int>(p % this->Width), py = static_cast<int>(p / this->Width);
     const double ndcX = 2.0 * (px + 0.5) / this->Width - 1.0;
     const double ndcY = 2.0 * (py + 0.5) / this->Height - 1.0;
@@ -341,151 +407,155 @@ struct MarchPixelsWorker
     vtkMatrix4x4::MultiplyPoint(this->InverseProjection, farNdc, farPoint);
     if (nearPoint[3] == 0 || farPoint[3] == 0)
     {
-      return;
+      return false;
     }
-    double origin[3], direction[3];
     for (int i = 0; i < 3; ++i)
     {
-      origin[i] = nearPoint[i] / nearPoint[3];
-      direction[i] = farPoint[i] / farPoint[3] - origin[i];
+      ray.Origin[i] = nearPoint[i] / nearPoint[3];
+      ray.Direction[i] = farPoint[i] / farPoint[3] - ray.Origin[i];
     }
-    const double rayLength =
-      std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
-    if (!(rayLength > 0) || !std::isfinite(rayLength))
+    ray.Length = std::sqrt(ray.Direction[0] * ray.Direction[0] + ray.Direction[1] * ray.Direction[1] +
+      ray.Direction[2] * ray.Direction[2]);
+    if (!(ray.Length > 0) || !std::isfinite(ray.Length))
     {
-      return;
+      return false;
     }
     // Cut the segment t in [0, 1] (near to far) to the bounding box.
-    double t0 = 0.0, t1 = 1.0;
+    ray.Begin = 0.0;
+    ray.End = 1.0;
     for (int i = 0; i < 3; ++i)
     {
       const double lo = this->Bounds[2 * i], hi = this->Bounds[2 * i + 1];
-      if (direction[i] == 0.0)
+      if (ray.Direction[i] == 0.0)
       {
-        if (origin[i] < lo || origin[i] > hi)
-        {
-          return;
-        }
+        if (ray.Origin[i] < lo || ray.Origin[i] > hi)
+          return false;
         continue;
       }
-      double a = (lo - origin[i]) / direction[i], b = (hi - origin[i]) / direction[i];
+      double a = (lo - ray.Origin[i]) / ray.Direction[i], b = (hi - ray.Origin[i]) / ray.Direction[i];
       if (a > b)
-      {
         std::swap(a, b);
-      }
-      t0 = std::max(t0, a);
-      t1 = std::min(t1, b);
+      ray.Begin = std::max(ray.Begin, a);
+      ray.End = std::min(ray.End, b);
     }
-    if (!(t1 > t0))
-    {
-      return;
-    }
+    return ray.End > ray.Begin;
+  }
 
-    auto pointAt = [&](double t, double x[3]) {
-      for (int i = 0; i < 3; ++i)
-      {
-        x[i] = origin[i] + t * direction[i];
-      }
-    };
-    double transmittance = 1.0, colour[3] = { 0, 0, 0 };
-    // Composites a homogeneous piece of `h` world units (the medium sampled at its middle).
-    auto composite = [&](double h, double tau, const double emission[3]) {
+  /// Front-to-back compositing along one ray.
+  struct Accumulation
+  {
+    double Transmittance = 1.0, Colour[3] = { 0, 0, 0 };
+
+    /// A homogeneous piece of `h` world units (the medium sampled at its middle).
+    void Composite(double h, double tau, const double emission[3])
+    {
       if (tau > 0)
       {
         const double absorbed = -std::expm1(-tau * h);
         for (int c = 0; c < 3; ++c)
-        {
-          colour[c] += transmittance * emission[c] / tau * absorbed;
-        }
-        transmittance *= 1.0 - absorbed;
+          this->Colour[c] += this->Transmittance * emission[c] / tau * absorbed;
+        this->Transmittance *= 1.0 - absorbed;
       }
       else
       {
         for (int c = 0; c < 3; ++c)
-        {
-          colour[c] += transmittance * emission[c] * h;
-        }
+          this->Colour[c] += this->Transmittance * emission[c] * h;
       }
-    };
-    // Integrates the medium over [a, b] (ray parameters) sampled at its middle.
-    auto integrate = [&](double a, double b) {
-      const double h = (b - a) * rayLength;
-      if (h > 0)
-      {
-        double x[3], tau, emission[3];
-        pointAt(0.5 * (a + b), x);
-        this->Sample(x, tau, emission);
-        composite(h, tau, emission);
-      }
-    };
-    // The boundary between lo (inside the mesh or not: loInside) and hi (the other), by bisection.
-    auto crossing = [&](double lo, double hi, bool loInside) {
-      double x[3];
-      for (int iteration = 0; iteration < 40; ++iteration)
-      {
-        const double mid = 0.5 * (lo + hi);
-        pointAt(mid, x);
-        (this->Inside(x) == loInside ? lo : hi) = mid;
-      }
-      return 0.5 * (lo + hi);
-    };
+    }
+  };
 
-    double x[3];
-    double ta = t0;
-    pointAt(ta, x);
-    bool insideA = this->Inside(x);
-    for (int step = 0; step < this->Steps && transmittance >= 1e-7; ++step)
+  /// The medium over [a, b] (ray parameters) sampled at its middle.
+  void Integrate(const Ray& ray, double a, double b, Accumulation& sum)
+  {
+    const double h = (b - a) * ray.Length;
+    if (h > 0)
     {
-      const double tb = step + 1 == this->Steps
-        ? t1
-        : t0 + (t1 - t0) * (static_cast<double>(step + 1) / this->Steps);
-      const double tm = 0.5 * (ta + tb);
-      pointAt(tb, x);
-      const bool insideB = this->Inside(x);
-      if (insideA && insideB)
+      double x[3], tau, emission[3];
+      ray.At(0.5 * (a + b), x);
+      this->Sample(x, tau, emission);
+      sum.Composite(h, tau, emission);
+    }
+  }
+
+  /// The mesh boundary between lo (inside the mesh or not: loInside) and hi (the other), by bisection.
+  double Crossing(const Ray& ray, double lo, double hi, bool loInside)
+  {
+    double x[3];
+    for (int iteration = 0; iteration < 40; ++iteration)
+    {
+      const double mid = 0.5 * (lo + hi);
+      ray.At(mid, x);
+      (this->Inside(x) == loInside ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  }
+
+  /// One step [ta, tb] whose ends are inside the mesh or not (insideA, insideB): only the inside
+  /// parts are integrated, boundaries found by bisection.
+  void MarchStep(const Ray& ray, double ta, double tb, bool insideA, bool insideB, Accumulation& sum)
+  {
+    const double tm = 0.5 * (ta + tb);
+    double x[3];
+    if (insideA && insideB)
+    {
+      double tau, emission[3];
+      ray.At(tm, x);
+      if (this->Sample(x, tau, emission) > 0)
       {
-        double tau, emission[3];
-        pointAt(tm, x);
-        if (this->Sample(x, tau, emission) > 0)
-        {
-          composite((tb - ta) * rayLength, tau, emission);
-        }
-        else
-        {
-          // A gap of the mesh around the step's middle: integrate up to it and after it.
-          integrate(ta, crossing(ta, tm, true));
-          integrate(crossing(tm, tb, false), tb);
-        }
-      }
-      else if (insideA != insideB)
-      {
-        // The boundary lies in (ta, tb): integrate only the inside part.
-        const double boundary = crossing(ta, tb, insideA);
-        if (insideA)
-        {
-          integrate(ta, boundary);
-        }
-        else
-        {
-          integrate(boundary, tb);
-        }
+        sum.Composite((tb - ta) * ray.Length, tau, emission);
       }
       else
       {
-        // Both ends outside: a thin part of the mesh may still hold the step's middle.
-        pointAt(tm, x);
-        if (this->Inside(x))
-        {
-          integrate(crossing(ta, tm, false), crossing(tm, tb, true));
-        }
+        // A gap of the mesh around the step's middle: integrate up to it and after it.
+        this->Integrate(ray, ta, this->Crossing(ray, ta, tm, true), sum);
+        this->Integrate(ray, this->Crossing(ray, tm, tb, false), tb, sum);
       }
+    }
+    else if (insideA != insideB)
+    {
+      // The boundary lies in (ta, tb): integrate only the inside part.
+      const double boundary = this->Crossing(ray, ta, tb, insideA);
+      if (insideA)
+        this->Integrate(ray, ta, boundary, sum);
+      else
+        this->Integrate(ray, boundary, tb, sum);
+    }
+    else
+    {
+      // Both ends outside: a thin part of the mesh may still hold the step's middle.
+      ray.At(tm, x);
+      if (this->Inside(x))
+        this->Integrate(ray, this->Crossing(ray, ta, tm, false), this->Crossing(ray, tm, tb, true), sum);
+    }
+  }
+
+  void MarchOne(vtkIdType p, float* out)
+  {
+    out[0] = out[1] = out[2] = out[3] = 0.0f;
+    Ray ray;
+    if (!this->PixelRay(p, ray))
+    {
+      return;
+    }
+    Accumulation sum;
+    double x[3];
+    double ta = ray.Begin;
+    ray.At(ta, x);
+    bool insideA = this->Inside(x);
+    for (int step = 0; step < this->Steps && sum.Transmittance >= 1e-7; ++step)
+    {
+      const double tb = step + 1 == this->Steps
+        ? ray.End
+        : ray.Begin + (ray.End - ray.Begin) * (static_cast<double>(step + 1) / this->Steps);
+      ray.At(tb, x);
+      const bool insideB = this->Inside(x);
+      this->MarchStep(ray, ta, tb, insideA, insideB, sum);
       ta = tb;
       insideA = insideB;
     }
-    out[0] = static_cast<float>(colour[0]);
-    out[1] = static_cast<float>(colour[1]);
-    out[2] = static_cast<float>(colour[2]);
-    out[3] = static_cast<float>(1.0 - transmittance);
+    for (int c = 0; c < 3; ++c)
+      out[c] = static_cast<float>(sum.Colour[c]);
+    out[3] = static_cast<float>(1.0 - sum.Transmittance);
   }
 
   void operator()(vtkIdType begin, vtkIdType end)
@@ -610,15 +680,12 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
     vtkErrorMacro("The pixel array must have one component.");
     return false;
   }
-  for (vtkIdType i = 0; i < numberOfPixels; ++i)
+  const vtkIdType outside = FirstPixelOutside(pixels, width, height);
+  if (outside >= 0)
   {
-    const vtkIdType p = pixels->GetValue(i);
-    if (p < 0 || p >= static_cast<vtkIdType>(width) * height)
-    {
-      vtkErrorMacro("Pixel index " << p << " is outside the " << width << "x" << height
-                                   << " image.");
-      return false;
-    }
+    vtkErrorMacro("Pixel index " << pixels->GetValue(outside) << " is outside the " << width << "x" << height
+                                 << " image.");
+    return false;
   }
   rgba->SetNumberOfComponents(4);
   rgba->SetNumberOfTuples(numberOfPixels);
@@ -633,40 +700,8 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
     return true;
   }
 
-  // Scalars and usable cells (3D, all point scalars finite), single-threaded.
-  std::vector<double> scalars(static_cast<std::size_t>(numberOfPoints));
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    scalars[i] = array->GetComponent(i, 0);
-  }
-  vtkNew<vtkGenericCell> cell;
-  this->Input->GetCell(0, cell); // VTK's lazy initialisation, before any thread calls GetCell
-  std::map<int, int> dimensionOfType;
-  vtkNew<vtkGenericCell> typeProbe;
-  vtkNew<vtkIdList> pointIds;
-  std::vector<unsigned char> usable(static_cast<std::size_t>(numberOfCells), 0);
-  for (vtkIdType c = 0; c < numberOfCells; ++c)
-  {
-    const int type = this->Input->GetCellType(c);
-    auto found = dimensionOfType.find(type);
-    if (found == dimensionOfType.end())
-    {
-      typeProbe->SetCellType(type);
-      found = dimensionOfType.emplace(type, typeProbe->GetCellDimension()).first;
-    }
-    if (found->second != 3)
-    {
-      continue;
-    }
-    this->Input->GetCellPoints(c, pointIds);
-    bool finite = pointIds->GetNumberOfIds() > 0;
-    for (vtkIdType j = 0; j < pointIds->GetNumberOfIds() && finite; ++j)
-    {
-      finite = std::isfinite(scalars[pointIds->GetId(j)]);
-    }
-    usable[c] = finite ? 1 : 0;
-  }
-
+  const std::vector<double> scalars = FirstComponent(array);
+  const std::vector<unsigned char> usable = UsableCells(this->Input, scalars);
   this->UpdateLocator();
 
   MarchPixelsWorker worker;
