@@ -9,8 +9,8 @@
 //   Psi(a, b) = integral_0^1 exp(-(a u + (b - a) u^2 / 2)) du,
 // tabulated over gamma = sqrt(x) / (1 + sqrt(x)) in [0, 1]^2. (Moreland and Angel use x / (1 + x);
 // but where b grows large with a small, Psi ~ sqrt(pi / 2b), which is ~ sqrt(1 - gamma) in their
-// coordinate, so bilinear reads near gamma_b = 1 err by ~1e-2. In the square-root coordinate Psi is
-// ~ (1 - gamma) / gamma there, and smooth at 0 too: the worst read error falls to ~1e-5.)
+// coordinate, so bilinear reads near gamma_b = 1 err badly. In the square-root coordinate Psi is
+// ~ (1 - gamma) / gamma there, and smooth at 0 too; TestPreIntegration bounds the read error.)
 //
 // A segment of a tetrahedron has a linear scalar, so extinction and colour are linear between the
 // points where the scalar crosses a transfer-function node: cutting there makes the formula exact.

@@ -2,13 +2,17 @@
  * @class vtkPreIntegratedTetrahedraMapper
  * @brief GPU projected tetrahedra with partial pre-integration and isosurfaces.
  *
+ * A vtkUnstructuredVolumeMapper: it prepares the mesh, visible list and order (Prepare), syncs them
+ * to the GPU (Upload) and projects the tetrahedra (Draw); the base does the rest of the frame.
+ *
  * Renders a vtkUnstructuredGrid of tetrahedra with a point scalar by cell projection on the GPU,
  * after "Volume and Isosurface Rendering with GPU-Accelerated Cell Projection" (Marroquim, Maximo,
  * Farias, Esperanca). Each frame the CPU only sorts the visible tetrahedra (parallel radix sort of
  * centroid distances, redone only when the camera or the data changed) and uploads that order; on
  * the GPU each tetrahedron's projection is classified (all classes, including the degenerate 3 and
- * 4), its thick vertex found and its triangle fan emitted (by a vertex shader pulling 12 vertices per
- * tetrahedron, or by a geometry shader fed one point per tetrahedron); the fragment shader
+ * 4), its thick vertex found and its triangle fan emitted (ProjectionRoute: VERTEX_PULLING gives each
+ * tetrahedron 5 vertex slots, outline and thick vertex, under a fixed index buffer of 4 triangles;
+ * GEOMETRY_SHADER feeds one point per tetrahedron to a geometry shader); the fragment shader
  * integrates the ray segment and the result is composited back to front into a float image that is
  * blended into VTK's scene, clipped at the depth of opaque geometry.
  *
@@ -16,8 +20,8 @@
  * - PARTIAL_PRE_INTEGRATION (default): the segment is cut where its scalar crosses a transfer-
  *   function node and each piece is integrated with the Psi table of Moreland and Angel. This is the
  *   exact integral of the project's optical model (uvOpticalModel.h) for a linear scalar, up to the
- *   table's interpolation (about 2e-5) and float arithmetic. Editing the transfer function costs a
- *   texture upload.
+ *   table's interpolation and float arithmetic (the tests bound both). Editing the transfer
+ *   function costs a texture upload at most.
  * - AVERAGE_SCALAR: the transfer function at the segment's mean scalar (the paper's basic mode).
  *
  * Isosurfaces (any number, each with a colour and opacity) are drawn on top of either mode, lit
