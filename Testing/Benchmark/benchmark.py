@@ -51,6 +51,7 @@ import vtkmodules.vtkRenderingFreeType  # noqa: F401
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
+from fixtures import analytic  # noqa: E402
 from shared_data import SHARED, bluntfin, can, disk_out_ref, legacy  # noqa: E402
 REFERENCE_VERSION = "2"  # bump when the reference renderer's output changes (2: no lost cells, superposition)
 
@@ -100,16 +101,6 @@ def configured(factory, **settings):
 
 # ---------------------------------------------------------------------------------------------
 # Scenes
-def analytic(resolution, field, distortion, cells):
-    source = vtkAnalyticMeshSource()
-    source.SetResolution(resolution, resolution, resolution)
-    source.SetField(field)
-    source.SetDistortion(distortion)
-    source.SetCellKind(cells)
-    source.Update()
-    return source.GetOutput()
-
-
 def wavelet_tets():
     """VTK's wavelet on 64^3 points, five tetrahedra per cell: 1.25 M tetrahedra."""
     wavelet = vtkRTAnalyticSource()
