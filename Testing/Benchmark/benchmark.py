@@ -12,7 +12,9 @@ error of every frame against vtkUnstructuredVolumeReferenceRenderer at the same 
 image for this project's mappers, which keep it; on the 8-bit window for VTK's). Writes results.csv, results.json, results.md (a table), and per scene a log-log plot of time against error with the
 Pareto front (<scene>_time_vs_error.png) and a montage (<scene>_montage.png: top row the reference
 then each mapper's first view, bottom row their error heat maps). Reference images are cached in
-<output>/reference-cache, keyed by everything that determines them.
+<output>/reference-cache, keyed by everything that determines them. With --write-readme it also
+writes Testing/Benchmark/README.md (or the path given): how and where the run was made, its one
+table, and its ratios against VTK's mappers, so that the published numbers are always one run's.
 
 Mappers register in MAPPERS below: a name, a factory, and the input it takes: "tets" (the scene's
 mesh split into tetrahedra) or "hexahedra" (the mesh itself; run on hexahedral scenes only).
@@ -23,6 +25,7 @@ import hashlib
 import json
 import math
 import os
+import shlex
 import statistics
 import sys
 import time
@@ -32,7 +35,7 @@ from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper
                                 vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
-from vtkmodules.vtkCommonCore import vtkFloatArray
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkVersion
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkTable
 from vtkmodules.vtkImagingCore import vtkImageConstantPad
 from vtkmodules.vtkFiltersCore import vtkImageAppend
@@ -51,6 +54,7 @@ import vtkmodules.vtkRenderingFreeType  # noqa: F401
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
+from fixtures import analytic  # noqa: E402
 from shared_data import SHARED, bluntfin, can, disk_out_ref, legacy  # noqa: E402
 REFERENCE_VERSION = "2"  # bump when the reference renderer's output changes (2: no lost cells, superposition)
 
@@ -100,16 +104,6 @@ def configured(factory, **settings):
 
 # ---------------------------------------------------------------------------------------------
 # Scenes
-def analytic(resolution, field, distortion, cells):
-    source = vtkAnalyticMeshSource()
-    source.SetResolution(resolution, resolution, resolution)
-    source.SetField(field)
-    source.SetDistortion(distortion)
-    source.SetCellKind(cells)
-    source.Update()
-    return source.GetOutput()
-
-
 def wavelet_tets():
     """VTK's wavelet on 64^3 points, five tetrahedra per cell: 1.25 M tetrahedra."""
     wavelet = vtkRTAnalyticSource()
@@ -435,6 +429,143 @@ def markdown_table(rows):
     return "\n".join(lines) + "\n"
 
 
+README_PATH = os.path.join(ROOT, "Testing", "Benchmark", "README.md")
+
+
+def cpu_model():
+    """The CPU's model name from /proc/cpuinfo (first entry), or "unknown"."""
+    try:
+        with open("/proc/cpuinfo") as info:
+            for line in info:
+                key, _, value = line.partition(":")
+                if key.strip() in ("model name", "Hardware", "Processor") and value.strip():
+                    return value.strip()
+    except OSError:
+        pass
+    return "unknown"
+
+
+def opengl_strings():
+    """(renderer, version) reported by an off-screen render window like the ones the mappers use."""
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(8, 8)
+    window.AddRenderer(vtkRenderer())
+    window.Render()
+    found = {}
+    for line in (window.ReportCapabilities() or "").splitlines():
+        key, _, value = line.partition(":")
+        found[key.strip()] = value.strip()
+    window.Finalize()
+    return found.get("OpenGL renderer string", "unknown"), found.get("OpenGL version string", "unknown")
+
+
+def run_command():
+    """The command line of this run as it could be typed again from the repository root."""
+    script = os.path.abspath(sys.argv[0])
+    if script.startswith(ROOT + os.sep):
+        script = os.path.relpath(script, ROOT)
+    return shlex.join([sys.executable, script] + sys.argv[1:])
+
+
+def is_vtk(row):
+    return row["mapper"].startswith("VTK ")
+
+
+def times(ratio):
+    return f"{ratio:.2g}x" if ratio < 10 else f"{ratio:.0f}x"
+
+
+def ratios_against_vtk(rows):
+    """Per scene, this project's fastest and most accurate mappers against the fastest of VTK's that
+    ran on it (markdown lines; empty when no scene had both)."""
+    lines = []
+    for scene in dict.fromkeys(r["scene"] for r in rows):
+        theirs = [r for r in rows if r["scene"] == scene and is_vtk(r)]
+        ours = [r for r in rows if r["scene"] == scene and not is_vtk(r)]
+        if not theirs or not ours:
+            continue
+        base = min(theirs, key=lambda r: r["median_s"])
+
+        def against(row):
+            time_ratio = row["median_s"] / base["median_s"]
+            if row["rmse_covered"] > 0:
+                error_ratio = base["rmse_covered"] / row["rmse_covered"]
+                error = (f"{times(error_ratio)} lower error" if error_ratio >= 1
+                         else f"{times(1 / error_ratio)} higher error")
+            else:
+                error = "no measurable error"
+            return f"{row['mapper']} at {times(time_ratio)} the time with {error}"
+
+        fastest = min(ours, key=lambda r: r["median_s"])
+        best = min(ours, key=lambda r: r["rmse_covered"])
+        parts = [f"fastest of ours {against(fastest)}"]
+        if best is not fastest:
+            parts.append(f"most accurate {against(best)}")
+        both = [r["mapper"] for r in ours
+                if r["median_s"] < base["median_s"] and r["rmse_covered"] < base["rmse_covered"]]
+        parts.append("faster and more accurate than it: " + (", ".join(both) if both else "none"))
+        lines.append(f"- **{scene}** against {base['mapper']} ({base['median_s']:.3f} s, RMSE "
+                     f"{base['rmse_covered']:.3g}): " + "; ".join(parts) + ".")
+    return lines
+
+
+def readme_text(rows, command, started, machine, partial):
+    """Testing/Benchmark/README.md for one run: how it was made, its table, its ratios."""
+    renderer, version = machine["opengl"]
+    sizes = sorted({(r["size"], r["views"]) for r in rows})
+    scenes_cells = ", ".join(f"{scene} ({cells} cells)" for scene, cells in
+                             dict.fromkeys((r["scene"], r["cells"]) for r in rows))
+    out = [
+        "# Benchmark: time against error",
+        "",
+        "Written by `Testing/Benchmark/benchmark.py --write-readme` from one run; do not edit by hand, run it",
+        "again. The numbers are this machine's: compare ratios within a scene, not times across machines.",
+        "",
+        f"- Command: `{command}`",
+        f"- Run started: {started}",
+        f"- CPU: {machine['cpu']} ({machine['cpus']} logical CPUs)",
+        f"- OpenGL renderer: {renderer}; OpenGL version: {version}; VTK {machine['vtk']}",
+        f"- Images: {', '.join(f'{size}x{size} px, {views} views' for size, views in sizes)}",
+        f"- Scenes: {scenes_cells}",
+    ]
+    if partial:
+        out += ["", "**Partial run** (" + partial + "): a placeholder until the full run, not the benchmark's results."]
+    out += [
+        "",
+        "Per scene and mapper: the first frame (preparation), the median frame time over an orbit of views",
+        "[fastest-slowest] (each frame ends with glFinish), the RMSE of premultiplied RGB over the covered",
+        "pixels against vtkUnstructuredVolumeReferenceRenderer at the same view (averaged over the views;",
+        "this project's mappers on their float image, VTK's on the 8-bit window) and the largest error, the",
+        "resident memory the first frame added, and the GPU buffers of the mesh per cell of the scene (this",
+        "project's mappers).",
+        "",
+        markdown_table(rows).rstrip("\n"),
+        "",
+        "## Against VTK's mappers",
+        "",
+    ]
+    ratios = ratios_against_vtk(rows)
+    out += ratios if ratios else ["No scene of this run had both one of VTK's mappers and one of this project's."]
+    out += [
+        "",
+        "## Running it",
+        "",
+        "```sh",
+        'PYTHONPATH=build/vtk/lib/python3/dist-packages xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \\',
+        "  /usr/bin/python3 Testing/Benchmark/benchmark.py --write-readme   # every scene and mapper, 512 px, 8 views",
+        "```",
+        "",
+        "`--quick` (two small scenes, 128 px, 4 views), `--scenes a,b` and `--mappers substring,...` run less;",
+        "the per-scene plots of time against error and montages go to `--output` (default `out/benchmark`).",
+        "Other benchmarks: `deforming.py` (a mesh whose points move every frame), `paraview_ranks.py`",
+        "(ParaView, 1 against N ranks), `reference_render.py` (the reference alone) and",
+        "`build/vtk/bin/uvBenchmarkFilters` (the filters against VTK's).",
+        "",
+    ]
+    return "\n".join(out)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true", help="two small scenes, 128 px, 4 views (a smoke test)")
@@ -443,7 +574,13 @@ def main():
     parser.add_argument("--output", default=os.path.join(ROOT, "out", "benchmark"))
     parser.add_argument("--scenes", default=None, help="comma-separated scene names to run (default: all)")
     parser.add_argument("--mappers", default=None, help="comma-separated substrings of mapper names (default: all)")
+    parser.add_argument("--write-readme", nargs="?", const=README_PATH, default=None, metavar="PATH",
+                        help=f"also write this run's README (default path: {os.path.relpath(README_PATH, ROOT)})")
     args = parser.parse_args()
+    started = time.strftime("%Y-%m-%d %H:%M %Z")
+    if args.write_readme:
+        machine = {"cpu": cpu_model(), "cpus": os.cpu_count(), "opengl": opengl_strings(),
+                   "vtk": vtkVersion.GetVTKVersion()}
     wanted_scenes = args.scenes.split(",") if args.scenes else None
     mappers = [m for m in MAPPERS if not args.mappers or any(w in m[0] for w in args.mappers.split(","))]
     size = args.size or (128 if args.quick else 512)
@@ -527,6 +664,15 @@ def main():
     print(f"\nwrote {len(rows)} rows to {args.output}/results.csv and results.json")
     if bad:
         sys.exit(f"non-finite results: {bad}")
+    if args.write_readme:
+        # Anything short of every scene and mapper at the default size says so in the README itself.
+        partial = ", ".join(label for label, given in (
+            ("--quick", args.quick), ("--scenes", args.scenes), ("--mappers", args.mappers),
+            ("--size", args.size not in (None, 512)), ("--views", args.views not in (None, 8)),
+            ("no ../shared/data meshes", not os.path.isdir(SHARED))) if given)
+        with open(args.write_readme, "w") as out:
+            out.write(readme_text(rows, run_command(), started, machine, partial))
+        print(f"wrote {args.write_readme}")
 
 
 if __name__ == "__main__":

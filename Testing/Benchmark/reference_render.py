@@ -18,6 +18,7 @@ import benchmark  # noqa: E402
 
 from unstructuredvolume import vtkUnstructuredVolumeReferenceRenderer  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkAppendFilter  # noqa: E402
+from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader  # noqa: E402
 from vtkmodules.vtkIOXML import (vtkXMLImageDataWriter, vtkXMLStructuredGridReader,  # noqa: E402
                                  vtkXMLUnstructuredGridReader)
 
@@ -28,7 +29,7 @@ def read(path):
     elif path.endswith(".vts"):
         reader = vtkXMLStructuredGridReader()
     else:
-        reader = benchmark.vtkUnstructuredGridReader()
+        reader = vtkUnstructuredGridReader()
     reader.SetFileName(path)
     to_grid = vtkAppendFilter()
     to_grid.SetInputConnection(reader.GetOutputPort())

@@ -8,18 +8,17 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
-import test_preintegrated_tetrahedra as pt  # noqa: E402  (its test classes stay in their own module)
-from test_preintegrated_tetrahedra import (ML, STEINER, Scene, SceneTestCase, analytic, camera_for,  # noqa: E402
-                                           finite_image, reference, rmse, spike_property, vtkImageDataCopy)
-from test_hexahedral_ray_cast import (covered_colour_error, plane_scene_setup, thin_shell_property,  # noqa: E402
-                                     transparent_property)
+from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
+                      analytic, camera_for, copy_image, covered_colour_error, finite_image, inside_camera,
+                      plane_scene_setup, reference, rmse, spike_property, thin_shell_property,
+                      transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
                                 vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkCommonCore import vtkDoubleArray  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper  # noqa: E402
 
 SHELLS, CELL_PROJECTION = vtkBarycentricShellMapper.SHELLS, vtkBarycentricShellMapper.CELL_PROJECTION
 VERTEX, CELL = vtkBarycentricShellMapper.VERTEX_GRADIENTS, vtkBarycentricShellMapper.CELL_GRADIENTS
@@ -27,16 +26,6 @@ VERTEX, CELL = vtkBarycentricShellMapper.VERTEX_GRADIENTS, vtkBarycentricShellMa
 
 def shell_scene(mesh, prop, camera, size=128, props=(), **settings):
     return Scene(mesh, prop, camera, size, props, mapper_class=vtkBarycentricShellMapper, **settings)
-
-
-def inside_camera():
-    camera = vtkCamera()
-    camera.SetPosition(0.05, -0.3, 0.1)
-    camera.SetFocalPoint(0.2, 1.0, 0.0)
-    camera.SetViewUp(0, 0, 1)
-    camera.SetViewAngle(60)
-    camera.SetClippingRange(0.01, 10)
-    return camera
 
 
 class AccuracyTests(SceneTestCase):
@@ -107,7 +96,7 @@ class AccuracyTests(SceneTestCase):
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         for camera in (camera_for(mesh), camera_for(mesh, 50, -20, parallel=True), inside_camera()):
             for mode in (SHELLS, CELL_PROJECTION):
-                images = [vtkImageDataCopy(shell_scene(mesh, prop, camera, 64, RenderMode=mode,
+                images = [copy_image(shell_scene(mesh, prop, camera, 64, RenderMode=mode,
                                                        ProjectionRoute=route).render()) for route in (0, 1)]
                 self.assertLess(rmse(images[0], images[1])[1], 1e-5)
 
@@ -162,7 +151,7 @@ class IsosurfaceTests(SceneTestCase):
         for mode, layers in ((CELL_PROJECTION, 4), (SHELLS, 4), (SHELLS, 1)):
             scene = shell_scene(mesh, transparent_property(), camera, 96, RenderMode=mode, IsosurfaceLayers=layers)
             scene.mapper.AddIsosurface(low + 0.5 * (high - low), 0.9, 0.6, 0.2, 0.4)
-            images[(mode, layers)] = vtkImageDataCopy(scene.render())
+            images[(mode, layers)] = copy_image(scene.render())
             self.assertEqual(scene.events.errors, 0)
             if mode == SHELLS:
                 self.assertEqual(scene.mapper.GetNumberOfDrawnIsosurfaceLayers(), layers)
@@ -195,7 +184,6 @@ class DeformationTests(SceneTestCase):
     def test_each_frame_of_a_deforming_mesh_matches_the_reference(self):
         # A time-varying displacement moves the points in place each frame: the mapper refreshes
         # positions only (no rebuild), and every frame is as accurate as a static mesh's.
-        import math
         mesh = analytic(8)
         rest = [mesh.GetPoint(i) for i in range(mesh.GetNumberOfPoints())]
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
@@ -234,7 +222,7 @@ class DeformationTests(SceneTestCase):
                 x, y, z = points.GetPoint(i)
                 points.SetPoint(i, x + 0.01 * (frame + 1) * y, y, z)
             points.Modified()
-            images = {g: vtkImageDataCopy(scene.render()) for g, scene in scenes.items()}
+            images = {g: copy_image(scene.render()) for g, scene in scenes.items()}
             self.assertLess(rmse(images[VERTEX], images[CELL])[0], 0.05)
         self.assertEqual(scenes[VERTEX].mapper.GetNumberOfGradientComputations(), 3)
         self.assertEqual(scenes[CELL].mapper.GetNumberOfGradientComputations(), 0)
@@ -287,7 +275,7 @@ class TextureTests(SceneTestCase):
         textured = shell_scene(carrier, prop, camera, 96, SampleDistance=0.02)
         textured.mapper.SetTextureImage(image)
         plain = shell_scene(mesh, prop, camera, 96, SampleDistance=0.02)
-        first = vtkImageDataCopy(textured.render())
+        first = copy_image(textured.render())
         error = rmse(first, plain.render())[0]
         print(f"\n  image against the mesh's own scalar: RMSE {error:.3g}", end="")
         self.assertLess(error, 1e-3)
@@ -322,7 +310,7 @@ class TextureTests(SceneTestCase):
         self.assertEqual(scene.events.errors, 1)
 
 
-class ShellBaselineTests(pt.BaselineTests):
+class ShellBaselineTests(BaselineTestCase):
     def scene(self, mesh, prop, camera, size=256, props=(), **settings):
         return super().scene(mesh, prop, camera, size, props, mapper_class=vtkBarycentricShellMapper, **settings)
 
@@ -384,8 +372,6 @@ class ShellBaselineTests(pt.BaselineTests):
         scene = self.scene(mesh, prop, camera_for(mesh, 40, 20, distance=2.4))
         self.compare(scene.window, "barycentric_shells_spx_perspective.png")
 
-    test_lox_post_isosurface = None  # the tetrahedra mapper's scenes, not repeated here
-
 
 class SkippingTests(SceneTestCase):
     def test_invisible_cells_are_in_no_shell(self):
@@ -399,7 +385,7 @@ class SkippingTests(SceneTestCase):
         opacity.AddPoint(low + 0.7 * (high - low), 0.0)
         opacity.AddPoint(high, 0.8)
         scene = shell_scene(mesh, prop, camera_for(mesh), 96)
-        skipped = vtkImageDataCopy(scene.render())
+        skipped = copy_image(scene.render())
         drawn_visible = scene.mapper.GetNumberOfDrawnTetrahedra()
         scene.mapper.SkipInvisibleCellsOff()
         everything = scene.render()
@@ -414,7 +400,7 @@ class SkippingTests(SceneTestCase):
         mesh = analytic(5)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         scene = shell_scene(mesh, prop, camera_for(mesh), 48, RenderMode=CELL_PROJECTION)
-        first = vtkImageDataCopy(scene.render())
+        first = copy_image(scene.render())
         scene.render()
         self.assertEqual(scene.mapper.GetNumberOfSorts(), 1)
         self.assertLess(rmse(scene.render(), first)[1], 1e-7)
@@ -462,7 +448,7 @@ class SkippingTests(SceneTestCase):
         images = {}
         for threshold in (0.0, 0.99, 1.0):
             scene = shell_scene(mesh, prop, camera, 96, OpacityThreshold=threshold)
-            images[threshold] = vtkImageDataCopy(scene.render())
+            images[threshold] = copy_image(scene.render())
             self.assertEqual(scene.events.errors, 0)
         self.assertLess(rmse(images[0.99], images[1.0])[1], 0.011)
         self.assertGreater(rmse(images[0.0], images[1.0])[1], 0.05)
@@ -509,7 +495,7 @@ class ViewportTests(unittest.TestCase):
         self.assertEqual(int(beside[:, :64].max() - beside[:, :64].min()), 0)  # nothing drawn left of it
 
 
-class InputTests(pt.TetrahedralInputChecks, SceneTestCase):
+class InputTests(TetrahedralInputChecks, SceneTestCase):
     def scene(self, mesh, prop=None, **settings):
         prop = prop or uvrender.volume_property((0.0, 1.0))
         return shell_scene(mesh, prop, camera_for(analytic(2)), 48, **settings)

@@ -2,31 +2,16 @@
 import math
 import os
 import sys
-import tempfile
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
+from fixtures import OUTPUT, Events, assert_matches_baseline  # noqa: E402
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,  # noqa: E402
                                 vtkVertexGradientFilter)
-from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
-
-# vtkImageDifference's thresholded error allowed against a baseline (VTK's regression tests use 10).
-IMAGE_THRESHOLD = 10.0
-
-
-class Errors:
-    """Counts ErrorEvents of a VTK object instead of printing them."""
-
-    def __init__(self, obj):
-        self.count = 0
-        obj.AddObserver(vtkCommand.ErrorEvent, self)
-
-    def __call__(self, caller, event):
-        self.count += 1
 
 
 class FilterTests(unittest.TestCase):
@@ -59,16 +44,16 @@ class FilterTests(unittest.TestCase):
 
     def test_missing_array_is_an_error_not_a_crash(self):
         gradient = vtkVertexGradientFilter()
-        errors = Errors(gradient)
+        events = Events(gradient)
         gradient.SetInputData(vtkUnstructuredGrid())
         gradient.Update()  # empty: quiet
-        self.assertEqual(errors.count, 0)
+        self.assertEqual(events.errors, 0)
         source = vtkAnalyticMeshSource()
         source.SetResolution(2, 2, 2)
         gradient.SetInputConnection(source.GetOutputPort())
         gradient.SetInputArrayToProcess(0, 0, 0, 0, "NotThere")
         gradient.Update()
-        self.assertEqual(errors.count, 1)
+        self.assertEqual(events.errors, 1)
         self.assertIsNone(gradient.GetOutput().GetPointData().GetArray("Gradients"))
 
     def test_default_dataset_render_matches_baseline(self):
@@ -77,13 +62,9 @@ class FilterTests(unittest.TestCase):
         split = vtkHexahedraToTetrahedra()
         split.SetInputConnection(reader.GetOutputPort())
         split.Update()
-        baseline = os.path.join(uvrender.BASELINES, "python_split_projected_tetrahedra.png")
-        out_dir = os.environ.get("UV_TEST_OUTPUT", tempfile.gettempdir())
-        candidate = os.path.join(out_dir, "python_split_projected_tetrahedra.png")
+        candidate = os.path.join(OUTPUT, "python_split_projected_tetrahedra.png")
         uvrender.render_projected_tetrahedra(split.GetOutput(), "MarschnerLobb", candidate, size=256)
-        self.assertTrue(os.path.exists(baseline), f"no baseline: look at {candidate}, then copy it to {baseline}")
-        error = uvrender.image_difference(candidate, baseline)
-        self.assertLessEqual(error, IMAGE_THRESHOLD, f"{candidate} differs from {baseline}: {error}")
+        error = assert_matches_baseline(self, candidate, "python_split_projected_tetrahedra.png")
         self.assertTrue(math.isfinite(error))
 
 

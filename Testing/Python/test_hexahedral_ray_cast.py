@@ -3,13 +3,14 @@ generated grids, baselines, bad input and stress cases. Run by ctest under Xvfb 
 import math
 import os
 import sys
-import tempfile
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import shared_data  # noqa: E402
 import uvrender  # noqa: E402
-from test_preintegrated_tetrahedra import (SHARED, Events, SceneTestCase, camera_for, finite_image,  # noqa: E402
-                                           reference, rmse, shared_window, OPEN_SCENES)
+from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic_hexahedra, camera_for,  # noqa: E402
+                      covered_colour_error, finite_image, inside_camera, load_shared, plane_scene_setup, reference,
+                      rmse, thin_shell_property, transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,  # noqa: E402
                                 vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
@@ -19,41 +20,7 @@ from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, vtkPiecewiseFunction,
                                            vtkUnstructuredGrid)
 from vtkmodules.vtkFiltersCore import vtkAppendFilter  # noqa: E402
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkRenderer, vtkVolume, vtkVolumeProperty  # noqa: E402
-
-OUTPUT = os.environ.get("UV_TEST_OUTPUT", tempfile.gettempdir())
-IMAGE_THRESHOLD = 10.0
-
-
-class HexScene:
-    """A mapper (hexahedral by default) in the module's shared off-screen window."""
-
-    def __init__(self, mesh, prop, camera, size=128, mapper=None, **settings):
-        OPEN_SCENES.append(self)
-        self.size = size
-        self.renderer = vtkRenderer()
-        self.renderer.SetBackground(0, 0, 0)
-        self.renderer.SetBackgroundAlpha(0.0)
-        self.window = shared_window()
-        self.mapper = mapper or vtkHexahedralRayCastMapper()
-        self.mapper.SetInputData(mesh)
-        self.mapper.SetKeepFloatImage(True)
-        for name, value in settings.items():
-            getattr(self.mapper, "Set" + name)(value)
-        self.events = Events(self.mapper)
-        volume = vtkVolume()
-        volume.SetMapper(self.mapper)
-        volume.SetProperty(prop)
-        self.renderer.AddVolume(volume)
-        self.renderer.SetActiveCamera(camera)
-
-    def render(self):
-        renderers = self.window.GetRenderers()
-        renderers.RemoveAllItems()
-        self.window.AddRenderer(self.renderer)
-        self.window.SetSize(self.size, self.size)
-        self.window.Render()
-        return self.mapper.GetFloatImage()
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolumeProperty  # noqa: E402
 
 
 def single_hexahedron(values, shear=0.0, rotate=0.0):
@@ -94,16 +61,6 @@ def six_spikes(unit):
     prop.SetScalarOpacity(opacity)
     prop.SetScalarOpacityUnitDistance(unit)
     return prop
-
-
-def analytic(resolution, field=vtkAnalyticMeshSource.MARSCHNER_LOBB, distortion=0):
-    source = vtkAnalyticMeshSource()
-    source.SetResolution(resolution, resolution, resolution)
-    source.SetField(field)
-    source.SetDistortion(distortion)
-    source.SetCellKind(vtkAnalyticMeshSource.HEXAHEDRA)
-    source.Update()
-    return source.GetOutput()
 
 
 class SingleHexahedronTests(SceneTestCase):
@@ -160,13 +117,13 @@ class AccuracyTests(SceneTestCase):
     def test_regular_grid(self):
         # Boxes: the frame is exact. Measured 4.9e-4 (one pixel whose ray passes through mesh
         # vertices loses part of its walk; every other pixel within 1e-5).
-        mesh = analytic(6)
+        mesh = analytic_hexahedra(6)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         self.check(mesh, prop, camera_for(mesh), 2e-3)
 
     def test_rotated_45_degrees(self):
         # The grid the paper's world-space fit cannot handle (its 8x8 system is singular).
-        mesh = analytic(5, distortion=vtkAnalyticMeshSource.ROTATE_45)
+        mesh = analytic_hexahedra(5, distortion=vtkAnalyticMeshSource.ROTATE_45)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         self.check(mesh, prop, camera_for(mesh, 20, 30), 2e-3)
 
@@ -174,91 +131,16 @@ class AccuracyTests(SceneTestCase):
         # Curved cells: exact bilinear faces; along each segment the cubic through the exact field at
         # its ends and two inner points. Measured 2.9e-4 (max 8.3e-3, at silhouettes); the frame
         # alone 4.1e-4, as was the frame's cubic between exact ends.
-        mesh = analytic(6, distortion=vtkAnalyticMeshSource.TWIST)
+        mesh = analytic_hexahedra(6, distortion=vtkAnalyticMeshSource.TWIST)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         exact = self.check(mesh, prop, camera_for(mesh), 5e-4)
         frame_only = self.check(mesh, prop, camera_for(mesh), 2e-2, ExactSegmentEnds=False)
         self.assertLess(exact, 0.85 * frame_only)
 
     def test_camera_inside_the_mesh(self):
-        mesh = analytic(5)
+        mesh = analytic_hexahedra(5)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-        from vtkmodules.vtkRenderingCore import vtkCamera
-        camera = vtkCamera()
-        camera.SetPosition(0.05, -0.3, 0.1)
-        camera.SetFocalPoint(0.2, 1.0, 0.0)
-        camera.SetViewUp(0, 0, 1)
-        camera.SetViewAngle(60)
-        camera.SetClippingRange(0.01, 10)
-        self.check(mesh, prop, camera, 5e-3, size=96)
-
-
-def transparent_property(color=(0.9, 0.6, 0.2)):
-    """A volume that shows nothing (isosurfaces only), unlit but for what a test sets."""
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(-1e9, 0.0)
-    opacity.AddPoint(1e9, 0.0)
-    colors = vtkColorTransferFunction()
-    colors.AddRGBPoint(-1e9, *color)
-    colors.AddRGBPoint(1e9, *color)
-    prop = vtkVolumeProperty()
-    prop.SetColor(colors)
-    prop.SetScalarOpacity(opacity)
-    prop.SetAmbient(1.0)
-    prop.SetDiffuse(0.0)
-    prop.SetSpecular(0.0)
-    return prop
-
-
-def thin_shell_property(low, high, value, color, length):
-    """An unlit, very opaque shell of the transfer function 1e-4 of the range wide around `value`: what
-    an opaque isosurface is the limit of, for the reference to render."""
-    shell = transparent_property(color)
-    opacity = shell.GetScalarOpacity()
-    opacity.RemoveAllPoints()
-    width = 1e-4 * (high - low)
-    for s, a in ((low, 0.0), (value - width, 0.0), (value - 0.5 * width, 0.999), (value + 0.5 * width, 0.999),
-                 (value + width, 0.0), (high, 0.0)):
-        opacity.AddPoint(s, a)
-    shell.SetScalarOpacityUnitDistance(1e-7 * length)
-    return shell
-
-
-PLANE_GRADIENT = (0.3, -0.5, 0.8)
-
-
-def plane_scene_setup(mesh, camera, color):
-    """Sets the linear field PLANE_GRADIENT . x as the mesh's scalar; returns a transparent lit property
-    and the analytic Phong colour of its isosurface (a plane, one normal) under the renderer's
-    headlight and `camera`'s parallel view."""
-    values = vtkDoubleArray()
-    values.SetName("plane")
-    for i in range(mesh.GetNumberOfPoints()):
-        values.InsertNextValue(sum(g * x for g, x in zip(PLANE_GRADIENT, mesh.GetPoint(i))))
-    mesh.GetPointData().SetScalars(values)
-    prop = transparent_property()
-    prop.SetAmbient(0.15)
-    prop.SetDiffuse(0.7)
-    prop.SetSpecular(0.3)
-    prop.SetSpecularPower(8)
-    # Headlight and parallel view: the light and the eye are both along the view direction.
-    view = camera.GetDirectionOfProjection()
-    norm = math.sqrt(sum(g * g for g in PLANE_GRADIENT))
-    lambert = abs(sum(g * v for g, v in zip(PLANE_GRADIENT, view))) / norm
-    highlight = max(2 * lambert * lambert - 1, 0.0) ** 8
-    return prop, [c * (0.15 + 0.7 * lambert) + 0.3 * highlight for c in color]
-
-
-def covered_colour_error(image, expected):
-    """The pixels of a float image opaque to 0.999, and their largest colour difference from `expected`."""
-    rgba = image.GetPointData().GetScalars()
-    covered, worst = 0, 0.0
-    for i in range(rgba.GetNumberOfTuples()):
-        pixel = rgba.GetTuple4(i)
-        if pixel[3] > 0.999:
-            covered += 1
-            worst = max(worst, max(abs(pixel[k] - expected[k]) for k in range(3)))
-    return covered, worst
+        self.check(mesh, prop, inside_camera(), 5e-3, size=96)
 
 
 class IsosurfaceTests(SceneTestCase):
@@ -267,7 +149,7 @@ class IsosurfaceTests(SceneTestCase):
         # function around the isovalue: the reference renders that shell. Curved cells (twist), so
         # the surface is the trilinear field's, cell by cell. Only rays grazing the surface (the
         # shell's rim) may differ.
-        mesh = analytic(6, distortion=vtkAnalyticMeshSource.TWIST)
+        mesh = analytic_hexahedra(6, distortion=vtkAnalyticMeshSource.TWIST)
         low, high = mesh.GetPointData().GetScalars().GetRange()
         value = low + 0.55 * (high - low)
         color = (0.9, 0.6, 0.2)
@@ -293,7 +175,7 @@ class IsosurfaceTests(SceneTestCase):
         # A linear field of position is trilinear in every cell, curved ones too: its isosurface is a
         # plane with one normal, so under a parallel headlight every covered pixel has the same
         # analytic Phong colour. Twisted (non-orthogonal) cells check the gradient's J^-T.
-        mesh = analytic(4, distortion=vtkAnalyticMeshSource.TWIST)
+        mesh = analytic_hexahedra(4, distortion=vtkAnalyticMeshSource.TWIST)
         camera = camera_for(mesh, 30, 25, parallel=True)
         color = (0.2, 0.6, 1.0)
         prop, expected = plane_scene_setup(mesh, camera, color)
@@ -306,7 +188,7 @@ class IsosurfaceTests(SceneTestCase):
         self.assertLess(worst, 2e-3)
 
     def test_every_mode_draws_the_surface(self):
-        mesh = analytic(5)
+        mesh = analytic_hexahedra(5)
         low, high = mesh.GetPointData().GetScalars().GetRange()
         camera = camera_for(mesh)
         images = []
@@ -322,9 +204,9 @@ class IsosurfaceTests(SceneTestCase):
 class InputTests(SceneTestCase):
     def test_tetrahedra_are_an_error_naming_the_route(self):
         split = vtkHexahedraToTetrahedra()
-        split.SetInputData(analytic(2))
+        split.SetInputData(analytic_hexahedra(2))
         split.Update()
-        scene = HexScene(split.GetOutput(), uvrender.volume_property((0, 1)), camera_for(analytic(2)), 48)
+        scene = HexScene(split.GetOutput(), uvrender.volume_property((0, 1)), camera_for(analytic_hexahedra(2)), 48)
         scene.render()
         self.assertEqual(scene.events.errors, 1)
 
@@ -364,10 +246,10 @@ class InputTests(SceneTestCase):
         self.assertTrue(finite_image(holed))
 
     def test_empty_and_constant(self):
-        scene = HexScene(vtkUnstructuredGrid(), uvrender.volume_property((0, 1)), camera_for(analytic(2)), 48)
+        scene = HexScene(vtkUnstructuredGrid(), uvrender.volume_property((0, 1)), camera_for(analytic_hexahedra(2)), 48)
         scene.render()
         self.assertEqual(scene.events.errors + scene.events.warnings, 0)
-        mesh = analytic(4)
+        mesh = analytic_hexahedra(4)
         mesh.GetPointData().GetScalars().Fill(0.3)
         prop = uvrender.volume_property((0.0, 1.0))
         image = HexScene(mesh, prop, camera_for(mesh), 64).render()
@@ -379,7 +261,7 @@ class ProgressTests(SceneTestCase):
     def test_preparation_reports_progress_once_per_data_change(self):
         # The mesh preparation (adjacency, split) reports progress like a filter (ParaView's progress
         # bar shows it through the plugin's representations); a frame with nothing changed does not.
-        mesh = analytic(6)
+        mesh = analytic_hexahedra(6)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         for mapper in (vtkHexahedralRayCastMapper(), vtkPreIntegratedTetrahedraMapper()):
             progress = []
@@ -402,7 +284,7 @@ class ProgressTests(SceneTestCase):
 class StressTests(SceneTestCase):
     def test_rays_along_faces_and_edges(self):
         # Axis-aligned views of a regular grid: rays run exactly along faces and edges.
-        mesh = analytic(4)
+        mesh = analytic_hexahedra(4)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         for camera in (camera_for(mesh, 0, 0, parallel=True), camera_for(mesh, 90, 0, parallel=True),
                        camera_for(mesh, 0, 0)):
@@ -422,7 +304,7 @@ class StressTests(SceneTestCase):
         self.assertTrue(finite_image(image))
 
     def test_nearly_degenerate_hexahedra(self):
-        mesh = analytic(4)
+        mesh = analytic_hexahedra(4)
         points = mesh.GetPoints()
         for i in range(points.GetNumberOfPoints()):
             x, y, z = points.GetPoint(i)
@@ -436,15 +318,12 @@ class StressTests(SceneTestCase):
         self.assertTrue(finite_image(image))
 
 
-class RealMeshTests(SceneTestCase):
+class RealMeshTests(BaselineTestCase):
     """The public meshes of ../shared/data (skipped when absent): accuracy against the reference at
     128x128, then a 256x256 baseline with and without isosurfaces."""
 
     def load(self, loader, scalar):
-        try:
-            mesh = loader()
-        except FileNotFoundError as missing:
-            self.skipTest(f"{missing} is absent")
+        mesh = load_shared(self, loader)
         mesh.GetPointData().SetActiveScalars(scalar)
         return mesh
 
@@ -471,39 +350,28 @@ class RealMeshTests(SceneTestCase):
                 scene.mapper.AddIsosurface(low + fraction * (high - low), *rgba)
             scene.render()
             self.assertEqual(scene.events.errors, 0)
-            BaselineTests.compare(self, scene, f"{baseline}{suffix}.png")
+            self.compare(scene.window, f"{baseline}{suffix}.png")
         return scene
 
     def test_blunt_fin(self):
         # Curvilinear hexahedra with collapsed cells. Measured 1.5e-4.
-        import shared_data
         self.check(self.load(shared_data.bluntfin, "Density"), 0.01, 1e-3, "hexahedral_blunt_fin", (0.55,))
 
     def test_disk_out_ref(self):
         # Non-convex (a hole down the middle): two peels. Measured 1.7e-4.
-        import shared_data
         self.check(self.load(shared_data.disk_out_ref, "Temp"), 0.05, 1e-3, "hexahedral_disk_out_ref", (0.4, 0.8))
 
     def test_can(self):
         # The crushed can: 51 of its 4800 hexahedra are tangled (Jacobian of both signs). Measured
         # 3.5e-3 (8.6e-3 against the reference before it stopped losing cells): the walk takes one
         # cell at a time where the optical model superposes overlapping cells.
-        import shared_data
         mesh = self.load(shared_data.can, "DISPL_magnitude")
         scene = self.check(mesh, 0.05, 0.007, "hexahedral_can", (0.5,))
         self.assertEqual(scene.mapper.GetNumberOfTangledCells(), 51)
         self.assertEqual(scene.events.warnings, 1)
 
 
-class BaselineTests(SceneTestCase):
-    def compare(self, scene, name):
-        baseline = os.path.join(uvrender.BASELINES, name)
-        candidate = os.path.join(OUTPUT, name)
-        uvrender.write_png(scene.window, candidate)
-        self.assertTrue(os.path.exists(baseline), f"no baseline: look at {candidate}, then copy it to {baseline}")
-        error = uvrender.image_difference(candidate, baseline)
-        self.assertLessEqual(error, IMAGE_THRESHOLD, f"{candidate} differs from {baseline}: {error}")
-
+class BaselineTests(BaselineTestCase):
     def render(self, mesh, prop, camera):
         scene = HexScene(mesh, prop, camera, 256)
         scene.renderer.SetBackground(0.1, 0.1, 0.12)
@@ -513,12 +381,12 @@ class BaselineTests(SceneTestCase):
         return scene
 
     def test_twisted_grid(self):
-        mesh = analytic(10, distortion=vtkAnalyticMeshSource.TWIST)
+        mesh = analytic_hexahedra(10, distortion=vtkAnalyticMeshSource.TWIST)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-        self.compare(self.render(mesh, prop, camera_for(mesh, distance=1.7)), "hexahedral_twisted_grid.png")
+        self.compare(self.render(mesh, prop, camera_for(mesh, distance=1.7)).window, "hexahedral_twisted_grid.png")
 
     def test_twisted_grid_with_isosurfaces(self):
-        mesh = analytic(10, distortion=vtkAnalyticMeshSource.TWIST)
+        mesh = analytic_hexahedra(10, distortion=vtkAnalyticMeshSource.TWIST)
         low, high = mesh.GetPointData().GetScalars().GetRange()
         prop = uvrender.volume_property((low, high))
         prop.SetAmbient(0.2)
@@ -532,12 +400,13 @@ class BaselineTests(SceneTestCase):
         scene.renderer.SetBackgroundAlpha(1.0)
         scene.render()
         self.assertEqual(scene.events.errors, 0)
-        self.compare(scene, "hexahedral_twisted_isosurfaces.png")
+        self.compare(scene.window, "hexahedral_twisted_isosurfaces.png")
 
     def test_rotated_grid(self):
-        mesh = analytic(8, distortion=vtkAnalyticMeshSource.ROTATE_45)
+        mesh = analytic_hexahedra(8, distortion=vtkAnalyticMeshSource.ROTATE_45)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-        self.compare(self.render(mesh, prop, camera_for(mesh, 25, 20, distance=1.8)), "hexahedral_rotated_grid.png")
+        self.compare(self.render(mesh, prop, camera_for(mesh, 25, 20, distance=1.8)).window,
+                     "hexahedral_rotated_grid.png")
 
 
 if __name__ == "__main__":

@@ -1,181 +1,20 @@
 """vtkPreIntegratedTetrahedraMapper: accuracy against the reference renderer, image baselines, what
 it skips, bad input and stress cases. Run by ctest under Xvfb with /usr/bin/python3."""
-import math
 import os
 import sys
-import tempfile
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
+from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
+                      analytic, camera_for, copy_image, finite_image, inside_camera, reference, rmse,
+                      spike_property)
 
-from unstructuredvolume import (vtkAnalyticMeshSource, vtkPreIntegratedTetrahedraMapper,  # noqa: E402
-                                vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkPoints  # noqa: E402
-from vtkmodules.vtkCommonDataModel import (VTK_QUADRATIC_TETRA, vtkPiecewiseFunction,  # noqa: E402
-                                           vtkUnstructuredGrid)
+from unstructuredvolume import vtkAnalyticMeshSource  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
-from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkCamera, vtkColorTransferFunction,  # noqa: E402
-                                         vtkPolyDataMapper, vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty)
-
-IMAGE_THRESHOLD = 10.0  # vtkImageDifference's thresholded error against a baseline
-SHARED = os.path.abspath(os.path.join(uvrender.ROOT, "..", "shared", "data"))
-OUTPUT = os.environ.get("UV_TEST_OUTPUT", tempfile.gettempdir())
-ML, STEINER = vtkAnalyticMeshSource.MARSCHNER_LOBB, vtkAnalyticMeshSource.STEINER
-
-
-class Events:
-    """Counts a VTK object's error and warning events instead of printing them."""
-
-    def __init__(self, obj):
-        self.errors = self.warnings = 0
-        obj.AddObserver(vtkCommand.ErrorEvent, self.on_error)
-        obj.AddObserver(vtkCommand.WarningEvent, self.on_warning)
-
-    def on_error(self, caller, event):
-        self.errors += 1
-
-    def on_warning(self, caller, event):
-        self.warnings += 1
-
-
-def analytic(resolution, field=ML, distortion=0, cells=vtkAnalyticMeshSource.SIX_TETRAHEDRA):
-    source = vtkAnalyticMeshSource()
-    source.SetResolution(resolution, resolution, resolution)
-    source.SetField(field)
-    source.SetDistortion(distortion)
-    source.SetCellKind(cells)
-    source.Update()
-    return source.GetOutput()
-
-
-def spike_property(low, high, unit):
-    """One thin opaque spike at 60% of the range, over a faint ramp."""
-    opacity = vtkPiecewiseFunction()
-    centre, width = low + 0.6 * (high - low), 0.02 * (high - low)
-    for s, a in ((low, 0.0), (centre - width, 0.02), (centre, 0.95), (centre + width, 0.02), (high, 0.05)):
-        opacity.AddPoint(s, a)
-    colors = vtkColorTransferFunction()
-    colors.AddRGBPoint(low, 0.1, 0.3, 0.9)
-    colors.AddRGBPoint(centre, 1.0, 0.7, 0.1)
-    colors.AddRGBPoint(high, 0.9, 0.1, 0.1)
-    prop = vtkVolumeProperty()
-    prop.SetColor(colors)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(unit)
-    return prop
-
-
-def camera_for(mesh, azimuth=30.0, elevation=25.0, parallel=False, distance=2.6):
-    bounds = mesh.GetBounds()
-    centre = [(bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3)]
-    camera = vtkCamera()
-    camera.SetFocalPoint(*centre)
-    camera.SetPosition(centre[0], centre[1] - distance * mesh.GetLength(), centre[2])
-    camera.SetViewUp(0, 0, 1)
-    camera.Azimuth(azimuth)
-    camera.Elevation(elevation)
-    camera.OrthogonalizeViewUp()
-    camera.SetParallelProjection(parallel)
-    camera.SetParallelScale(0.6 * mesh.GetLength())
-    camera.SetViewAngle(30)
-    camera.SetClippingRange(0.01, 10 * (distance + 1) * mesh.GetLength())
-    return camera
-
-
-OPEN_SCENES = []
-SHARED_WINDOW = []
-
-
-def shared_window():
-    """One off-screen window for every scene of this module: creating one per scene aborted inside
-    vtkXOpenGLRenderWindow::CreateAWindow now and then under Xvfb."""
-    if not SHARED_WINDOW:
-        window = vtkRenderWindow()
-        window.SetOffScreenRendering(1)
-        window.SetAlphaBitPlanes(1)
-        window.SetMultiSamples(0)
-        SHARED_WINDOW.append(window)
-    return SHARED_WINDOW[0]
-
-
-class SceneTestCase(unittest.TestCase):
-    """Frees the GPU resources of the scenes a test made and takes their renderers out."""
-
-    def tearDown(self):
-        while OPEN_SCENES:
-            scene = OPEN_SCENES.pop()
-            scene.mapper.ReleaseGraphicsResources(scene.window)
-            scene.window.RemoveRenderer(scene.renderer)
-
-
-class Scene:
-    """One mapper (vtkPreIntegratedTetrahedraMapper unless `mapper_class` says otherwise) in an
-    off-screen window with a transparent black background."""
-
-    def __init__(self, mesh, prop, camera, size=128, props=(), mapper_class=None, **settings):
-        OPEN_SCENES.append(self)
-        self.size = size
-        self.renderer = vtkRenderer()
-        self.renderer.SetBackground(0, 0, 0)
-        self.renderer.SetBackgroundAlpha(0.0)
-        self.window = shared_window()
-        for other in OPEN_SCENES[:-1]:
-            self.window.RemoveRenderer(other.renderer)  # one scene shows at a time
-        self.window.SetSize(size, size)
-        self.window.AddRenderer(self.renderer)
-        self.mapper = (mapper_class or vtkPreIntegratedTetrahedraMapper)()
-        self.mapper.SetInputData(mesh)
-        self.mapper.SetKeepFloatImage(True)
-        for name, value in settings.items():
-            getattr(self.mapper, "Set" + name)(value)
-        self.events = Events(self.mapper)
-        self.volume = vtkVolume()
-        self.volume.SetMapper(self.mapper)
-        self.volume.SetProperty(prop)
-        self.renderer.AddVolume(self.volume)
-        for p in props:
-            self.renderer.AddActor(p)
-        self.renderer.SetActiveCamera(camera)
-        self.window_events = Events(self.window)
-
-    def render(self):
-        renderers = self.window.GetRenderers()
-        if not renderers.IsItemPresent(self.renderer):
-            renderers.RemoveAllItems()
-            self.window.AddRenderer(self.renderer)
-        self.window.SetSize(self.size, self.size)
-        self.window.Render()
-        return self.mapper.GetFloatImage()
-
-
-def reference(mesh, prop, camera, size):
-    renderer = vtkUnstructuredVolumeReferenceRenderer()
-    renderer.SetInputData(mesh)
-    renderer.SetVolumeProperty(prop)
-    renderer.SetCamera(camera)
-    renderer.SetImageSize(size, size)
-    assert renderer.Render()
-    return renderer.GetOutput()
-
-
-def rmse(candidate, expected):
-    metrics = vtkVolumeImageErrorMetrics()
-    metrics.SetChannels(4)
-    assert metrics.Compare(candidate, expected)
-    return metrics.GetRMSE(), metrics.GetMaximumError()
-
-
-def finite_image(image):
-    scalars = image.GetPointData().GetScalars()
-    for c in range(4):
-        low, high = scalars.GetRange(c)
-        if not (math.isfinite(low) and math.isfinite(high)) or low < -1e-6 or high > 1.0 + 1e-4:
-            return False
-    return True
+from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper  # noqa: E402
 
 
 class AccuracyTests(SceneTestCase):
@@ -238,12 +77,7 @@ class AccuracyTests(SceneTestCase):
         # Tetrahedra around the eye cannot be projected; their fragments intersect the ray instead.
         mesh = analytic(6)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-        camera = vtkCamera()
-        camera.SetPosition(0.05, -0.3, 0.1)
-        camera.SetFocalPoint(0.2, 1.0, 0.0)
-        camera.SetViewUp(0, 0, 1)
-        camera.SetViewAngle(60)
-        camera.SetClippingRange(0.01, 10)
+        camera = inside_camera()
         # Tetrahedra crossing the near plane are ray-cast from that plane, where the reference's rays
         # begin (from the eye, over the whole screen, before: 3.3e-3). Measured 8.0e-4; the rest is
         # the centroid order of large tetrahedra near the eye.
@@ -264,24 +98,7 @@ class AccuracyTests(SceneTestCase):
         self.check(mesh, prop, camera, 96, 1.5e-3)
 
 
-class BaselineTests(SceneTestCase):
-    def compare(self, window, name):
-        baseline = os.path.join(uvrender.BASELINES, name)
-        candidate = os.path.join(OUTPUT, name)
-        uvrender.write_png(window, candidate)
-        self.assertTrue(os.path.exists(baseline), f"no baseline: look at {candidate}, then copy it to {baseline}")
-        error = uvrender.image_difference(candidate, baseline)
-        self.assertLessEqual(error, IMAGE_THRESHOLD, f"{candidate} differs from {baseline}: {error}")
-
-    def scene(self, mesh, prop, camera, size=256, props=(), **settings):
-        scene = Scene(mesh, prop, camera, size, props, **settings)
-        scene.renderer.SetBackground(0.1, 0.1, 0.12)
-        scene.renderer.SetBackgroundAlpha(1.0)
-        scene.mapper.SetKeepFloatImage(False)
-        scene.render()
-        self.assertEqual(scene.events.errors, 0)
-        return scene
-
+class BaselineTests(BaselineTestCase):
     def test_default_dataset(self):
         reader = vtkXMLUnstructuredGridReader()
         reader.SetFileName(os.path.join(uvrender.ROOT, "Data", "marschner_lobb_twisted_hex.vtu"))
@@ -320,19 +137,6 @@ class BaselineTests(SceneTestCase):
         self.assertEqual(scene.events.errors, 0)
         self.assertEqual(scene.mapper.GetNumberOfGradientComputations(), 1)
         self.compare(scene.window, "preintegrated_isosurfaces_opaque_parallel.png")
-
-    def legacy(self, relative, array):
-        path = os.path.join(SHARED, relative)
-        if not os.path.exists(path):
-            self.skipTest(f"{path} is absent")
-        reader = vtkUnstructuredGridReader()
-        reader.ReadAllScalarsOn()
-        reader.SetFileName(path)
-        reader.Update()
-        mesh = reader.GetOutput()
-        if array:
-            mesh.GetPointData().SetActiveScalars(array)
-        return mesh
 
     def test_super_phoenix(self):
         mesh = self.legacy(os.path.join("spx", "spx.vtk"), None)
@@ -385,7 +189,7 @@ class SkippingTests(SceneTestCase):
         self.assertEqual(m.GetNumberOfVisibleListBuilds(), builds + 1)
         self.assertLess(m.GetNumberOfDrawnTetrahedra(), 0.6 * drawn_all)
         # Skipping changes nothing in the image.
-        kept = vtkImageDataCopy(image)
+        kept = copy_image(image)
         m.SkipInvisibleCellsOff()
         self.assertLess(rmse(scene.render(), kept)[1], 1e-6)
         self.assertEqual(m.GetNumberOfDrawnTetrahedra(), drawn_all)
@@ -412,61 +216,10 @@ class IsovalueNormalisationTests(SceneTestCase):
         for i in range(scalars.GetNumberOfTuples()):
             scalars.SetValue(i, 2.0 * scalars.GetValue(i))
         scalars.Modified()
-        changed = vtkImageDataCopy(scene.render())
+        changed = copy_image(scene.render())
         fresh = Scene(mesh, prop, camera, 64)
         fresh.mapper.AddIsosurface(low + 0.5 * (high - low), 1.0, 1.0, 1.0, 1.0)
         self.assertLess(rmse(changed, fresh.render())[1], 1e-6)
-
-
-def vtkImageDataCopy(image):
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    copy = vtkImageData()
-    copy.DeepCopy(image)
-    return copy
-
-
-class TetrahedralInputChecks:
-    """Bad input every tetrahedral mapper reports the same way; a mixin for each mapper's InputTests,
-    whose scene(mesh, prop=None) builds a small scene with that mapper."""
-
-    def test_missing_and_cell_scalars_are_errors(self):
-        mesh = analytic(3)
-        no_scalars = vtkUnstructuredGrid()
-        no_scalars.CopyStructure(mesh)
-        scene = self.scene(no_scalars)
-        scene.render()
-        self.assertEqual(scene.events.errors, 1)
-        cells = vtkUnstructuredGrid()
-        cells.CopyStructure(mesh)
-        values = vtkDoubleArray()
-        values.SetNumberOfTuples(mesh.GetNumberOfCells())
-        values.Fill(0.5)
-        cells.GetCellData().SetScalars(values)
-        scene = self.scene(cells)
-        scene.mapper.SetScalarModeToUseCellData()
-        scene.render()
-        self.assertEqual(scene.events.errors, 1)
-
-    def test_empty_grid_draws_nothing_quietly(self):
-        scene = self.scene(vtkUnstructuredGrid())
-        scene.render()
-        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
-
-    def test_quadratic_cells_are_an_error(self):
-        grid = vtkUnstructuredGrid()
-        points = vtkPoints()
-        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (.5, 0, 0), (.5, .5, 0), (0, .5, 0), (0, 0, .5),
-                  (.5, 0, .5), (0, .5, .5)):
-            points.InsertNextPoint(*p)
-        grid.SetPoints(points)
-        grid.InsertNextCell(VTK_QUADRATIC_TETRA, 10, list(range(10)))
-        values = vtkDoubleArray()
-        values.SetNumberOfTuples(10)
-        values.Fill(0.5)
-        grid.GetPointData().SetScalars(values)
-        scene = self.scene(grid)
-        scene.render()
-        self.assertGreaterEqual(scene.events.errors, 1)
 
 
 class InputTests(TetrahedralInputChecks, SceneTestCase):
@@ -480,7 +233,7 @@ class InputTests(TetrahedralInputChecks, SceneTestCase):
         mesh = analytic(3)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         prop.ShadeOn()
-        single = vtkImageDataCopy(self.scene(mesh, prop).render())
+        single = copy_image(self.scene(mesh, prop).render())
         scalars = mesh.GetPointData().GetScalars()
         pair = scalars.NewInstance()  # the same precision as the single-component render
         pair.SetName("pair")

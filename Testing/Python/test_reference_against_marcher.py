@@ -17,8 +17,8 @@ import zlib
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
-from test_hexahedral_ray_cast import HexScene  # noqa: E402
-from test_preintegrated_tetrahedra import Scene, SceneTestCase, camera_for, reference  # noqa: E402
+from fixtures import (HexScene, Scene, SceneTestCase, analytic, analytic_hexahedra, camera_for,  # noqa: E402
+                      load_shared, reference)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
                                 vtkHexahedraToTetrahedra, vtkLocatorRayMarcher)
@@ -73,20 +73,10 @@ def compare(mesh, scalar, steps=STEPS):
     return largest(truth, fine), largest(fine, coarse) / 3.0, wrong / max(len(covered), 1), len(covered)
 
 
-def generated(distortion, resolution=6, cells=vtkAnalyticMeshSource.HEXAHEDRA):
-    source = vtkAnalyticMeshSource()
-    source.SetResolution(resolution, resolution, resolution)
-    source.SetField(vtkAnalyticMeshSource.MARSCHNER_LOBB)
-    source.SetDistortion(distortion)
-    source.SetCellKind(cells)
-    source.Update()
-    return source.GetOutput()
-
-
 def collapsed_layers():
     """A hexahedral grid whose every other layer of cells is 1e-6 thin: nearly flat cells."""
     mesh = vtkUnstructuredGrid()
-    mesh.DeepCopy(generated(vtkAnalyticMeshSource.TWIST))
+    mesh.DeepCopy(analytic_hexahedra(6, distortion=vtkAnalyticMeshSource.TWIST))
     points = mesh.GetPoints()
     for i in range(points.GetNumberOfPoints()):
         x, y, z = points.GetPoint(i)
@@ -100,7 +90,7 @@ def collapsed_layers():
 def slivers():
     """A jittered tetrahedral grid squashed to a hundredth in z: nearly flat tetrahedra."""
     mesh = vtkUnstructuredGrid()
-    mesh.DeepCopy(generated(vtkAnalyticMeshSource.JITTER, 5, vtkAnalyticMeshSource.SIX_TETRAHEDRA))
+    mesh.DeepCopy(analytic(5, distortion=vtkAnalyticMeshSource.JITTER))
     points = mesh.GetPoints()
     for i in range(points.GetNumberOfPoints()):
         x, y, z = points.GetPoint(i)
@@ -111,10 +101,9 @@ def slivers():
 
 # Name, mesh, marcher steps (the thin layers need finer steps for the marcher's own error).
 GENERATED = [
-    ("twisted_hexahedra", lambda: generated(vtkAnalyticMeshSource.TWIST), STEPS),
-    ("jittered_hexahedra", lambda: generated(vtkAnalyticMeshSource.JITTER), STEPS),
-    ("rotated_tetrahedra", lambda: generated(vtkAnalyticMeshSource.ROTATE_45, 6, vtkAnalyticMeshSource.SIX_TETRAHEDRA),
-     STEPS),
+    ("twisted_hexahedra", lambda: analytic_hexahedra(6, distortion=vtkAnalyticMeshSource.TWIST), STEPS),
+    ("jittered_hexahedra", lambda: analytic_hexahedra(6, distortion=vtkAnalyticMeshSource.JITTER), STEPS),
+    ("rotated_tetrahedra", lambda: analytic(6, distortion=vtkAnalyticMeshSource.ROTATE_45), STEPS),
     ("collapsed_layers", collapsed_layers, 4 * STEPS),
     ("slivers", slivers, STEPS),
 ]
@@ -130,17 +119,9 @@ class ReferenceAgainstMarcher(unittest.TestCase):
         self.assertLess(difference, BOUND)
 
 
-def load(test, loader):
-    """A shared mesh, or the test skipped when ../shared/data lacks it."""
-    try:
-        return loader()
-    except FileNotFoundError as missing:
-        test.skipTest(f"{missing} is absent")
-
-
 for _name, _loader, _scalar in shared_data.REFERENCE_MESHES:
     setattr(ReferenceAgainstMarcher, f"test_{_name.replace('-', '_')}",
-            (lambda loader, scalar: lambda self: self.check(load(self, loader), scalar))(_loader, _scalar))
+            (lambda loader, scalar: lambda self: self.check(load_shared(self, loader), scalar))(_loader, _scalar))
 for _name, _make, _steps in GENERATED:
     setattr(ReferenceAgainstMarcher, f"test_{_name}",
             (lambda make, steps: lambda self: self.check(make(), "MarschnerLobb", steps))(_make, _steps))
@@ -219,7 +200,7 @@ class MappersAgainstMarcher(SceneTestCase):
 
 for _name, _loader, _scalar in shared_data.REFERENCE_MESHES:
     setattr(MappersAgainstMarcher, f"test_{_name.replace('-', '_')}",
-            (lambda name, loader, scalar: lambda self: self.check(name, load(self, loader), scalar))(
+            (lambda name, loader, scalar: lambda self: self.check(name, load_shared(self, loader), scalar))(
                 _name, _loader, _scalar))
 
 

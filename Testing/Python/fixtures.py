@@ -1,0 +1,386 @@
+"""Fixtures shared by the Python tests: generated meshes, transfer functions, cameras, the scene that
+puts one mapper in an off-screen window, the reference and the error measures, baseline comparison
+and checks every tetrahedral mapper shares.
+
+Test modules import from here, from uvrender (the rendering helpers the main job also uses) and from
+shared_data (the real meshes), never from one another: each test module is one ctest test, and one
+that borrows another's helpers or subclasses its test classes breaks when that module changes."""
+import math
+import os
+import tempfile
+import unittest
+
+import shared_data
+import uvrender
+
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
+                                vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import (VTK_QUADRATIC_TETRA, vtkImageData, vtkPiecewiseFunction,
+                                           vtkUnstructuredGrid)
+from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
+                                         vtkVolumeProperty)
+
+IMAGE_THRESHOLD = 10.0  # vtkImageDifference's thresholded error against a baseline (VTK's tests use 10)
+OUTPUT = os.environ.get("UV_TEST_OUTPUT", tempfile.gettempdir())
+ML, STEINER = vtkAnalyticMeshSource.MARSCHNER_LOBB, vtkAnalyticMeshSource.STEINER
+
+
+class Events:
+    """Counts a VTK object's error and warning events instead of printing them."""
+
+    def __init__(self, obj):
+        self.errors = self.warnings = 0
+        obj.AddObserver(vtkCommand.ErrorEvent, self.on_error)
+        obj.AddObserver(vtkCommand.WarningEvent, self.on_warning)
+
+    def on_error(self, caller, event):
+        self.errors += 1
+
+    def on_warning(self, caller, event):
+        self.warnings += 1
+
+
+# ---------------------------------------------------------------------------------------------
+# Meshes
+def analytic(resolution, field=ML, distortion=0, cells=vtkAnalyticMeshSource.SIX_TETRAHEDRA):
+    """vtkAnalyticMeshSource's [-1, 1]^3 at resolution^3 cells (six tetrahedra each by default)."""
+    source = vtkAnalyticMeshSource()
+    source.SetResolution(resolution, resolution, resolution)
+    source.SetField(field)
+    source.SetDistortion(distortion)
+    source.SetCellKind(cells)
+    source.Update()
+    return source.GetOutput()
+
+
+def analytic_hexahedra(resolution, field=ML, distortion=0):
+    return analytic(resolution, field, distortion, vtkAnalyticMeshSource.HEXAHEDRA)
+
+
+def load_shared(test, loader):
+    """A mesh of ../shared/data from a shared_data loader, or the test skipped when it is absent."""
+    try:
+        return loader()
+    except FileNotFoundError as missing:
+        test.skipTest(f"{missing} is absent")
+
+
+# ---------------------------------------------------------------------------------------------
+# Transfer functions
+def spike_property(low, high, unit):
+    """One thin opaque spike at 60% of the range, over a faint ramp."""
+    opacity = vtkPiecewiseFunction()
+    centre, width = low + 0.6 * (high - low), 0.02 * (high - low)
+    for s, a in ((low, 0.0), (centre - width, 0.02), (centre, 0.95), (centre + width, 0.02), (high, 0.05)):
+        opacity.AddPoint(s, a)
+    colors = vtkColorTransferFunction()
+    colors.AddRGBPoint(low, 0.1, 0.3, 0.9)
+    colors.AddRGBPoint(centre, 1.0, 0.7, 0.1)
+    colors.AddRGBPoint(high, 0.9, 0.1, 0.1)
+    prop = vtkVolumeProperty()
+    prop.SetColor(colors)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(unit)
+    return prop
+
+
+def transparent_property(color=(0.9, 0.6, 0.2)):
+    """A volume that shows nothing (isosurfaces only), unlit but for what a test sets."""
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(-1e9, 0.0)
+    opacity.AddPoint(1e9, 0.0)
+    colors = vtkColorTransferFunction()
+    colors.AddRGBPoint(-1e9, *color)
+    colors.AddRGBPoint(1e9, *color)
+    prop = vtkVolumeProperty()
+    prop.SetColor(colors)
+    prop.SetScalarOpacity(opacity)
+    prop.SetAmbient(1.0)
+    prop.SetDiffuse(0.0)
+    prop.SetSpecular(0.0)
+    return prop
+
+
+def thin_shell_property(low, high, value, color, length):
+    """An unlit, very opaque shell of the transfer function 1e-4 of the range wide around `value`: what
+    an opaque isosurface is the limit of, for the reference to render."""
+    shell = transparent_property(color)
+    opacity = shell.GetScalarOpacity()
+    opacity.RemoveAllPoints()
+    width = 1e-4 * (high - low)
+    for s, a in ((low, 0.0), (value - width, 0.0), (value - 0.5 * width, 0.999), (value + 0.5 * width, 0.999),
+                 (value + width, 0.0), (high, 0.0)):
+        opacity.AddPoint(s, a)
+    shell.SetScalarOpacityUnitDistance(1e-7 * length)
+    return shell
+
+
+PLANE_GRADIENT = (0.3, -0.5, 0.8)
+
+
+def plane_scene_setup(mesh, camera, color):
+    """Sets the linear field PLANE_GRADIENT . x as the mesh's scalar; returns a transparent lit property
+    and the analytic Phong colour of its isosurface (a plane, one normal) under the renderer's
+    headlight and `camera`'s parallel view."""
+    values = vtkDoubleArray()
+    values.SetName("plane")
+    for i in range(mesh.GetNumberOfPoints()):
+        values.InsertNextValue(sum(g * x for g, x in zip(PLANE_GRADIENT, mesh.GetPoint(i))))
+    mesh.GetPointData().SetScalars(values)
+    prop = transparent_property()
+    prop.SetAmbient(0.15)
+    prop.SetDiffuse(0.7)
+    prop.SetSpecular(0.3)
+    prop.SetSpecularPower(8)
+    # Headlight and parallel view: the light and the eye are both along the view direction.
+    view = camera.GetDirectionOfProjection()
+    norm = math.sqrt(sum(g * g for g in PLANE_GRADIENT))
+    lambert = abs(sum(g * v for g, v in zip(PLANE_GRADIENT, view))) / norm
+    highlight = max(2 * lambert * lambert - 1, 0.0) ** 8
+    return prop, [c * (0.15 + 0.7 * lambert) + 0.3 * highlight for c in color]
+
+
+# ---------------------------------------------------------------------------------------------
+# Cameras and scenes
+def camera_for(mesh, azimuth=30.0, elevation=25.0, parallel=False, distance=2.6):
+    """A camera `distance` diagonals from the mesh's centre, turned by azimuth and elevation."""
+    bounds = mesh.GetBounds()
+    centre = [(bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3)]
+    camera = vtkCamera()
+    camera.SetFocalPoint(*centre)
+    camera.SetPosition(centre[0], centre[1] - distance * mesh.GetLength(), centre[2])
+    camera.SetViewUp(0, 0, 1)
+    camera.Azimuth(azimuth)
+    camera.Elevation(elevation)
+    camera.OrthogonalizeViewUp()
+    camera.SetParallelProjection(parallel)
+    camera.SetParallelScale(0.6 * mesh.GetLength())
+    camera.SetViewAngle(30)
+    camera.SetClippingRange(0.01, 10 * (distance + 1) * mesh.GetLength())
+    return camera
+
+
+def inside_camera():
+    """A wide perspective camera inside [-1, 1]^3, looking across it."""
+    camera = vtkCamera()
+    camera.SetPosition(0.05, -0.3, 0.1)
+    camera.SetFocalPoint(0.2, 1.0, 0.0)
+    camera.SetViewUp(0, 0, 1)
+    camera.SetViewAngle(60)
+    camera.SetClippingRange(0.01, 10)
+    return camera
+
+
+OPEN_SCENES = []
+SHARED_WINDOW = []
+
+
+def shared_window():
+    """One off-screen window for every scene of a test process: creating one per scene aborted inside
+    vtkXOpenGLRenderWindow::CreateAWindow now and then under Xvfb."""
+    if not SHARED_WINDOW:
+        window = vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetAlphaBitPlanes(1)
+        window.SetMultiSamples(0)
+        SHARED_WINDOW.append(window)
+    return SHARED_WINDOW[0]
+
+
+class SceneTestCase(unittest.TestCase):
+    """Frees the GPU resources of the scenes a test made and takes their renderers out."""
+
+    def tearDown(self):
+        while OPEN_SCENES:
+            scene = OPEN_SCENES.pop()
+            scene.mapper.ReleaseGraphicsResources(scene.window)
+            scene.window.RemoveRenderer(scene.renderer)
+
+
+class Scene:
+    """One mapper in the shared off-screen window with a transparent black background: `mapper` as
+    given, else a new `mapper_class`, else a vtkPreIntegratedTetrahedraMapper. Each keyword setting
+    calls the mapper's Set<name>(value)."""
+
+    def __init__(self, mesh, prop, camera, size=128, props=(), mapper_class=None, mapper=None, **settings):
+        OPEN_SCENES.append(self)
+        self.size = size
+        self.renderer = vtkRenderer()
+        self.renderer.SetBackground(0, 0, 0)
+        self.renderer.SetBackgroundAlpha(0.0)
+        self.window = shared_window()
+        for other in OPEN_SCENES[:-1]:
+            self.window.RemoveRenderer(other.renderer)  # one scene shows at a time
+        self.window.SetSize(size, size)
+        self.window.AddRenderer(self.renderer)
+        self.mapper = mapper or (mapper_class or vtkPreIntegratedTetrahedraMapper)()
+        self.mapper.SetInputData(mesh)
+        self.mapper.SetKeepFloatImage(True)
+        for name, value in settings.items():
+            getattr(self.mapper, "Set" + name)(value)
+        self.events = Events(self.mapper)
+        self.volume = vtkVolume()
+        self.volume.SetMapper(self.mapper)
+        self.volume.SetProperty(prop)
+        self.renderer.AddVolume(self.volume)
+        for p in props:
+            self.renderer.AddActor(p)
+        self.renderer.SetActiveCamera(camera)
+        self.window_events = Events(self.window)
+
+    def render(self):
+        """Renders this scene alone in the window; returns the mapper's float image."""
+        renderers = self.window.GetRenderers()
+        if not renderers.IsItemPresent(self.renderer):
+            renderers.RemoveAllItems()
+            self.window.AddRenderer(self.renderer)
+        self.window.SetSize(self.size, self.size)
+        self.window.Render()
+        return self.mapper.GetFloatImage()
+
+
+def HexScene(mesh, prop, camera, size=128, mapper=None, **settings):  # noqa: N802  (reads as a class)
+    """A Scene whose mapper is a vtkHexahedralRayCastMapper unless `mapper` is given."""
+    return Scene(mesh, prop, camera, size, mapper=mapper or vtkHexahedralRayCastMapper(), **settings)
+
+
+# ---------------------------------------------------------------------------------------------
+# The reference and error measures
+def reference(mesh, prop, camera, size):
+    """vtkUnstructuredVolumeReferenceRenderer's float image of the mesh at size x size."""
+    renderer = vtkUnstructuredVolumeReferenceRenderer()
+    renderer.SetInputData(mesh)
+    renderer.SetVolumeProperty(prop)
+    renderer.SetCamera(camera)
+    renderer.SetImageSize(size, size)
+    assert renderer.Render()
+    return renderer.GetOutput()
+
+
+def rmse(candidate, expected):
+    """(RMSE, maximum error) over premultiplied RGBA."""
+    metrics = vtkVolumeImageErrorMetrics()
+    metrics.SetChannels(4)
+    assert metrics.Compare(candidate, expected)
+    return metrics.GetRMSE(), metrics.GetMaximumError()
+
+
+def finite_image(image):
+    """Whether every RGBA value is finite and within [0, 1] (up to rounding)."""
+    scalars = image.GetPointData().GetScalars()
+    for c in range(4):
+        low, high = scalars.GetRange(c)
+        if not (math.isfinite(low) and math.isfinite(high)) or low < -1e-6 or high > 1.0 + 1e-4:
+            return False
+    return True
+
+
+def covered_colour_error(image, expected):
+    """The pixels of a float image opaque to 0.999, and their largest colour difference from `expected`."""
+    rgba = image.GetPointData().GetScalars()
+    covered, worst = 0, 0.0
+    for i in range(rgba.GetNumberOfTuples()):
+        pixel = rgba.GetTuple4(i)
+        if pixel[3] > 0.999:
+            covered += 1
+            worst = max(worst, max(abs(pixel[k] - expected[k]) for k in range(3)))
+    return covered, worst
+
+
+def copy_image(image):
+    """A deep copy: a mapper's float image is overwritten by its next frame."""
+    copy = vtkImageData()
+    copy.DeepCopy(image)
+    return copy
+
+
+# ---------------------------------------------------------------------------------------------
+# Shared test bases
+def assert_matches_baseline(test, candidate, name):
+    """Fails `test` unless the PNG `candidate` is within IMAGE_THRESHOLD of the baseline `name`;
+    returns the difference."""
+    baseline = os.path.join(uvrender.BASELINES, name)
+    test.assertTrue(os.path.exists(baseline), f"no baseline: look at {candidate}, then copy it to {baseline}")
+    error = uvrender.image_difference(candidate, baseline)
+    test.assertLessEqual(error, IMAGE_THRESHOLD, f"{candidate} differs from {baseline}: {error}")
+    return error
+
+
+class BaselineTestCase(SceneTestCase):
+    """Image baselines: a window's PNG against Testing/Data/Baseline (no tests of its own)."""
+
+    def compare(self, window, name):
+        candidate = os.path.join(OUTPUT, name)
+        uvrender.write_png(window, candidate)
+        return assert_matches_baseline(self, candidate, name)
+
+    def scene(self, mesh, prop, camera, size=256, props=(), **settings):
+        """A rendered Scene over the baselines' dark opaque background, drawn into the window."""
+        scene = Scene(mesh, prop, camera, size, props, **settings)
+        scene.renderer.SetBackground(0.1, 0.1, 0.12)
+        scene.renderer.SetBackgroundAlpha(1.0)
+        scene.mapper.SetKeepFloatImage(False)
+        scene.render()
+        self.assertEqual(scene.events.errors, 0)
+        return scene
+
+    def legacy(self, relative, array):
+        """A legacy unstructured grid of ../shared/data (the test skipped when absent), `array` active."""
+        path = os.path.join(shared_data.SHARED, relative)
+        if not os.path.exists(path):
+            self.skipTest(f"{path} is absent")
+        reader = vtkUnstructuredGridReader()
+        reader.ReadAllScalarsOn()
+        reader.SetFileName(path)
+        reader.Update()
+        mesh = reader.GetOutput()
+        if array:
+            mesh.GetPointData().SetActiveScalars(array)
+        return mesh
+
+
+class TetrahedralInputChecks:
+    """Bad input every tetrahedral mapper reports the same way; a mixin for each mapper's InputTests,
+    whose scene(mesh, prop=None) builds a small scene with that mapper. Not a TestCase, so it runs
+    only in the classes that mix it in."""
+
+    def test_missing_and_cell_scalars_are_errors(self):
+        mesh = analytic(3)
+        no_scalars = vtkUnstructuredGrid()
+        no_scalars.CopyStructure(mesh)
+        scene = self.scene(no_scalars)
+        scene.render()
+        self.assertEqual(scene.events.errors, 1)
+        cells = vtkUnstructuredGrid()
+        cells.CopyStructure(mesh)
+        values = vtkDoubleArray()
+        values.SetNumberOfTuples(mesh.GetNumberOfCells())
+        values.Fill(0.5)
+        cells.GetCellData().SetScalars(values)
+        scene = self.scene(cells)
+        scene.mapper.SetScalarModeToUseCellData()
+        scene.render()
+        self.assertEqual(scene.events.errors, 1)
+
+    def test_empty_grid_draws_nothing_quietly(self):
+        scene = self.scene(vtkUnstructuredGrid())
+        scene.render()
+        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+
+    def test_quadratic_cells_are_an_error(self):
+        grid = vtkUnstructuredGrid()
+        points = vtkPoints()
+        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (.5, 0, 0), (.5, .5, 0), (0, .5, 0), (0, 0, .5),
+                  (.5, 0, .5), (0, .5, .5)):
+            points.InsertNextPoint(*p)
+        grid.SetPoints(points)
+        grid.InsertNextCell(VTK_QUADRATIC_TETRA, 10, list(range(10)))
+        values = vtkDoubleArray()
+        values.SetNumberOfTuples(10)
+        values.Fill(0.5)
+        grid.GetPointData().SetScalars(values)
+        scene = self.scene(grid)
+        scene.render()
+        self.assertGreaterEqual(scene.events.errors, 1)
