@@ -14,7 +14,9 @@
  * tetrahedron 5 vertex slots, outline and thick vertex, under a fixed index buffer of 4 triangles;
  * GEOMETRY_SHADER feeds one point per tetrahedron to a geometry shader); the fragment shader
  * integrates the ray segment and the result is composited back to front into a float image that is
- * blended into VTK's scene, clipped at the depth of opaque geometry.
+ * blended into VTK's scene, clipped at the depth of opaque geometry. Rays begin on the near clipping
+ * plane: a tetrahedron crossing it is not projected but ray-cast over its own screen rectangle from
+ * the plane on (so a camera inside the mesh sees it correctly), and one wholly before it is not drawn.
  *
  * Integration modes:
  * - PARTIAL_PRE_INTEGRATION (default): the segment is cut where its scalar crosses a transfer-

@@ -10,11 +10,19 @@
  * integrated by adaptive Gauss-Legendre quadrature to an absolute error below Tolerance. Shared faces
  * are intersected with the same arithmetic from both sides, so there are no cracks.
  *
+ * Overlapping or tangled cells superpose (each cell holding a point adds its own extinction and
+ * emission there; the README's optical model). Mesh and camera are recentred on the mesh's bounds in
+ * double before anything else, so a mesh far from the origin renders as it does at the origin, and
+ * the inverse isoparametric map converges relative to a cell's size (uvRayCellGeometry.h).
+ * vtkLocatorRayMarcher, built on VTK's own locator and cell functions, checks all of this
+ * independently on the project's real meshes (Testing/Python/test_reference_against_marcher.py).
+ *
  * Rays start on the camera's near clipping plane (perspective and parallel projections). The output
  * is a float RGBA vtkImageData (array "RGBA", premultiplied, over a transparent background), row 0
  * at the bottom like VTK's windows. Multithreaded over pixels with vtkSMPTools.
  *
- * Other 3D cells (quadratic, polyhedra) are an error; 2D and 1D cells are ignored with a warning. Cells touching a non-finite scalar are left out (transparent) with a warning.
+ * Other 3D cells (quadratic, polyhedra) are an error; 2D and 1D cells are ignored with a warning.
+ * Cells touching a non-finite scalar are left out (transparent) with a warning.
  */
 #ifndef vtkUnstructuredVolumeReferenceRenderer_h
 #define vtkUnstructuredVolumeReferenceRenderer_h
