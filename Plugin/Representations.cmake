@@ -25,13 +25,15 @@ uv_representation_entry(
   PROXY BarycentricShellRepresentation
   MENU "Volume (Barycentric Shells)"
   GROUP "Barycentric Shells"
-  PROPERTIES ShellRenderMode ShellSampleDistance AutomaticSamplesAcross ShellIsovalues ShellIsosurfaceOpacity
-    ShellSkipInvisibleCells SlicesPerShell ShellOpacityThreshold ShellIsosurfaceLayers SegmentIntegration
-    ShellProjectionRoute ShellGradientMode)
+  PROPERTIES RenderMode SampleDistance AutomaticSamplesAcross Isovalues IsosurfaceOpacity SkipInvisibleCells
+    SlicesPerShell OpacityThreshold IsosurfaceLayers SegmentIntegration ProjectionRoute GradientMode
+  # The shells stop at 0.999, the hexahedral rays at 0.99: one shared value would change one default.
+  UNSHARED OpacityThreshold ShellOpacityThreshold)
 
 uv_representation_entry(
   PROXY HexahedralRayCastRepresentation
   MENU "Volume (Hexahedral Ray Cast)"
   GROUP "Hexahedral Ray Cast"
-  PROPERTIES HexahedralIntegrationMode FixedSteps HexahedralIsovalues HexahedralIsosurfaceOpacity OpacityThreshold
-    MaximumPeels ExactSegmentEnds)
+  PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity OpacityThreshold MaximumPeels ExactSegmentEnds
+  # Accurate / Fast / Fixed steps, not the tetrahedra's average scalar / partial pre-integration.
+  UNSHARED IntegrationMode HexahedralIntegrationMode)
