@@ -8,8 +8,9 @@
  * Array" draws a warning: the mappers integrate one scalar. Isosurfaces are kept here (values,
  * coloured by the colour map, one opacity) and handed to the mapper before each render.
  *
- * Adding a mapper to the plugin: a subclass that pins it and forwards its settings, and its proxy
- * in Plugin/UnstructuredVolumeRepresentations.xml (the menu entries are generated from there).
+ * Adding a mapper to the plugin: a subclass that pins it and forwards its settings, its proxy in
+ * Plugin/UnstructuredVolumeRepresentations.xml and its row in Plugin/Representations.cmake (the menu
+ * entries are generated from that table).
  */
 #ifndef vtkUnstructuredVolumeRepresentation_h
 #define vtkUnstructuredVolumeRepresentation_h

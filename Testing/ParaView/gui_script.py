@@ -18,8 +18,8 @@ lut.ApplyPreset("Cool to Warm", True)
 opacity = GetOpacityTransferFunction("MarschnerLobb")  # noqa: F405
 opacity.Points = [0.0, 0.0, 0.5, 0.0, 0.3, 0.05, 0.5, 0.0, 1.0, 0.6, 0.5, 0.0]
 display.ScalarOpacityUnitDistance = 0.4
-display.HexahedralIsovalues = [0.7]
-display.HexahedralIsosurfaceOpacity = 0.8
+display.Isovalues = [0.7]
+display.IsosurfaceOpacity = 0.8
 display.SetScalarBarVisibility(GetActiveView(), True)  # noqa: F405
 view = GetActiveView()  # noqa: F405
 view.OrientationAxesVisibility = 1

@@ -27,10 +27,10 @@ ENTRY, SETTINGS = {
     "preintegrated": ("Volume (Pre-integrated Tetrahedra)",
                       {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8, "IntegrationMode": "Partial pre-integration"}),
     "hexahedral": ("Volume (Hexahedral Ray Cast)",
-                   {"HexahedralIsovalues": [200.0], "HexahedralIsosurfaceOpacity": 0.8,
+                   {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8,
                     "HexahedralIntegrationMode": "Accurate", "OpacityThreshold": 0.99}),
     "barycentric": ("Volume (Barycentric Shells)",
-                    {"ShellIsovalues": [200.0], "ShellIsosurfaceOpacity": 0.8, "ShellRenderMode": "Shells",
+                    {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8, "RenderMode": "Shells",
                      "AutomaticSamplesAcross": 256, "ShellOpacityThreshold": 0.99}),
 }[mapper]
 server = os.environ.get("UV_SERVER")
