@@ -18,7 +18,7 @@ endforeach ()
 # share and the OpenGL layer under vtkUnstructuredVolumeMapper (vtkUnstructuredVolume*.h).
 set(uv_rendering_private_headers)
 foreach (header IN ITEMS
-    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedronRay uvImageErrorMetrics
+    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedronRay uvImageErrorMetrics uvShellBuckets
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
     uvVisibilitySort
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
