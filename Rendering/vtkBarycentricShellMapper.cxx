@@ -155,7 +155,8 @@ public:
   std::vector<float> Low, High;                     // eye-distance range per volume cell
   std::vector<std::uint32_t> ShellOffsets, ShellCells; // volume cells per shell, concatenated
   std::vector<unsigned char> ShellHasIsosurface;
-  std::string SegmentTableKey; // the nodes and length the uploaded table is for
+  std::vector<uv::TransferFunction::Node> SegmentTableNodes; // what the uploaded table is for
+  double SegmentTableLength = 0.0;
   std::string AutomaticDistanceKey;
   double AutomaticDistance = 0.0;
   int SegmentTableBuilds = 0;
@@ -225,7 +226,8 @@ public:
     this->MeshOnGpu = this->PointsOnGpu = this->GradientsOnGpu = this->TransferFunctionOnGpu = false;
     this->IsosurfaceCellsOnGpu = this->FaceIndicesOnGpu = false;
     this->UploadedIsosurfaceTime = 0;
-    this->SegmentTableKey.clear();
+    this->SegmentTableNodes.clear();
+    this->SegmentTableLength = 0.0;
     this->OrderUploaded = false;
     this->TextureKey.clear();
     this->TextureCoordinatesKey.clear();
@@ -876,11 +878,10 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
         uv::NarrowestNodeGap(impl.Nodes) * (SegmentTableSize - 1) >= TableTexelsPerNodeGap));
   if (segmentTable)
   {
-    std::string key = std::to_string(sampleDistance) + "|";
-    for (const auto& node : impl.Nodes)
-      key += std::to_string(node.Scalar) + "," + std::to_string(node.Extinction) + "," +
-        std::to_string(node.Color.r) + "," + std::to_string(node.Color.g) + "," + std::to_string(node.Color.b) + ";";
-    if (key != impl.SegmentTableKey)
+    // Exact comparisons: a key printed with six decimals read 0.000000 for every sample distance of a
+    // mesh micrometres across, and the table was never rebuilt for a new distance.
+    if (!impl.SegmentTableTexture->GetHandle() || sampleDistance != impl.SegmentTableLength ||
+      impl.Nodes != impl.SegmentTableNodes)
     {
       const uv::TransferFunction tf(impl.Nodes);
       std::vector<float> texels = uv::SegmentTable(tf, sampleDistance, SegmentTableSize,
@@ -896,7 +897,8 @@ void vtkBarycentricShellMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       impl.SegmentTableTexture->SetWrapS(vtkTextureObject::ClampToEdge);
       impl.SegmentTableTexture->SetWrapT(vtkTextureObject::ClampToEdge);
       impl.SegmentTableTexture->Create2DFromRaw(SegmentTableSize, SegmentTableSize, 4, VTK_FLOAT, texels.data());
-      impl.SegmentTableKey = key;
+      impl.SegmentTableLength = sampleDistance;
+      impl.SegmentTableNodes = impl.Nodes;
       ++impl.SegmentTableBuilds;
     }
   }
