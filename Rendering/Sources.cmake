@@ -15,12 +15,16 @@ foreach (class IN LISTS uv_rendering_classes)
   list(APPEND uv_rendering_headers "${CMAKE_CURRENT_LIST_DIR}/${class}.h")
 endforeach ()
 # Not wrapped: VTK-free math (uv*.h, unit-tested on its own), the VTK-reading helpers the mappers
-# share and the OpenGL layer under vtkUnstructuredVolumeMapper (vtkUnstructuredVolume*.h).
+# share, the OpenGL layer under vtkUnstructuredVolumeMapper (vtkUnstructuredVolume*.h) and the
+# barycentric shell mapper's passes (vtkBarycentricShell*.h).
 set(uv_rendering_private_headers)
 foreach (header IN ITEMS
     uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedronRay uvImageErrorMetrics uvShellBuckets
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
     uvVisibilitySort
+    vtkBarycentricShellBlendPass vtkBarycentricShellCellDrawer vtkBarycentricShellCellProjectionPass
+    vtkBarycentricShellImageTexture vtkBarycentricShellIsosurfacePeelPass vtkBarycentricShellMaskPass
+    vtkBarycentricShellOpaqueDistancePass vtkBarycentricShellPrograms vtkBarycentricShellSlicePass
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
     vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL vtkUnstructuredVolumeTetrahedralMesh
     vtkUnstructuredVolumeTexture vtkUnstructuredVolumeTransferFunction

@@ -187,7 +187,8 @@ public:
 
   /// `cellBox(id)` is cell id's ScreenBox (TetrahedronScreenBox).
   template <typename CellBox>
-  void Update(const ShellLayout& layout, const RangedCells& volume, const RangedCells& isosurface, const CellBox& cellBox)
+  void Update(
+    const ShellLayout& layout, const RangedCells& volume, const RangedCells& isosurface, const CellBox& cellBox)
   {
     const int count = layout.Count;
     const float slack = layout.Slack();
