@@ -15,13 +15,17 @@ foreach (class IN LISTS uv_rendering_classes)
   list(APPEND uv_rendering_headers "${CMAKE_CURRENT_LIST_DIR}/${class}.h")
 endforeach ()
 # Not wrapped: VTK-free math (uv*.h, unit-tested on its own), the VTK-reading helpers the mappers
-# share and the OpenGL layer under vtkUnstructuredVolumeMapper (vtkUnstructuredVolume*.h).
+# share, the OpenGL layer under vtkUnstructuredVolumeMapper (vtkUnstructuredVolume*.h) and each
+# mapper's passes and program catalogue (vtkBarycentricShell*.h, vtkPreIntegratedTetrahedraPrograms.h).
 set(uv_rendering_private_headers)
 foreach (header IN ITEMS
-    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedronRay uvImageErrorMetrics
+    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedronRay uvImageErrorMetrics uvShellBuckets
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
     uvVisibilitySort
     vtkPreIntegratedTetrahedraPrograms
+    vtkBarycentricShellBlendPass vtkBarycentricShellCellDrawer vtkBarycentricShellCellProjectionPass
+    vtkBarycentricShellImageTexture vtkBarycentricShellIsosurfacePeelPass vtkBarycentricShellMaskPass
+    vtkBarycentricShellOpaqueDistancePass vtkBarycentricShellPrograms vtkBarycentricShellSlicePass
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
     vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL vtkUnstructuredVolumeTetrahedralMesh
     vtkUnstructuredVolumeTexture vtkUnstructuredVolumeTransferFunction

@@ -5,31 +5,30 @@
  * After "A Generic and Scalable Pipeline for GPU Tetrahedral Grid Rendering" (Georgii and
  * Westermann). Nothing is computed per tetrahedron ahead of a frame: on the GPU each tetrahedron's
  * eye-to-barycentric transform is computed (only the eye's coordinates b_eye are needed) and its back
- * faces are rasterised with each vertex's coordinates and barycentric ray direction (by a geometry
- * shader fed one point per tetrahedron, or by vertex pulling: see ProjectionRoute); a fragment then
- * walks its ray inside the tetrahedron without leaving barycentric space
- * (uvBarycentricShell.h is the math, unit-tested). A mesh whose points move every frame
- * (vtkWarpVector, simulation output) therefore costs what a static one does: only the positions are
- * refreshed and uploaded.
+ * faces are rasterised with each vertex's coordinates and barycentric ray direction (by vertex
+ * pulling or by a geometry shader fed one point per tetrahedron: see ProjectionRoute); a fragment then
+ * walks its ray inside the tetrahedron without leaving barycentric space (uvBarycentricShell.h is the
+ * math, unit-tested). A mesh whose points move every frame (vtkWarpVector, simulation output)
+ * therefore costs what a static one does: only the positions are refreshed and uploaded.
  *
  * Render modes:
  * - SHELLS (default): the space in front of the eye is cut into spherical shells (planar slabs under
  *   parallel projection) of SlicesPerShell sample distances each, processed front to back. For each
- *   shell the tetrahedra overlapping it (bucketed on the CPU by their eye-distance range, every frame)
- *   sample the shell's slices into float render targets (four slices each) blended with MAX, a slice
- *   holding the scalar + 1 where it is inside the mesh and 0 outside; a full-screen pass then
- *   integrates each pixel's samples front to back (the scalar linear between samples, each segment
- *   pre-integrated exactly) and blends them under the image. Error falls with SampleDistance.
+ *   shell the tetrahedra overlapping it (bucketed on the CPU by their eye-distance range every frame,
+ *   uvShellBuckets.h) sample the shell's slices into float render targets (four slices each) blended
+ *   with MAX, a slice holding the scalar + 1 where it is inside the mesh and 0 outside; a full-screen
+ *   pass then integrates each pixel's samples front to back (the scalar linear between samples, each
+ *   segment pre-integrated) and blends them under the image. Error falls with SampleDistance.
  * - CELL_PROJECTION: every visible tetrahedron, sorted back to front, integrates its whole segment:
  *   entry and exit points found in barycentric coordinates from the back face, integrated exactly as
  *   vtkPreIntegratedTetrahedraMapper does (the same shader library). Needs the sort, not the shells.
  *
- * Isosurfaces (any number, colour and opacity each): in SHELLS mode, passes over the tetrahedra that
- * hold an isovalue find each pixel's crossings in closed form per tetrahedron, nearest first, one
- * per pass (depth peeling, up to IsosurfaceLayers, stopping when a pass finds none), Phong-lit with
- * the vertex gradients interpolated at the hit or the tetrahedron's own gradient (GradientMode); the
- * shells composite each at its exact distance. In CELL_PROJECTION every crossing is drawn. Volume shading (vtkVolumeProperty::Shade) applies to
- * CELL_PROJECTION only.
+ * Isosurfaces (vtkUnstructuredVolumeMapper::AddIsosurface): in SHELLS mode, passes over the
+ * tetrahedra that hold an isovalue find each pixel's crossings in closed form per tetrahedron,
+ * nearest first, one per pass (depth peeling, up to IsosurfaceLayers, stopping when a pass finds
+ * none), Phong-lit with the vertex gradients interpolated at the hit or the tetrahedron's own
+ * gradient (GradientMode); the shells composite each at its exact distance. In CELL_PROJECTION every
+ * crossing is drawn. Volume shading (vtkVolumeProperty::Shade) applies to CELL_PROJECTION only.
  *
  * Skipped work: tetrahedra the transfer function makes transparent (and holding no isovalue) are in
  * no shell; shells nothing overlaps are skipped; between shells, pixels whose opacity reached
@@ -37,22 +36,23 @@
  *
  * Input, errors and opaque geometry as vtkPreIntegratedTetrahedraMapper: tetrahedra with a point
  * scalar (first component); other linear cells split once with a warning; NaN tetrahedra left out.
+ * The frame's steps, the float image and the final blend are vtkUnstructuredVolumeMapper's.
  */
 #ifndef vtkBarycentricShellMapper_h
 #define vtkBarycentricShellMapper_h
 
-#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkUnstructuredVolumeMapper.h"
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
 
-class VTKUNSTRUCTUREDVOLUME_EXPORT vtkBarycentricShellMapper : public vtkUnstructuredGridVolumeMapper
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkBarycentricShellMapper : public vtkUnstructuredVolumeMapper
 {
 public:
   static vtkBarycentricShellMapper* New();
-  vtkTypeMacro(vtkBarycentricShellMapper, vtkUnstructuredGridVolumeMapper);
+  vtkTypeMacro(vtkBarycentricShellMapper, vtkUnstructuredVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum RenderModes
@@ -67,29 +67,11 @@ public:
   void SetRenderModeToCellProjection() { this->SetRenderMode(CELL_PROJECTION); }
   ///@}
 
-  enum ProjectionRoutes
-  {
-    VERTEX_PULLING = 0,
-    GEOMETRY_SHADER = 1
-  };
-  ///@{
-  /// How tetrahedra reach the fragment stages. VERTEX_PULLING (default): four vertices per
-  /// tetrahedron pulled from buffer textures under a fixed index pattern of its four faces, front
-  /// faces culled (each vertex computes its tetrahedron's transform). GEOMETRY_SHADER: one point per
-  /// tetrahedron, a geometry shader computing the transform once and emitting the back faces (the
-  /// paper's route). Same image; the benchmark compares their speed.
-  vtkSetClampMacro(ProjectionRoute, int, VERTEX_PULLING, GEOMETRY_SHADER);
-  vtkGetMacro(ProjectionRoute, int);
-  void SetProjectionRouteToVertexPulling() { this->SetProjectionRoute(VERTEX_PULLING); }
-  void SetProjectionRouteToGeometryShader() { this->SetProjectionRoute(GEOMETRY_SHADER); }
-  ///@}
-
   ///@{
   /// Distance between samples along a ray in SHELLS mode, in world units. 0 (default): automatic,
-  /// AutomaticSamplesAcross (default 128) samples across the mesh's bounding box diagonal. The
-  /// default is the knee of the benchmark's curve: on the 1.25 M-tetrahedra wavelet, 128 across has
-  /// an RMSE of 0.0027 at 1.5 s a frame, 256 across 0.0020 at 2.4 s (0.0018 is the floor early ray
-  /// termination sets at OpacityThreshold 0.99).
+  /// AutomaticSamplesAcross (default 128) samples across the mesh's bounding box diagonal, kept while
+  /// only the points move (a deforming mesh keeps its segment table). The default was chosen where the
+  /// benchmark's error-against-time curve bends (benchmark.py measures both).
   vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SampleDistance, double);
   vtkSetClampMacro(AutomaticSamplesAcross, int, 2, 100000);
@@ -99,9 +81,8 @@ public:
   ///@{
   /// Sample distances per shell (3 to 31, default 7): each shell writes SlicesPerShell + 1 slices
   /// (its last is the next shell's first) into (SlicesPerShell + 4) / 4 float render targets. More
-  /// means fewer passes and fewer tetrahedra drawn twice, but more targets blended per fragment (on
-  /// the 1.25 M-tetrahedra wavelet at 512 px, 7 was fastest: 1.08 s against 1.16 s for 3 and 11 and
-  /// 1.41 s for 15).
+  /// means fewer passes and fewer tetrahedra drawn twice, but more targets blended per fragment; the
+  /// default was the fastest in the benchmark.
   vtkSetClampMacro(SlicesPerShell, int, 3, 31);
   vtkGetMacro(SlicesPerShell, int);
   ///@}
@@ -126,9 +107,8 @@ public:
 
   ///@{
   /// Pixels stop being shaded once their opacity reaches this (default 0.999; 1 disables). The light
-  /// a stopped pixel leaves out is at most 1 - threshold: at 0.99 (the hexahedral mapper's default)
-  /// that was the largest error left on the benchmark's wavelet (0.0017 RMSE, twenty times the
-  /// sampling error at 512 samples across).
+  /// a stopped pixel leaves out is at most 1 - threshold; the default is above the hexahedral
+  /// mapper's 0.99, whose loss the benchmark found larger than the error of fine sampling.
   vtkSetClampMacro(OpacityThreshold, double, 0.0, 1.0);
   vtkGetMacro(OpacityThreshold, double);
   ///@}
@@ -138,13 +118,6 @@ public:
   /// default 4). Crossings beyond are left out (behind translucent surfaces only).
   vtkSetClampMacro(IsosurfaceLayers, int, 1, 8);
   vtkGetMacro(IsosurfaceLayers, int);
-  ///@}
-
-  ///@{
-  /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each.
-  void AddIsosurface(double value, double red, double green, double blue, double opacity);
-  void RemoveAllIsosurfaces();
-  int GetNumberOfIsosurfaces();
   ///@}
 
   enum GradientModes
@@ -190,18 +163,11 @@ public:
   ///@}
 
   ///@{
-  /// Keep a copy of the last frame's premultiplied float RGBA image (tests, benchmark).
-  vtkSetMacro(KeepFloatImage, bool);
-  vtkGetMacro(KeepFloatImage, bool);
-  vtkImageData* GetFloatImage();
-  ///@}
-
-  ///@{
   /// What the last frame did, for tests: shells processed and skipped (empty), isosurface layers
   /// drawn (passes that found a crossing), tetrahedra drawn summed over passes, the sample distance
   /// used; and since creation: segment tables built, vertex-gradient computations, visibility sorts
-  /// (cell projection: only when the view, the points or the drawn cells change), full mesh builds, point-only refreshes
-  /// (deformation), GPU bytes of the mesh.
+  /// (cell projection: only when the view, the points or the drawn cells change), full mesh builds,
+  /// point-only refreshes (deformation).
   int GetNumberOfShells();
   int GetNumberOfDrawnIsosurfaceLayers();
   int GetNumberOfSkippedShells();
@@ -212,18 +178,22 @@ public:
   int GetNumberOfSorts();
   int GetNumberOfMeshBuilds();
   int GetNumberOfPointRefreshes();
-  vtkIdType GetMeshMemoryInBytes();
   ///@}
 
-  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
-  void ReleaseGraphicsResources(vtkWindow* window) override;
+  /// Tetrahedra, points, gradients, texture coordinates and the cell lists on the GPU (not the
+  /// screen-sized images), as of the last frame.
+  vtkIdType GetMeshMemoryInBytes() override;
 
 protected:
   vtkBarycentricShellMapper();
   ~vtkBarycentricShellMapper() override;
 
+  bool Prepare(const vtkUnstructuredVolumeFrame& frame) override;
+  bool Upload(const vtkUnstructuredVolumeFrame& frame) override;
+  bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) override;
+  void ReleaseMapperGraphics() override;
+
   int RenderMode = SHELLS;
-  int ProjectionRoute = VERTEX_PULLING;
   double SampleDistance = 0.0;
   int AutomaticSamplesAcross = 128;
   int SlicesPerShell = 7;
@@ -233,7 +203,6 @@ protected:
   int GradientMode = VERTEX_GRADIENTS;
   char* GradientArrayName = nullptr;
   bool SkipInvisibleCells = true;
-  bool KeepFloatImage = false;
 
 private:
   vtkBarycentricShellMapper(const vtkBarycentricShellMapper&) = delete;

@@ -68,6 +68,43 @@ void UploadBufferTexture(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* b
   texture->CreateTextureBuffer(static_cast<unsigned int>(values.size() / components), components, vtkType, buffer);
 }
 
+/// Sets the matrix uniform `name` of the bound `program` (in float, as GLSL reads it).
+inline void SetUniformMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
+{
+  const glm::mat4 single(m);
+  program->SetUniformMatrix4x4(name, const_cast<float*>(&single[0][0]));
+}
+inline void SetUniformMatrix(vtkShaderProgram* program, const char* name, const glm::dmat3& m)
+{
+  const glm::mat3 single(m);
+  program->SetUniformMatrix3x3(name, const_cast<float*>(&single[0][0]));
+}
+
+/// Allocates `texture` as a width x height float image of `components` channels, nearest filtering
+/// (a screen-sized image a pass writes and a later one reads texel by texel).
+inline void AllocateFloatImage(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height,
+  int components)
+{
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->Allocate2D(width, height, components, VTK_FLOAT);
+}
+
+/// The samples that pass while `draw()` draws (an occlusion query; waits for the result).
+template <typename Draw>
+GLuint SamplesPassed(const Draw& draw)
+{
+  GLuint query = 0, samples = 0;
+  glGenQueries(1, &query);
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  draw();
+  glEndQuery(GL_SAMPLES_PASSED);
+  glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+  glDeleteQueries(1, &query);
+  return samples;
+}
+
 /// Reads the float RGBA colour attachment `attachment` of the bound framebuffer into `image` (made when
 /// null), width x height.
 inline void ReadFloatImage(vtkOpenGLFramebufferObject* framebuffer, unsigned int attachment, int width, int height,

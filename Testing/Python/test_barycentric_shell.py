@@ -454,6 +454,38 @@ class SkippingTests(SceneTestCase):
         self.assertGreater(rmse(images[0.0], images[1.0])[1], 0.05)
 
 
+class ChangeTrackingTests(SceneTestCase):
+    def test_sample_distance_change_on_a_micrometre_mesh_rebuilds_the_segment_table(self):
+        # A mesh a few micrometres across samples at distances of hundredths of a micrometre: the
+        # segment table must follow a change of SampleDistance however small the distances are (it was
+        # keyed by the distance printed to six decimals, 0.000000 for both, and kept integrating
+        # segments of the old length).
+        from vtkmodules.vtkCommonTransforms import vtkTransform
+        from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
+        scale = 1e-6
+        shrink = vtkTransform()
+        shrink.Scale(scale, scale, scale)
+        tiny = vtkTransformFilter()
+        tiny.SetInputData(analytic(6))
+        tiny.SetTransform(shrink)
+        tiny.Update()
+        mesh = tiny.GetOutput()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        prop.SetScalarOpacityUnitDistance(0.2 * scale)
+        camera = camera_for(mesh)
+        camera.SetClippingRange(0.1 * mesh.GetLength(), 20 * mesh.GetLength())
+        coarse, fine = mesh.GetLength() / 64, mesh.GetLength() / 128
+        scene = shell_scene(mesh, prop, camera, 64, SampleDistance=coarse, SegmentIntegration=1)
+        before = vtkImageDataCopy(scene.render())
+        scene.mapper.SetSampleDistance(fine)
+        changed = vtkImageDataCopy(scene.render())
+        fresh = shell_scene(mesh, prop, camera, 64, SampleDistance=fine, SegmentIntegration=1).render()
+        self.assertEqual(scene.mapper.GetNumberOfSegmentTableBuilds(), 2)
+        self.assertGreater(rmse(before, fresh)[1], 1e-4)  # the distance matters to the image
+        self.assertLess(rmse(changed, fresh)[1], 1e-6)  # the same as a mapper made for it
+        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+
+
 class ViewportTests(unittest.TestCase):
     def test_a_renderer_beside_another_in_the_window(self):
         # The mapper's passes clip to rectangles of its own image; the final blend into a renderer
