@@ -493,20 +493,17 @@ void vtkBarycentricShellMapper::Internals::UploadPasses(const vtkUnstructuredVol
 
 std::string vtkBarycentricShellMapper::Internals::Defines(bool opaqueGeometry) const
 {
-  std::string defines = uvgl::TransferFunctionDefines(this->TransferFunction.Nodes) + "#define UV_SLICES " +
-    std::to_string(this->Now.Slices + 1) + "\n#define UV_TARGETS " + std::to_string(this->Now.Targets) +
-    "\n#define UV_MAX_LAYERS " + std::to_string(this->Now.Layers) + "\n";
-  if (this->Now.NeedGradients)
-    defines += "#define UV_GRADIENTS\n";
-  else if (this->Now.Lit)
-    defines += "#define UV_CELL_GRADIENTS\n";
-  if (this->Now.SegmentTable)
-    defines += "#define UV_SEGMENT_TABLE\n";
-  if (opaqueGeometry)
-    defines += "#define UV_OPAQUE_GEOMETRY\n";
-  if (this->Now.Textured)
-    defines += "#define UV_TEXTURE\n";
-  return defines;
+  vtkBarycentricShellPrograms::Options options;
+  options.Slices = this->Now.Slices;
+  options.Targets = this->Now.Targets;
+  options.Layers = this->Now.Layers;
+  options.VertexGradients = this->Now.NeedGradients;
+  options.CellGradients = !this->Now.NeedGradients && this->Now.Lit;
+  options.SegmentTable = this->Now.SegmentTable;
+  options.OpaqueGeometry = opaqueGeometry;
+  options.Textured = this->Now.Textured;
+  options.NodeTexture = uvgl::NodesNeedTexture(this->TransferFunction.Nodes);
+  return vtkBarycentricShellPrograms::DefinesFor(options);
 }
 
 /// The uniforms (and textures) of every program over the tetrahedra: the geometry stage's and

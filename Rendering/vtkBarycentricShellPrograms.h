@@ -28,10 +28,65 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 class vtkBarycentricShellPrograms
 {
 public:
+  /// What the frame's programs are compiled for.
+  struct Options
+  {
+    int Slices = 7, Targets = 2, Layers = 1; // slices per shell, their render targets, isosurface layers
+    bool VertexGradients = false, CellGradients = false; // lighting from vertex or cell gradients
+    bool SegmentTable = false, OpaqueGeometry = false, Textured = false, NodeTexture = false;
+  };
+
+  static std::string DefinesFor(const Options& options)
+  {
+    std::string defines = uvgl::TransferFunctionDefines(options.NodeTexture) + "#define UV_SLICES " +
+      std::to_string(options.Slices + 1) + "\n#define UV_TARGETS " + std::to_string(options.Targets) +
+      "\n#define UV_MAX_LAYERS " + std::to_string(options.Layers) + "\n";
+    if (options.VertexGradients)
+      defines += "#define UV_GRADIENTS\n";
+    else if (options.CellGradients)
+      defines += "#define UV_CELL_GRADIENTS\n";
+    if (options.SegmentTable)
+      defines += "#define UV_SEGMENT_TABLE\n";
+    if (options.OpaqueGeometry)
+      defines += "#define UV_OPAQUE_GEOMETRY\n";
+    if (options.Textured)
+      defines += "#define UV_TEXTURE\n";
+    return defines;
+  }
+
+  /// Every flag combination at the default sizes, and the smallest and largest sizes with no flag
+  /// (what Testing/Cxx/TestEmbeddedShaders compiles).
+  static std::vector<Options> AllOptions()
+  {
+    std::vector<Options> all;
+    for (int lighting = 0; lighting < 3; ++lighting)
+      for (int flags = 0; flags < 16; ++flags)
+      {
+        Options options;
+        options.VertexGradients = lighting == 1;
+        options.CellGradients = lighting == 2;
+        options.SegmentTable = flags & 1;
+        options.OpaqueGeometry = flags & 2;
+        options.Textured = flags & 4;
+        options.NodeTexture = flags & 8;
+        all.push_back(options);
+      }
+    Options smallest, largest;
+    smallest.Slices = 3;
+    smallest.Targets = 1;
+    largest.Slices = 31;
+    largest.Targets = 8;
+    largest.Layers = 8;
+    all.push_back(smallest);
+    all.push_back(largest);
+    return all;
+  }
+
   vtkBarycentricShellPrograms(vtkOpenGLRenderWindow* window, std::string defines, bool pulling)
     : Cache(window->GetShaderCache())
     , Defines(std::move(defines))

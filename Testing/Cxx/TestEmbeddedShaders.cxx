@@ -3,6 +3,12 @@
 // the composite pass copies a premultiplied float image exactly and leaves no GL error.
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
+#include "uvBarycentricCellProjectionFS.h"
+#include "uvBarycentricShellBlendFS.h"
+#include "uvBarycentricShellIsosurfaceFS.h"
+#include "uvBarycentricShellMaskFS.h"
+#include "uvBarycentricShellSliceFS.h"
+#include "vtkBarycentricShellPrograms.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
 
 #include "vtkOpenGLRenderWindow.h"
@@ -70,6 +76,27 @@ TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
       (options.NodeTexture ? ", node texture" : "");
     this->ExpectLinks(vtkPreIntegratedTetrahedraPrograms::Sources(options), variant);
   }
+}
+
+TEST_F(EmbeddedShaders, EveryBarycentricShellProgramLinks)
+{
+  const auto all = vtkBarycentricShellPrograms::AllOptions();
+  for (bool pulling : { true, false })
+    for (std::size_t k = 0; k < all.size(); ++k)
+    {
+      const vtkBarycentricShellPrograms programs(
+        this->Context, vtkBarycentricShellPrograms::DefinesFor(all[k]), pulling);
+      const std::string variant = std::string("shell programs, ") +
+        (pulling ? "vertex pulling" : "geometry shader") + ", options #" + std::to_string(k);
+      for (const char* fragment : { uvBarycentricCellProjectionFS, uvBarycentricShellSliceFS })
+        EXPECT_NE(programs.OverCells(fragment), nullptr) << variant;
+      // Isosurfaces are always lit, by one of the two gradients.
+      if (all[k].VertexGradients || all[k].CellGradients)
+        EXPECT_NE(programs.OverCells(uvBarycentricShellIsosurfaceFS), nullptr) << variant;
+      for (const char* fragment : { uvBarycentricShellBlendFS, uvBarycentricShellMaskFS })
+        EXPECT_NE(programs.FullScreen(fragment), nullptr) << variant;
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << variant;
+    }
 }
 
 TEST_F(EmbeddedShaders, CompositePassCopiesAFloatImage)
