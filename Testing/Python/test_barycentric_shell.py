@@ -476,9 +476,9 @@ class ChangeTrackingTests(SceneTestCase):
         camera.SetClippingRange(0.1 * mesh.GetLength(), 20 * mesh.GetLength())
         coarse, fine = mesh.GetLength() / 64, mesh.GetLength() / 128
         scene = shell_scene(mesh, prop, camera, 64, SampleDistance=coarse, SegmentIntegration=1)
-        before = vtkImageDataCopy(scene.render())
+        before = copy_image(scene.render())
         scene.mapper.SetSampleDistance(fine)
-        changed = vtkImageDataCopy(scene.render())
+        changed = copy_image(scene.render())
         fresh = shell_scene(mesh, prop, camera, 64, SampleDistance=fine, SegmentIntegration=1).render()
         self.assertEqual(scene.mapper.GetNumberOfSegmentTableBuilds(), 2)
         self.assertGreater(rmse(before, fresh)[1], 1e-4)  # the distance matters to the image
