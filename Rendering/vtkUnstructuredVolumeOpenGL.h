@@ -218,52 +218,15 @@ inline void SetTransferFunctionUniforms(vtkShaderProgram* program, const std::ve
   program->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
 }
 
-/// The node texture: row 0 (r, g, b, extinction), row 1 the scalar; nearest filtering.
-inline void UploadTransferFunctionTexture(
-  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, const std::vector<uv::TransferFunction::Node>& nodes)
-{
-  const int count = static_cast<int>(nodes.size());
-  std::vector<float> texels(8 * count, 0.0f);
-  for (int k = 0; k < count; ++k)
-  {
-    texels[4 * k + 0] = static_cast<float>(nodes[k].Color.r);
-    texels[4 * k + 1] = static_cast<float>(nodes[k].Color.g);
-    texels[4 * k + 2] = static_cast<float>(nodes[k].Color.b);
-    texels[4 * k + 3] = static_cast<float>(nodes[k].Extinction);
-    texels[4 * (count + k)] = static_cast<float>(nodes[k].Scalar);
-  }
-  texture->SetContext(window);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->Create2DFromRaw(count, 2, 4, VTK_FLOAT, texels.data());
-}
-
-/// The uniforms of uvTransferFunctionLib.glsl (nodes, Psi table); `nodeTexture` and `psiTable` must be
-/// active (the node texture is read only when the nodes need it).
+/// The uniforms of uvTransferFunctionLib.glsl with its textures, for mappers that keep their own
+/// (`nodeTexture` and `psiTable` active; the node texture is read only when the nodes need it).
 inline void SetTransferFunctionUniforms(vtkShaderProgram* program, const std::vector<uv::TransferFunction::Node>& nodes,
   vtkTextureObject* nodeTexture, vtkTextureObject* psiTable)
 {
-  program->SetUniformi("nodeCount", static_cast<int>(nodes.size()));
+  SetTransferFunctionUniforms(program, nodes);
   if (NodesNeedTexture(nodes))
-  {
     program->SetUniformi("transferFunction", nodeTexture->GetTextureUnit());
-  }
-  else
-  {
-    std::vector<float> values(4 * MaximumUniformNodes, 0.0f), scalars(MaximumUniformNodes, 0.0f);
-    for (std::size_t k = 0; k < nodes.size(); ++k)
-    {
-      values[4 * k + 0] = static_cast<float>(nodes[k].Color.r);
-      values[4 * k + 1] = static_cast<float>(nodes[k].Color.g);
-      values[4 * k + 2] = static_cast<float>(nodes[k].Color.b);
-      values[4 * k + 3] = static_cast<float>(nodes[k].Extinction);
-      scalars[k] = static_cast<float>(nodes[k].Scalar);
-    }
-    program->SetUniform4fv("nodeValues", MaximumUniformNodes, values.data());
-    program->SetUniform4fv("nodeScalars", MaximumUniformNodes / 4, scalars.data());
-  }
   program->SetUniformi("psiTable", psiTable->GetTextureUnit());
-  program->SetUniformf("psiTableSize", static_cast<float>(uv::PsiTableSize));
 }
 
 /// Embedded GLSL made ready to compile: `defines` inserted after VTK's version marker, and each
