@@ -5,6 +5,7 @@
 #include "uvHexahedralEntryFS.h"
 #include "uvHexahedralEntryVS.h"
 #include "uvHexahedralTraverseFS.h"
+#include "uvHexahedronLib.h"
 #include "uvIsosurfaceList.h"
 #include "uvPhongLib.h"
 #include "uvTransferFunctionLib.h"
@@ -186,8 +187,9 @@ class EntryPass
 {
 public:
   EntryPass()
-    : VertexSource(uvHexahedralEntryVS)
-    , FragmentSource(uvgl::ShaderSource(uvHexahedralEntryFS, "", { { "//UV::BilinearFace", uvBilinearFaceLib } }))
+    : VertexSource(uvgl::ShaderSource(uvHexahedralEntryVS, "", { { "//UV::Hexahedron", uvHexahedronLib } }))
+    , FragmentSource(uvgl::ShaderSource(uvHexahedralEntryFS, "",
+        { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } }))
   {
   }
 
@@ -316,7 +318,7 @@ private:
     {
       this->FragmentSource = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
         { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
-          { "//UV::BilinearFace", uvBilinearFaceLib } });
+          { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
       this->Defines = defines;
     }
     return window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, this->FragmentSource.c_str(), "");
