@@ -29,7 +29,8 @@ foreach (header IN ITEMS
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
     vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL vtkUnstructuredVolumeTetrahedralMesh
     vtkUnstructuredVolumeTexture vtkUnstructuredVolumeTransferFunction
-    vtkUnstructuredVolumeTransferFunctionTexture)
+    vtkUnstructuredVolumeTransferFunctionTexture
+    uvHexahedralMesh uvScalarNormalisation vtkUnstructuredVolumeHexahedralMesh vtkUnstructuredVolumePointData)
   list(APPEND uv_rendering_private_headers "${CMAKE_CURRENT_LIST_DIR}/${header}.h")
 endforeach ()
 # The float target has a source file of its own (the other OpenGL-layer classes are header-only).

@@ -5,51 +5,37 @@
 #include "uvHexahedralEntryFS.h"
 #include "uvHexahedralEntryVS.h"
 #include "uvHexahedralTraverseFS.h"
-#include "uvHexahedronRay.h"
+#include "uvHexahedronLib.h"
 #include "uvIsosurfaceList.h"
-#include "uvLinearCellSplit.h"
-#include "vtkUnstructuredVolumeOpenGL.h"
 #include "uvPhongLib.h"
-#include "uvPreIntegration.h"
-#include "uvRayCellGeometry.h"
 #include "uvTransferFunctionLib.h"
+#include "vtkUnstructuredVolumeBufferTexture.h"
+#include "vtkUnstructuredVolumeFloatTarget.h"
+#include "vtkUnstructuredVolumeFrame.h"
+#include "vtkUnstructuredVolumeHexahedralMesh.h"
+#include "vtkUnstructuredVolumeOpenGL.h"
+#include "vtkUnstructuredVolumeTexture.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
+#include "vtkUnstructuredVolumeTransferFunctionTexture.h"
 
-#include "vtkCamera.h"
-#include "vtkCellType.h"
 #include "vtkDataArray.h"
-#include "vtkIdList.h"
+#include "vtkDataSet.h"
 #include "vtkInformation.h"
-#include "vtkImageData.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLBufferObject.h"
-#include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
-#include "vtkRenderer.h"
-#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkUnstructuredGrid.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
-#include <array>
-#include <atomic>
-#include <cmath>
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -57,15 +43,306 @@ vtkStandardNewMacro(vtkHexahedralRayCastMapper);
 
 namespace
 {
-
-/// A face by its sorted point ids, and which cell's local face it is.
-struct FaceRecord
+void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
 {
-  std::array<std::uint32_t, 4> Key;
-  std::uint32_t CellFace; // cell * 8 + local face
-  bool operator<(const FaceRecord& other) const
+  const glm::mat4 single(m);
+  program->SetUniformMatrix4x4(name, const_cast<float*>(glm::value_ptr(single)));
+}
+
+/// The cell holding a perspective eye, where rays start when it is inside the mesh; searched again
+/// only when the mesh or the eye moved.
+class EyeCell
+{
+public:
+  int Update(const uvvtk::HexahedralMesh& mesh, const glm::dvec3& eye)
   {
-    return Key < other.Key || (Key == other.Key && CellFace < other.CellFace);
+    if (mesh.Version != this->MeshVersion || eye != this->Eye)
+    {
+      this->Cell = uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, eye);
+      this->MeshVersion = mesh.Version;
+      this->Eye = eye;
+    }
+    return this->Cell;
+  }
+
+private:
+  int Cell = -1;
+  std::uint64_t MeshVersion = 0;
+  glm::dvec3 Eye{ 0.0 };
+};
+
+/// The GPU copies of the mesh, the transfer function and the isosurfaces.
+struct GpuResources
+{
+  vtkUnstructuredVolumeBufferTexture CellPoints, Points, Neighbours, BoundaryFaces;
+  vtkUnstructuredVolumeTransferFunctionTexture TransferFunction;
+  vtkUnstructuredVolumeTexture Isosurfaces;
+
+  void Release()
+  {
+    for (vtkUnstructuredVolumeBufferTexture* texture : { &this->CellPoints, &this->Points, &this->Neighbours,
+           &this->BoundaryFaces })
+      texture->Release();
+    this->TransferFunction.Release();
+    this->Isosurfaces.Release();
+  }
+};
+
+/// The screen-sized images of the peels besides the float target, on one framebuffer: the entry
+/// (ray parameter, boundary face) with its depth, the exit (where each traversal left the mesh), and
+/// a second accumulation image the traversals alternate with the target's colour.
+class PeelImages
+{
+public:
+  vtkNew<vtkTextureObject> Entry, EntryDepth, Exit, Accumulation;
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+
+  void Resize(vtkOpenGLRenderWindow* window, int width, int height)
+  {
+    if (window == this->Context && width == this->Width && height == this->Height)
+    {
+      return;
+    }
+    for (vtkTextureObject* texture : { this->Entry.Get(), this->Exit.Get(), this->Accumulation.Get() })
+    {
+      texture->SetContext(window);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->Allocate2D(width, height, 4, VTK_FLOAT);
+    }
+    this->EntryDepth->SetContext(window);
+    this->EntryDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    this->Framebuffer->SetContext(window);
+    this->Context = window;
+    this->Width = width;
+    this->Height = height;
+  }
+
+  /// Copies Accumulation into the target's colour; the framebuffer must be bound.
+  void CopyAccumulationInto(vtkUnstructuredVolumeFloatTarget& target)
+  {
+    this->Framebuffer->AddColorAttachment(0, this->Accumulation);
+    this->Framebuffer->ActivateReadBuffer(0);
+    target.GetFramebuffer()->Bind(GL_DRAW_FRAMEBUFFER);
+    const int w = this->Width, h = this->Height;
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST); // float to float: exact
+  }
+
+  void Release()
+  {
+    if (this->Context)
+    {
+      for (vtkTextureObject* texture : { this->Entry.Get(), this->EntryDepth.Get(), this->Exit.Get(),
+             this->Accumulation.Get() })
+        texture->ReleaseGraphicsResources(this->Context);
+      this->Framebuffer->ReleaseGraphicsResources(this->Context);
+    }
+    this->Context = nullptr;
+    this->Width = this->Height = 0;
+  }
+
+private:
+  vtkOpenGLRenderWindow* Context = nullptr;
+  int Width = 0, Height = 0;
+};
+
+/// What both passes of a frame read: the camera in the mesh's recentred model space and the
+/// frame's GL objects.
+struct PassFrame
+{
+  const vtkUnstructuredVolumeFrame* Frame = nullptr;
+  vtkOpenGLVertexArrayObject* NoAttributes = nullptr;
+  glm::dmat4 ModelToClip{ 1.0 }, ClipToModel{ 1.0 }, ModelToEye{ 1.0 };
+  glm::dmat3 NormalToEye{ 1.0 };
+  glm::dvec3 EyeModel{ 0.0 };
+  float Viewport[2] = { 0.0f, 0.0f };
+
+  static PassFrame Make(const vtkUnstructuredVolumeFrame& frame, const glm::dvec3& center,
+    vtkOpenGLVertexArrayObject* noAttributes)
+  {
+    PassFrame pass;
+    pass.Frame = &frame;
+    pass.NoAttributes = noAttributes;
+    pass.ModelToEye = frame.ModelToEye(center);
+    pass.ModelToClip = frame.ModelToClip(center);
+    pass.ClipToModel = glm::inverse(pass.ModelToClip);
+    pass.NormalToEye = frame.ModelToEyeNormals(center);
+    pass.EyeModel = frame.EyeInModel(center);
+    pass.Viewport[0] = static_cast<float>(frame.Width);
+    pass.Viewport[1] = static_cast<float>(frame.Height);
+    return pass;
+  }
+
+  void SetRayUniforms(vtkShaderProgram* program) const
+  {
+    SetMatrix(program, "clipToModel", this->ClipToModel);
+    program->SetUniform2f("viewportSize", this->Viewport);
+  }
+};
+
+/// Per peel, the nearest boundary face where each pixel's ray enters the mesh beyond where the
+/// previous peel left it: the boundary faces rasterised (6 vertices each, pulled from the mesh's
+/// buffer textures) into Entry, depth-tested.
+class EntryPass
+{
+public:
+  EntryPass()
+    : VertexSource(uvgl::ShaderSource(uvHexahedralEntryVS, "", { { "//UV::Hexahedron", uvHexahedronLib } }))
+    , FragmentSource(uvgl::ShaderSource(uvHexahedralEntryFS, "",
+        { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } }))
+  {
+  }
+
+  /// False when the program failed; `entered` tells whether any ray entered the mesh.
+  bool Draw(const PassFrame& pass, PeelImages& images, GpuResources& gpu, std::size_t boundaryCount, bool firstPeel,
+    bool& entered)
+  {
+    vtkOpenGLRenderWindow* window = pass.Frame->Window;
+    vtkOpenGLState* state = window->GetState();
+    images.Framebuffer->AddColorAttachment(0, images.Entry);
+    images.Framebuffer->AddDepthAttachment(images.EntryDepth);
+    images.Framebuffer->ActivateDrawBuffers(1);
+    state->vtkglClearColor(0.0f, -1.0f, 0.0f, 0.0f); // green < 0: no face
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+      this->VertexSource.c_str(), this->FragmentSource.c_str(), "");
+    if (program)
+    {
+      gpu.BoundaryFaces.Bind(program, "boundaryFaces");
+      gpu.CellPoints.Bind(program, "cellPoints");
+      gpu.Points.Bind(program, "pointData");
+      images.Exit->Activate();
+      program->SetUniformi("previousExit", images.Exit->GetTextureUnit());
+      program->SetUniformi("firstPeel", firstPeel ? 1 : 0);
+      SetMatrix(program, "modelToClip", pass.ModelToClip);
+      pass.SetRayUniforms(program);
+      entered = DrawCountingSamples(pass.NoAttributes, boundaryCount) > 0;
+      images.Exit->Deactivate();
+      gpu.BoundaryFaces.Unbind();
+      gpu.CellPoints.Unbind();
+      gpu.Points.Unbind();
+    }
+    images.Framebuffer->RemoveDepthAttachment();
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    return program != nullptr;
+  }
+
+private:
+  std::string VertexSource, FragmentSource;
+
+  /// Draws the faces' triangles; returns the samples that passed (zero: no ray enters again).
+  static GLuint DrawCountingSamples(vtkOpenGLVertexArrayObject* noAttributes, std::size_t boundaryCount)
+  {
+    GLuint query = 0, samples = 0;
+    glGenQueries(1, &query);
+    noAttributes->Bind();
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * boundaryCount));
+    glEndQuery(GL_SAMPLES_PASSED);
+    noAttributes->Release();
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+    glDeleteQueries(1, &query);
+    return samples;
+  }
+};
+
+/// The mapper's settings the traversal reads, and where its rays start.
+struct TraversalSettings
+{
+  int IntegrationMode = 0, FixedSteps = 8;
+  bool ExactEnds = true;
+  float OpacityThreshold = 0.99f;
+  int MaximumCells = 0; // bounds the walk (and any cycle in it)
+  int EyeCell = -1;     // the cell holding the eye on the first peel, or -1
+  int IsosurfaceCount = 0;
+};
+
+/// Per peel, full screen: walks each ray from its entry through the cells, integrating them, and
+/// composites front to back over `accumulated` into `into`; writes where each ray left the mesh into
+/// Exit, for the next peel's entry pass.
+class TraversePass
+{
+public:
+  /// False when the program failed.
+  bool Draw(const PassFrame& pass, PeelImages& images, GpuResources& gpu, const TraversalSettings& settings,
+    vtkTextureObject* sceneDepth, vtkTextureObject* accumulated, vtkTextureObject* into)
+  {
+    images.Framebuffer->AddColorAttachment(0, into);
+    images.Framebuffer->AddColorAttachment(1, images.Exit);
+    images.Framebuffer->ActivateDrawBuffers(2);
+    vtkShaderProgram* program = this->Ready(pass.Frame->Window, gpu.TransferFunction.GetNodes());
+    if (program)
+    {
+      images.Entry->Activate();
+      accumulated->Activate();
+      sceneDepth->Activate();
+      program->SetUniformi("entry", images.Entry->GetTextureUnit());
+      program->SetUniformi("accumulated", accumulated->GetTextureUnit());
+      program->SetUniformi("opaqueDepth", sceneDepth->GetTextureUnit());
+      gpu.BoundaryFaces.Bind(program, "boundaryFaces");
+      gpu.CellPoints.Bind(program, "cellPoints");
+      gpu.Neighbours.Bind(program, "cellNeighbours");
+      gpu.Points.Bind(program, "pointData");
+      gpu.TransferFunction.Bind(program);
+      gpu.Isosurfaces.Bind(program, "isosurfaces");
+      SetUniforms(program, pass, settings);
+      pass.NoAttributes->Bind();
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      pass.NoAttributes->Release();
+      for (vtkTextureObject* texture : { images.Entry.Get(), accumulated, sceneDepth })
+        texture->Deactivate();
+      for (vtkUnstructuredVolumeBufferTexture* texture : { &gpu.BoundaryFaces, &gpu.CellPoints, &gpu.Neighbours,
+             &gpu.Points })
+        texture->Unbind();
+      gpu.TransferFunction.Unbind();
+      gpu.Isosurfaces.Unbind();
+    }
+    images.Framebuffer->RemoveColorAttachment(1);
+    images.Framebuffer->ActivateDrawBuffers(1);
+    return program != nullptr;
+  }
+
+private:
+  std::string Defines, FragmentSource;
+
+  /// The program for these nodes (their number decides the defines).
+  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const std::vector<uv::TransferFunction::Node>& nodes)
+  {
+    const std::string defines = uvgl::TransferFunctionDefines(nodes);
+    if (defines != this->Defines || this->FragmentSource.empty())
+    {
+      this->FragmentSource = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
+        { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
+          { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
+      this->Defines = defines;
+    }
+    return window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, this->FragmentSource.c_str(), "");
+  }
+
+  static void SetUniforms(vtkShaderProgram* program, const PassFrame& pass, const TraversalSettings& settings)
+  {
+    const vtkUnstructuredVolumeFrame& frame = *pass.Frame;
+    program->SetUniformi("isosurfaceCount", settings.IsosurfaceCount);
+    SetMatrix(program, "modelToEye", pass.ModelToEye);
+    const glm::mat3 normals(pass.NormalToEye);
+    program->SetUniformMatrix3x3("normalToEye", const_cast<float*>(glm::value_ptr(normals)));
+    program->SetUniformi("parallelProjection", frame.Parallel ? 1 : 0);
+    uvgl::SetPhongUniforms(program, frame.Renderer, frame.Property, frame.WorldToEye);
+    pass.SetRayUniforms(program);
+    program->SetUniformi("integrationMode", settings.IntegrationMode);
+    program->SetUniformi("fixedSteps", settings.FixedSteps);
+    program->SetUniformi("exactEnds", settings.ExactEnds ? 1 : 0);
+    program->SetUniformf("opacityThreshold", settings.OpacityThreshold);
+    program->SetUniformi("maximumCells", settings.MaximumCells);
+    program->SetUniformi("eyeCell", settings.EyeCell);
+    const float eye[3] = { static_cast<float>(pass.EyeModel.x), static_cast<float>(pass.EyeModel.y),
+      static_cast<float>(pass.EyeModel.z) };
+    program->SetUniform3f("eyeModel", eye);
   }
 };
 } // namespace
@@ -73,56 +350,47 @@ struct FaceRecord
 class vtkHexahedralRayCastMapper::Internals
 {
 public:
-  std::string MeshKey;
-  std::vector<std::uint32_t> CellPoints;   // 8 per cell, VTK hexahedron order
-  std::vector<float> PointData;            // recentred position, normalised scalar
-  std::vector<std::int32_t> Neighbours;    // 8 per cell (6 used): neighbour * 8 + face, or -1
-  std::vector<std::int32_t> BoundaryFaces; // 4 per boundary face: cell, local face, 0, 0
-  glm::dvec3 Center{ 0.0 };
-  double ScalarOffset = 0.0, ScalarScale = 1.0;
-  int MeshBuilds = 0, Peels = 0;
-  vtkIdType TangledCells = 0;
-  std::string EyeCellKey;
-  glm::dvec3 EyeCellPosition{ 0.0 };
-  int EyeCell = -1;
+  // CPU state, versioned for the GPU copies.
+  uvvtk::HexahedralMesh Mesh;
+  uvvtk::NormalisedTransferFunction TransferFunction;
+  std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
+  EyeCell Eye;
+  int EyeCellOfFrame = -1; // perspective eye inside the mesh, or -1
   bool WarnedNaN = false;
-  uv::IsosurfaceList Isosurfaces;
-  std::string UploadedIsosurfacesKey;
+  int Peels = 0;
 
-  vtkOpenGLRenderWindow* Context = nullptr;
-  vtkNew<vtkOpenGLBufferObject> CellPointBuffer, PointBuffer, NeighbourBuffer, BoundaryBuffer;
-  vtkNew<vtkTextureObject> CellPointTexture, PointTexture, NeighbourTexture, BoundaryTexture, PsiTexture,
-    IsosurfaceTexture, OpaqueDepthTexture, EntryTexture, EntryDepthTexture, ExitTexture, AccumulationTexture[2];
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
-  bool MeshOnGpu = false;
-  int ImageSize[2] = { 0, 0 };
-  vtkSmartPointer<vtkImageData> FloatImage;
+  // GPU state.
+  GpuResources Gpu;
+  PeelImages Images;
+  EntryPass Entry;
+  TraversePass Traverse;
 
-  void ReleaseGraphics()
+  /// Up to `maximumPeels` entry and traversal passes, each traversal compositing over the previous
+  /// one's image: the target's colour (cleared) and Images.Accumulation in turns, the result ending
+  /// in the target's. False when a program failed. Images' framebuffer must be bound.
+  bool Peel(const PassFrame& pass, TraversalSettings& settings, vtkUnstructuredVolumeFloatTarget& target,
+    int maximumPeels)
   {
-    if (this->Context)
+    vtkTextureObject* accumulation[2] = { target.GetColor(), this->Images.Accumulation };
+    int last = 0;
+    for (int peel = 0; peel < maximumPeels; ++peel)
     {
-      for (vtkTextureObject* texture : { this->CellPointTexture.Get(), this->PointTexture.Get(),
-             this->NeighbourTexture.Get(), this->BoundaryTexture.Get(), this->PsiTexture.Get(),
-             this->IsosurfaceTexture.Get(),
-             this->OpaqueDepthTexture.Get(), this->EntryTexture.Get(), this->EntryDepthTexture.Get(),
-             this->ExitTexture.Get(), this->AccumulationTexture[0].Get(), this->AccumulationTexture[1].Get() })
-      {
-        texture->ReleaseGraphicsResources(this->Context);
-      }
-      for (vtkOpenGLBufferObject* buffer : { this->CellPointBuffer.Get(), this->PointBuffer.Get(),
-             this->NeighbourBuffer.Get(), this->BoundaryBuffer.Get() })
-      {
-        buffer->ReleaseGraphicsResources();
-      }
-      this->Framebuffer->ReleaseGraphicsResources(this->Context);
-      this->NoAttributes->ReleaseGraphicsResources();
+      bool entered = false;
+      if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Mesh.BoundaryCount(), peel == 0, entered))
+        return false;
+      const bool fromEye = peel == 0 && this->EyeCellOfFrame >= 0;
+      if (!entered && !fromEye)
+        break; // no ray enters the mesh again
+      ++this->Peels;
+      settings.EyeCell = fromEye ? this->EyeCellOfFrame : -1;
+      if (!this->Traverse.Draw(pass, this->Images, this->Gpu, settings, target.GetSceneDepth(), accumulation[last],
+            accumulation[1 - last]))
+        return false;
+      last = 1 - last;
     }
-    this->Context = nullptr;
-    this->MeshOnGpu = false;
-    this->UploadedIsosurfacesKey.clear();
-    this->ImageSize[0] = this->ImageSize[1] = 0;
+    if (last == 1)
+      this->Images.CopyAccumulationInto(target);
+    return true;
   }
 };
 
@@ -133,34 +401,13 @@ vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
 
 vtkHexahedralRayCastMapper::~vtkHexahedralRayCastMapper() = default;
 
-void vtkHexahedralRayCastMapper::AddIsosurface(double value, double red, double green, double blue, double opacity)
-{
-  this->Impl->Isosurfaces.Add(value, red, green, blue, opacity);
-  this->Modified();
-}
-
-void vtkHexahedralRayCastMapper::RemoveAllIsosurfaces()
-{
-  if (this->Impl->Isosurfaces.Clear())
-    this->Modified();
-}
-
-int vtkHexahedralRayCastMapper::GetNumberOfIsosurfaces()
-{
-  return this->Impl->Isosurfaces.Size();
-}
-
-vtkImageData* vtkHexahedralRayCastMapper::GetFloatImage()
-{
-  return this->Impl->FloatImage;
-}
 vtkIdType vtkHexahedralRayCastMapper::GetNumberOfCells()
 {
-  return static_cast<vtkIdType>(this->Impl->CellPoints.size() / 8);
+  return static_cast<vtkIdType>(this->Impl->Mesh.CellCount());
 }
 vtkIdType vtkHexahedralRayCastMapper::GetNumberOfBoundaryFaces()
 {
-  return static_cast<vtkIdType>(this->Impl->BoundaryFaces.size() / 4);
+  return static_cast<vtkIdType>(this->Impl->Mesh.BoundaryCount());
 }
 int vtkHexahedralRayCastMapper::GetNumberOfPeels()
 {
@@ -168,17 +415,15 @@ int vtkHexahedralRayCastMapper::GetNumberOfPeels()
 }
 vtkIdType vtkHexahedralRayCastMapper::GetNumberOfTangledCells()
 {
-  return this->Impl->TangledCells;
+  return this->Impl->Mesh.TangledCells;
 }
 vtkIdType vtkHexahedralRayCastMapper::GetMeshMemoryInBytes()
 {
-  const Internals& impl = *this->Impl;
-  return static_cast<vtkIdType>(sizeof(std::uint32_t) * impl.CellPoints.size() + sizeof(float) * impl.PointData.size() +
-    sizeof(std::int32_t) * (impl.Neighbours.size() + impl.BoundaryFaces.size()));
+  return static_cast<vtkIdType>(this->Impl->Mesh.Bytes());
 }
 int vtkHexahedralRayCastMapper::GetNumberOfMeshBuilds()
 {
-  return this->Impl->MeshBuilds;
+  return this->Impl->Mesh.Builds;
 }
 
 void vtkHexahedralRayCastMapper::SetInputData(vtkDataSet* input)
@@ -192,9 +437,10 @@ int vtkHexahedralRayCastMapper::FillInputPortInformation(int, vtkInformation* in
   return 1;
 }
 
-void vtkHexahedralRayCastMapper::ReleaseGraphicsResources(vtkWindow*)
+void vtkHexahedralRayCastMapper::ReleaseMapperGraphics()
 {
-  this->Impl->ReleaseGraphics();
+  this->Impl->Gpu.Release();
+  this->Impl->Images.Release();
 }
 
 void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
@@ -203,487 +449,107 @@ void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   const char* modes[] = { "Accurate", "Fast", "FixedSteps" };
   os << indent << "IntegrationMode: " << modes[this->IntegrationMode] << "\n";
   os << indent << "FixedSteps: " << this->FixedSteps << "\n";
+  os << indent << "ExactSegmentEnds: " << this->ExactSegmentEnds << "\n";
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
   os << indent << "MaximumPeels: " << this->MaximumPeels << "\n";
-  os << indent << "Isosurfaces: " << this->Impl->Isosurfaces.Size() << "\n";
 }
 
-void vtkHexahedralRayCastMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, vtkDataArray* scalars)
+{
+  uvvtk::HexahedralMesh& mesh = this->Impl->Mesh;
+  bool built = false;
+  const std::string error =
+    mesh.Update(input, scalars, [this](double progress) { this->UpdateProgress(progress); }, built);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  if (built && mesh.TangledCells > 0)
+  {
+    vtkWarningMacro(<< mesh.TangledCells << " hexahedra are tangled (their Jacobian changes sign, as in a "
+                    << "crushed mesh): what a ray integrates through them is not well defined");
+  }
+  if (built && mesh.NaNCells > 0 && !this->Impl->WarnedNaN)
+  {
+    vtkWarningMacro(<< mesh.NaNCells << " cells touch a NaN scalar and are left out (holes in the mesh)");
+    this->Impl->WarnedNaN = true;
+  }
+  return mesh.CellCount() > 0 && mesh.BoundaryCount() > 0;
+}
+
+bool vtkHexahedralRayCastMapper::UpdateTransferFunction(vtkVolumeProperty* property)
+{
+  Internals& impl = *this->Impl;
+  const uv::ScalarNormalisation& normalisation = impl.Mesh.Points.Normalisation;
+  // The traversal reads its nodes from uniforms only.
+  if (impl.TransferFunction.Update(property, normalisation.Offset, normalisation.Scale,
+        static_cast<std::size_t>(uvgl::MaximumUniformNodes)) &&
+    impl.TransferFunction.Resampled)
+  {
+    vtkWarningMacro("more than " << uvgl::MaximumUniformNodes << " transfer-function nodes: resampled to that many");
+  }
+  if (impl.TransferFunction.Nodes.empty())
+  {
+    vtkErrorMacro("the volume property has no scalar opacity function");
+    return false;
+  }
+  return true;
+}
+
+bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
 {
   Internals& impl = *this->Impl;
   impl.Peels = 0;
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkDataSet* input = vtkDataSet::SafeDownCast(this->GetInputDataObject(0, 0));
-  if (!window || !volume || !volume->GetProperty() || !input)
+  vtkDataSet* input = this->GetDataSetInput();
+  vtkDataArray* scalars = this->FindPointScalars(input);
+  if (!scalars || !this->UpdateMesh(input, scalars) || !this->UpdateTransferFunction(frame.Property))
   {
-    vtkErrorMacro("needs an input, an OpenGL render window and a volume with a property");
-    return;
+    return false;
   }
-  if (input->GetNumberOfCells() == 0 || input->GetNumberOfPoints() == 0)
-  {
-    return; // an empty grid draws nothing
-  }
-  int cellFlag = 0;
-  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(
-    input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
-  if (!scalars)
-  {
-    vtkErrorMacro("the input has no point scalar to render (set one, or select an array with SelectScalarArray)");
-    return;
-  }
-  if (cellFlag != 0)
-  {
-    vtkErrorMacro("cell scalars are not supported: convert them to point data (vtkCellDataToPointData)");
-    return;
-  }
+  const uv::ScalarNormalisation& normalisation = impl.Mesh.Points.Normalisation;
+  impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(normalisation.Offset, normalisation.Scale);
+  const glm::dvec3& center = impl.Mesh.Points.Center;
+  impl.EyeCellOfFrame = frame.Parallel ? -1 : impl.Eye.Update(impl.Mesh, frame.EyeInModel(center));
+  return true;
+}
 
-  // ---- The mesh: cells, recentred points, face adjacency, boundary faces.
-  const std::string meshKey = std::to_string(reinterpret_cast<std::uintptr_t>(input)) + ":" +
-    std::to_string(input->GetMTime()) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(scalars)) + ":" +
-    std::to_string(scalars->GetMTime());
-  if (meshKey != impl.MeshKey)
-  {
-    this->UpdateProgress(0.0); // preparation (adjacency) can take seconds on large meshes
-    impl.MeshKey.clear();
-    impl.MeshOnGpu = false;
-    // Any vtkDataSet through its generic cell API: unstructured grids, and structured grids
-    // (hexahedra; blanked cells are empty and skipped), image data and rectilinear grids (voxels)
-    // with no conversion.
-    vtkDataSet* grid = input;
-    const vtkIdType pointCount = grid->GetNumberOfPoints();
-    double low = std::numeric_limits<double>::infinity(), high = -low;
-    for (vtkIdType p = 0; p < pointCount; ++p)
-    {
-      const double s = scalars->GetComponent(p, 0);
-      if (std::isfinite(s))
-      {
-        low = std::min(low, s);
-        high = std::max(high, s);
-      }
-    }
-    if (!(low <= high))
-      low = high = 0.0;
-    impl.ScalarOffset = low;
-    impl.ScalarScale = high > low ? 1.0 / (high - low) : 1.0;
-    double bounds[6];
-    grid->GetBounds(bounds);
-    impl.Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
-    impl.PointData.assign(4 * pointCount, 0.0f);
-    double firstPoint[3];
-    grid->GetPoint(0, firstPoint); // vtkDataSet::GetPoint(id, x) is thread-safe after one serial call
-    vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
-      double x[3];
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        grid->GetPoint(p, x);
-        for (int d = 0; d < 3; ++d)
-          impl.PointData[4 * p + d] = static_cast<float>(x[d] - impl.Center[d]);
-        impl.PointData[4 * p + 3] =
-          static_cast<float>((scalars->GetComponent(p, 0) - impl.ScalarOffset) * impl.ScalarScale);
-      }
-    });
+bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  vtkOpenGLRenderWindow* window = frame.Window;
+  const uvvtk::HexahedralMesh& mesh = impl.Mesh;
+  impl.Gpu.CellPoints.Sync(window, mesh.CellPoints, 4, mesh.Version);
+  impl.Gpu.Points.Sync(window, mesh.Points.Values, 4, mesh.Version);
+  impl.Gpu.Neighbours.Sync(window, mesh.Faces.Neighbours, 4, mesh.Version);
+  impl.Gpu.BoundaryFaces.Sync(window, mesh.Faces.Boundary, 4, mesh.Version);
+  impl.Gpu.TransferFunction.Sync(window, impl.TransferFunction.Nodes);
+  impl.Gpu.Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(impl.DrawnIsosurfaces), 2, 4,
+    uv::IsosurfaceList::Texels(impl.DrawnIsosurfaces));
+  return true;
+}
 
-    impl.CellPoints.clear();
-    vtkIdType others = 0, withNaN = 0;
-    vtkNew<vtkIdList> cellIds;
-    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-    {
-      const int type = grid->GetCellType(c);
-      if (type == VTK_EMPTY_CELL)
-        continue; // blanked
-      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL)
-      {
-        ++others;
-        continue;
-      }
-      grid->GetCellPoints(c, cellIds);
-      const vtkIdType* ids = cellIds->GetPointer(0);
-      std::array<std::uint32_t, 8> corners;
-      for (int k = 0; k < 8; ++k)
-        corners[k] = static_cast<std::uint32_t>(ids[type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k]);
-      bool finite = true;
-      for (std::uint32_t id : corners)
-        finite = finite && std::isfinite(impl.PointData[4 * id + 3]);
-      if (!finite)
-      {
-        ++withNaN;
-        continue;
-      }
-      impl.CellPoints.insert(impl.CellPoints.end(), corners.begin(), corners.end());
-    }
-    if (others > 0)
-    {
-      vtkErrorMacro(<< others << " cells are not hexahedra or voxels: split the mesh with "
-                    << "vtkHexahedraToTetrahedra and render it with vtkPreIntegratedTetrahedraMapper");
-      impl.CellPoints.clear();
-      return;
-    }
-    // Folded cells (a crushed mesh): told, not refused.
-    std::atomic<vtkIdType> tangled(0);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(impl.CellPoints.size() / 8), [&](vtkIdType begin, vtkIdType end) {
-      vtkIdType found = 0;
-      for (vtkIdType c = begin; c < end; ++c)
-      {
-        glm::dvec3 p[8];
-        for (int k = 0; k < 8; ++k)
-        {
-          const float* x = &impl.PointData[4 * impl.CellPoints[8 * c + k]];
-          p[k] = glm::dvec3(x[0], x[1], x[2]);
-        }
-        found += uv::IsTangledHexahedron(p) ? 1 : 0;
-      }
-      tangled += found;
-    });
-    impl.TangledCells = tangled;
-    if (impl.TangledCells > 0)
-    {
-      vtkWarningMacro(<< impl.TangledCells << " hexahedra are tangled (their Jacobian changes sign, as in a "
-                      << "crushed mesh): what a ray integrates through them is not well defined");
-    }
-    if (withNaN > 0 && !impl.WarnedNaN)
-    {
-      vtkWarningMacro(<< withNaN << " cells touch a NaN scalar and are left out (holes in the mesh)");
-      impl.WarnedNaN = true;
-    }
-    // Face adjacency by sorting the faces' sorted point ids.
-    const std::size_t cellCount = impl.CellPoints.size() / 8;
-    std::vector<FaceRecord> faces(6 * cellCount);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(cellCount), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType c = begin; c < end; ++c)
-        for (int f = 0; f < 6; ++f)
-        {
-          FaceRecord& record = faces[6 * c + f];
-          for (int k = 0; k < 4; ++k)
-            record.Key[k] = impl.CellPoints[8 * c + uv::HexahedronFaces[f].Vertices[k]];
-          std::sort(record.Key.begin(), record.Key.end());
-          record.CellFace = static_cast<std::uint32_t>(8 * c + f);
-        }
-    });
-    this->UpdateProgress(0.4);
-    vtkSMPTools::Sort(faces.begin(), faces.end());
-    this->UpdateProgress(0.8);
-    impl.Neighbours.assign(8 * cellCount, -1);
-    impl.BoundaryFaces.clear();
-    for (std::size_t i = 0; i < faces.size();)
-    {
-      std::size_t j = i + 1;
-      while (j < faces.size() && faces[j].Key == faces[i].Key)
-        ++j;
-      if (j - i == 2)
-      {
-        const std::uint32_t a = faces[i].CellFace, b = faces[i + 1].CellFace;
-        impl.Neighbours[8 * (a / 8) + a % 8] = static_cast<std::int32_t>(b);
-        impl.Neighbours[8 * (b / 8) + b % 8] = static_cast<std::int32_t>(a);
-      }
-      else
-      {
-        // A boundary face (or a non-manifold one: every copy is treated as boundary).
-        for (std::size_t k = i; k < j; ++k)
-        {
-          const std::uint32_t cf = faces[k].CellFace;
-          impl.BoundaryFaces.insert(impl.BoundaryFaces.end(),
-            { static_cast<std::int32_t>(cf / 8), static_cast<std::int32_t>(cf % 8), 0, 0 });
-        }
-      }
-      i = j;
-    }
-    impl.MeshKey = meshKey;
-    ++impl.MeshBuilds;
-    this->UpdateProgress(1.0);
-  }
-  const std::size_t cellCount = impl.CellPoints.size() / 8;
-  const std::size_t boundaryCount = impl.BoundaryFaces.size() / 4;
-  if (cellCount == 0 || boundaryCount == 0)
-  {
-    return;
-  }
+bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target)
+{
+  Internals& impl = *this->Impl;
+  impl.Images.Resize(frame.Window, frame.Width, frame.Height);
+  const PassFrame pass = PassFrame::Make(frame, impl.Mesh.Points.Center, target.GetNoAttributes());
+  TraversalSettings settings;
+  settings.IntegrationMode = this->IntegrationMode;
+  settings.FixedSteps = this->FixedSteps;
+  settings.ExactEnds = this->ExactSegmentEnds;
+  settings.OpacityThreshold = static_cast<float>(this->OpacityThreshold);
+  settings.MaximumCells = static_cast<int>(std::min<std::size_t>(impl.Mesh.CellCount() + 8, 1 << 20));
+  settings.IsosurfaceCount = static_cast<int>(impl.DrawnIsosurfaces.size());
 
-  // ---- Transfer function as at most 64 uniform nodes, normalised like the scalar.
-  vtkVolumeProperty* property = volume->GetProperty();
-  std::vector<uv::TransferFunction::Node> nodes = uvvtk::TransferFunctionNodes(property);
-  if (nodes.empty())
-  {
-    vtkErrorMacro("the volume property has no scalar opacity function");
-    return;
-  }
-  if (nodes.size() > static_cast<std::size_t>(uvgl::MaximumUniformNodes))
-  {
-    // Fewer subdivisions of curved functions first; resample evenly as a last resort.
-    nodes = uvvtk::TransferFunctionNodes(property, 1);
-    if (nodes.size() > static_cast<std::size_t>(uvgl::MaximumUniformNodes))
-    {
-      const uv::TransferFunction tf(nodes);
-      const double first = nodes.front().Scalar, last = nodes.back().Scalar;
-      nodes.clear();
-      for (int k = 0; k < uvgl::MaximumUniformNodes; ++k)
-      {
-        const double s = first + (last - first) * k / (uvgl::MaximumUniformNodes - 1);
-        const auto n = tf.Evaluate(s);
-        nodes.push_back({ s, n.Color, n.Extinction });
-      }
-      vtkWarningMacro("more than " << uvgl::MaximumUniformNodes << " transfer-function nodes: resampled to that many");
-    }
-  }
-  for (auto& node : nodes)
-  {
-    node.Scalar = (node.Scalar - impl.ScalarOffset) * impl.ScalarScale;
-  }
-
-  // ---- Camera.
-  int width, height, originX, originY;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
-  if (width < 1 || height < 1)
-  {
-    return;
-  }
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double aspect = static_cast<double>(width) / height;
-  const glm::dmat4 modelToWorld = uvgl::ToGlm(volume->GetMatrix()) * glm::translate(glm::dmat4(1.0), impl.Center);
-  const glm::dmat4 worldToEye = uvgl::ToGlm(camera->GetModelViewTransformMatrix());
-  const glm::dmat4 modelToEye = worldToEye * modelToWorld;
-  const glm::dmat4 modelToClip = uvgl::ToGlm(camera->GetProjectionTransformMatrix(aspect, -1, 1)) * modelToEye;
-  const glm::mat4 modelToEyeF(modelToEye);
-  const glm::mat3 normalToEyeF(glm::transpose(glm::inverse(glm::dmat3(modelToEye))));
-  const glm::mat4 modelToClipF(modelToClip), clipToModelF(glm::inverse(modelToClip));
-  // A perspective eye inside the mesh: rays start there, in the cell that holds it.
-  const glm::dvec3 eyeModel =
-    glm::dvec3(glm::inverse(uvgl::ToGlm(camera->GetModelViewTransformMatrix()) * modelToWorld) * glm::dvec4(0, 0, 0, 1));
-  int eyeCell = -1;
-  if (!camera->GetParallelProjection())
-  {
-    if (impl.EyeCellKey != impl.MeshKey || impl.EyeCellPosition != eyeModel)
-    {
-      impl.EyeCell = -1;
-      for (std::size_t c = 0; c < cellCount && impl.EyeCell < 0; ++c)
-      {
-        glm::dvec3 p[8], low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
-        for (int k = 0; k < 8; ++k)
-        {
-          const float* x = &impl.PointData[4 * impl.CellPoints[8 * c + k]];
-          p[k] = glm::dvec3(x[0], x[1], x[2]);
-          low = glm::min(low, p[k]);
-          high = glm::max(high, p[k]);
-        }
-        if (glm::any(glm::lessThan(eyeModel, low)) || glm::any(glm::greaterThan(eyeModel, high)))
-          continue;
-        glm::dvec3 xi(0.5);
-        if (uv::InverseTrilinear(p, eyeModel, xi) && uv::InUnitCube(xi, 1e-9))
-          impl.EyeCell = static_cast<int>(c);
-      }
-      impl.EyeCellKey = impl.MeshKey;
-      impl.EyeCellPosition = eyeModel;
-    }
-    eyeCell = impl.EyeCell;
-  }
-
-  // ---- GPU resources.
-  if (impl.Context != window)
-  {
-    impl.ReleaseGraphics();
-    impl.Context = window;
-  }
-  window->MakeCurrent();
-  vtkOpenGLClearErrorMacro();
-  vtkOpenGLState* state = window->GetState();
-  if (!impl.MeshOnGpu)
-  {
-    uvgl::UploadBufferTexture(window, impl.CellPointBuffer, impl.CellPointTexture, impl.CellPoints, 4);
-    uvgl::UploadBufferTexture(window, impl.PointBuffer, impl.PointTexture, impl.PointData, 4);
-    uvgl::UploadBufferTexture(window, impl.NeighbourBuffer, impl.NeighbourTexture, impl.Neighbours, 4);
-    uvgl::UploadBufferTexture(window, impl.BoundaryBuffer, impl.BoundaryTexture, impl.BoundaryFaces, 4);
-    impl.MeshOnGpu = true;
-  }
-  uvgl::EnsurePsiTexture(impl.PsiTexture, window);
-  // Isosurfaces, normalised like the scalar: uploaded when they or the normalisation change.
-  const std::vector<uv::Isosurface> isosurfaces = impl.Isosurfaces.Drawn(impl.ScalarOffset, impl.ScalarScale);
-  std::string isosurfacesKey = "n" + std::to_string(isosurfaces.size());
-  for (const uv::Isosurface& s : isosurfaces)
-    isosurfacesKey += ":" + std::to_string(s.Value) + "," + std::to_string(s.Color[0]) + "," +
-      std::to_string(s.Color[1]) + "," + std::to_string(s.Color[2]) + "," + std::to_string(s.Opacity);
-  if (isosurfacesKey != impl.UploadedIsosurfacesKey || !impl.IsosurfaceTexture->GetHandle())
-  {
-    uvgl::UploadIsosurfaces(impl.IsosurfaceTexture, window, isosurfaces);
-    impl.UploadedIsosurfacesKey = isosurfacesKey;
-  }
-  if (impl.ImageSize[0] != width || impl.ImageSize[1] != height)
-  {
-    for (vtkTextureObject* texture : { impl.EntryTexture.Get(), impl.ExitTexture.Get(),
-           impl.AccumulationTexture[0].Get(), impl.AccumulationTexture[1].Get() })
-    {
-      texture->SetContext(window);
-      texture->SetMinificationFilter(vtkTextureObject::Nearest);
-      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-      texture->Allocate2D(width, height, 4, VTK_FLOAT);
-    }
-    impl.EntryDepthTexture->SetContext(window);
-    impl.EntryDepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
-    impl.OpaqueDepthTexture->SetContext(window);
-    impl.OpaqueDepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
-    impl.Framebuffer->SetContext(window);
-    impl.ImageSize[0] = width;
-    impl.ImageSize[1] = height;
-  }
-  uvgl::CopySceneDepth(impl.OpaqueDepthTexture, originX, originY, width, height); // far if multisampled
-
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunctionSaver(state);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglDepthFunc depthFunctionSaver(state);
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
-
-  const std::string defines = uvgl::TransferFunctionDefines(nodes); // at most 64 nodes: uniforms
-  const std::initializer_list<std::pair<const char*, const char*>> faces = { { "//UV::BilinearFace", uvBilinearFaceLib } };
-  const std::string entryVertexSource = uvgl::ShaderSource(uvHexahedralEntryVS, defines);
-  const std::string entryFragmentSource = uvgl::ShaderSource(uvHexahedralEntryFS, defines, faces);
-  const std::string traverseSource = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
-    { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
-      { "//UV::Phong", uvPhongLib } });
-  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
-
-  impl.Framebuffer->SaveCurrentBindingsAndBuffers();
-  impl.Framebuffer->Bind();
-  state->vtkglViewport(0, 0, width, height);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglDisable(GL_BLEND);
-  // Start: nothing accumulated.
-  impl.Framebuffer->AddColorAttachment(0, impl.AccumulationTexture[0]);
-  impl.Framebuffer->ActivateDrawBuffers(1);
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
-  int source = 0;
-  GLuint query = 0;
-  glGenQueries(1, &query);
-  bool failed = false;
-  for (int peel = 0; peel < this->MaximumPeels; ++peel)
-  {
-    // Entry pass: the nearest entering boundary face beyond the previous exit.
-    impl.Framebuffer->AddColorAttachment(0, impl.EntryTexture);
-    impl.Framebuffer->AddDepthAttachment(impl.EntryDepthTexture);
-    impl.Framebuffer->ActivateDrawBuffers(1);
-    state->vtkglClearColor(0.0f, -1.0f, 0.0f, 0.0f);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_LESS);
-    vtkShaderProgram* entry = window->GetShaderCache()->ReadyShaderProgram(
-      entryVertexSource.c_str(), entryFragmentSource.c_str(), "");
-    if (!entry)
-    {
-      failed = true;
-      break;
-    }
-    impl.BoundaryTexture->Activate();
-    impl.CellPointTexture->Activate();
-    impl.PointTexture->Activate();
-    impl.ExitTexture->Activate();
-    entry->SetUniformi("boundaryFaces", impl.BoundaryTexture->GetTextureUnit());
-    entry->SetUniformi("cellPoints", impl.CellPointTexture->GetTextureUnit());
-    entry->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
-    entry->SetUniformi("previousExit", impl.ExitTexture->GetTextureUnit());
-    entry->SetUniformi("firstPeel", peel == 0 ? 1 : 0);
-    entry->SetUniformMatrix4x4("modelToClip", const_cast<float*>(glm::value_ptr(modelToClipF)));
-    entry->SetUniformMatrix4x4("clipToModel", const_cast<float*>(glm::value_ptr(clipToModelF)));
-    entry->SetUniform2f("viewportSize", viewport);
-    impl.NoAttributes->Bind();
-    glBeginQuery(GL_SAMPLES_PASSED, query);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * boundaryCount));
-    glEndQuery(GL_SAMPLES_PASSED);
-    impl.NoAttributes->Release();
-    impl.ExitTexture->Deactivate();
-    GLuint samples = 0;
-    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
-    impl.Framebuffer->RemoveDepthAttachment();
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDepthMask(GL_FALSE);
-    if (samples == 0 && !(peel == 0 && eyeCell >= 0))
-    {
-      impl.BoundaryTexture->Deactivate();
-      impl.CellPointTexture->Deactivate();
-      impl.PointTexture->Deactivate();
-      break; // no ray enters the mesh again
-    }
-    ++impl.Peels;
-
-    // Traversal pass: walk and integrate, compositing into the other accumulation texture.
-    const int target = 1 - source;
-    impl.Framebuffer->AddColorAttachment(0, impl.AccumulationTexture[target]);
-    impl.Framebuffer->AddColorAttachment(1, impl.ExitTexture);
-    impl.Framebuffer->ActivateDrawBuffers(2);
-    vtkShaderProgram* traverse =
-      window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, traverseSource.c_str(), "");
-    if (!traverse)
-    {
-      failed = true;
-      break;
-    }
-    impl.EntryTexture->Activate();
-    impl.AccumulationTexture[source]->Activate();
-    impl.OpaqueDepthTexture->Activate();
-    impl.NeighbourTexture->Activate();
-    impl.PsiTexture->Activate();
-    impl.IsosurfaceTexture->Activate();
-    traverse->SetUniformi("entry", impl.EntryTexture->GetTextureUnit());
-    traverse->SetUniformi("accumulated", impl.AccumulationTexture[source]->GetTextureUnit());
-    traverse->SetUniformi("opaqueDepth", impl.OpaqueDepthTexture->GetTextureUnit());
-    traverse->SetUniformi("boundaryFaces", impl.BoundaryTexture->GetTextureUnit());
-    traverse->SetUniformi("cellPoints", impl.CellPointTexture->GetTextureUnit());
-    traverse->SetUniformi("cellNeighbours", impl.NeighbourTexture->GetTextureUnit());
-    traverse->SetUniformi("pointData", impl.PointTexture->GetTextureUnit());
-    uvgl::SetTransferFunctionUniforms(traverse, nodes, nullptr, impl.PsiTexture); // at most 64: uniforms
-    traverse->SetUniformi("isosurfaces", impl.IsosurfaceTexture->GetTextureUnit());
-    traverse->SetUniformi("isosurfaceCount", static_cast<int>(isosurfaces.size()));
-    traverse->SetUniformMatrix4x4("modelToEye", const_cast<float*>(glm::value_ptr(modelToEyeF)));
-    traverse->SetUniformMatrix3x3("normalToEye", const_cast<float*>(glm::value_ptr(normalToEyeF)));
-    traverse->SetUniformi("parallelProjection", camera->GetParallelProjection() ? 1 : 0);
-    uvgl::SetPhongUniforms(traverse, renderer, property, worldToEye);
-    traverse->SetUniformMatrix4x4("clipToModel", const_cast<float*>(glm::value_ptr(clipToModelF)));
-    traverse->SetUniform2f("viewportSize", viewport);
-    traverse->SetUniformi("integrationMode", this->IntegrationMode);
-    traverse->SetUniformi("fixedSteps", this->FixedSteps);
-    traverse->SetUniformi("exactEnds", this->ExactSegmentEnds ? 1 : 0);
-    traverse->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
-    traverse->SetUniformi("maximumCells", static_cast<int>(std::min<std::size_t>(cellCount + 8, 1 << 20)));
-    traverse->SetUniformi("eyeCell", peel == 0 ? eyeCell : -1);
-    const float eye[3] = { static_cast<float>(eyeModel.x), static_cast<float>(eyeModel.y), static_cast<float>(eyeModel.z) };
-    traverse->SetUniform3f("eyeModel", eye);
-    impl.NoAttributes->Bind();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    impl.NoAttributes->Release();
-    for (vtkTextureObject* texture : { impl.EntryTexture.Get(), impl.AccumulationTexture[source].Get(),
-           impl.OpaqueDepthTexture.Get(), impl.NeighbourTexture.Get(), impl.PsiTexture.Get(), impl.IsosurfaceTexture.Get(),
-           impl.BoundaryTexture.Get(), impl.CellPointTexture.Get(), impl.PointTexture.Get() })
-    {
-      texture->Deactivate();
-    }
-    impl.Framebuffer->RemoveColorAttachment(1);
-    impl.Framebuffer->ActivateDrawBuffers(1);
-    source = target;
-  }
-  glDeleteQueries(1, &query);
-  if (this->KeepFloatImage && !failed)
-  {
-    impl.Framebuffer->AddColorAttachment(0, impl.AccumulationTexture[source]);
-    uvgl::ReadFloatImage(impl.Framebuffer, 0, width, height, impl.FloatImage);
-  }
-  impl.Framebuffer->RestorePreviousBindingsAndBuffers();
-  if (failed)
+  impl.Images.Framebuffer->SaveCurrentBindingsAndBuffers();
+  impl.Images.Framebuffer->Bind();
+  frame.Window->GetState()->vtkglDisable(GL_BLEND);
+  const bool drawn = impl.Peel(pass, settings, target, this->MaximumPeels);
+  impl.Images.Framebuffer->RestorePreviousBindingsAndBuffers();
+  if (!drawn)
   {
     vtkErrorMacro("the hexahedral ray-casting shaders failed to compile or link");
-    return;
   }
-
-  // ---- Blend the result into VTK's scene.
-  if (!uvgl::CompositeIntoScene(
-        window, impl.AccumulationTexture[source], impl.NoAttributes, originX, originY, width, height))
-  {
-    vtkErrorMacro("the composite shaders failed to compile or link");
-    return;
-  }
-  vtkOpenGLCheckErrorMacro("failed after ray casting the hexahedra");
+  return drawn;
 }

@@ -5,13 +5,17 @@
  * After "Volume rendering of unstructured hexahedral meshes" (Miranda and Celes). No split into
  * tetrahedra: each ray walks the hexahedra by face adjacency on the GPU (mesh in buffer textures),
  * starting from the boundary faces an entry pass rasterises; depth peeling picks rays up again
- * where they leave a non-convex mesh and re-enter it. Faces are two triangles split along the
- * diagonal through their smallest point id, in every pass and every cell, so the walk is watertight.
+ * where they leave a non-convex mesh and re-enter it. Faces are the exact bilinear patches through
+ * their corners, parameterised from their smallest point id by every cell that shares them, so the
+ * exit one cell finds is bitwise the entry of the next and the walk is watertight; the rasterised
+ * triangles of the boundary faces only choose which pixels test a face. A ray that passes within
+ * rounding of an edge or corner, where no face claims it, is relocated to the cell just ahead.
  *
- * Along a ray inside a cell the scalar is the exact cubic of the trilinear field in the cell's
- * affine frame (exact for any parallelepiped, in any orientation; for curved cells an approximation
- * whose error the tests and benchmark measure). The integral is split at the cubic's extrema and at
- * transfer-function nodes (safeguarded Newton per monotonic interval), then:
+ * Along a ray inside a cell the scalar is the cubic of the trilinear field in the cell's affine
+ * frame (exact for any parallelepiped, in any orientation); on curved cells, with ExactSegmentEnds
+ * (default), the cubic through exact values at the segment's ends and two inner points, otherwise
+ * the frame's approximation. The integral is split at the cubic's extrema and at transfer-function
+ * nodes (safeguarded Newton per monotonic interval), then:
  * - ACCURATE: Gauss-Legendre on each piece, exact optical depth (the paper's Hexa_ACC);
  * - FAST: the scalar linear between split points, pre-integrated with the Psi table (Hexa_FAST);
  * - FIXED_STEPS: FixedSteps constant steps per cell (Hexa_CONST), for comparison.
@@ -25,26 +29,33 @@
  * boundary face covers cost nothing beyond the entry pass; a cell whose scalar range the transfer
  * function makes transparent (and holding no isovalue) costs one range test, no integration.
  *
+ * The traversal reads transfer-function nodes from uniforms: a function with more than
+ * uvgl::MaximumUniformNodes nodes is approximated by fewer (with a warning). A perspective eye inside
+ * the mesh starts every ray of the first peel in the cell holding it.
+ *
  * Input: any vtkDataSet of hexahedra and voxels with a point scalar: vtkUnstructuredGrid, and
  * vtkStructuredGrid (blanked cells left out), vtkImageData and vtkRectilinearGrid as they are, with
  * no conversion. Other cells are an error: split mixed meshes with vtkHexahedraToTetrahedra and
- * render them with vtkPreIntegratedTetrahedraMapper.
+ * render them with vtkPreIntegratedTetrahedraMapper. Cells touching a NaN scalar are left out (one
+ * warning); folded (tangled) cells are rendered, with a warning per mesh build.
  */
 #ifndef vtkHexahedralRayCastMapper_h
 #define vtkHexahedralRayCastMapper_h
 
-#include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkUnstructuredVolumeMapper.h"
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class vtkImageData;
+class vtkDataArray;
+class vtkDataSet;
+class vtkVolumeProperty;
 
-class VTKUNSTRUCTUREDVOLUME_EXPORT vtkHexahedralRayCastMapper : public vtkUnstructuredGridVolumeMapper
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkHexahedralRayCastMapper : public vtkUnstructuredVolumeMapper
 {
 public:
   static vtkHexahedralRayCastMapper* New();
-  vtkTypeMacro(vtkHexahedralRayCastMapper, vtkUnstructuredGridVolumeMapper);
+  vtkTypeMacro(vtkHexahedralRayCastMapper, vtkUnstructuredVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum IntegrationModes
@@ -91,54 +102,44 @@ public:
   ///@}
 
   ///@{
-  /// Isosurfaces: a scalar value, an RGB colour and an opacity in [0, 1] each.
-  void AddIsosurface(double value, double red, double green, double blue, double opacity);
-  void RemoveAllIsosurfaces();
-  int GetNumberOfIsosurfaces();
-  ///@}
-
-  ///@{
-  /// Keep the last frame's premultiplied float RGBA image (tests and benchmark).
-  vtkSetMacro(KeepFloatImage, bool);
-  vtkGetMacro(KeepFloatImage, bool);
-  vtkImageData* GetFloatImage();
-  ///@}
-
-  ///@{
   /// What the last frame did: cells in the mesh, boundary faces, peels run, mesh builds, and the
   /// cells found tangled (folded over themselves; warned about once per mesh build).
   vtkIdType GetNumberOfCells();
   vtkIdType GetNumberOfTangledCells();
-  /// Bytes of GPU buffers the mesh takes (cells, points, adjacency, boundary faces; not the
-  /// screen-sized images).
-  vtkIdType GetMeshMemoryInBytes();
   vtkIdType GetNumberOfBoundaryFaces();
   int GetNumberOfPeels();
   int GetNumberOfMeshBuilds();
   ///@}
 
+  /// Cells, points, adjacency and boundary faces (not the screen-sized images).
+  vtkIdType GetMeshMemoryInBytes() override;
+
   /// Any vtkDataSet (the superclass takes vtkUnstructuredGridBase only).
   using Superclass::SetInputData;
   void SetInputData(vtkDataSet* input) override;
-
-  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
-  void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
   vtkHexahedralRayCastMapper();
   ~vtkHexahedralRayCastMapper() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
+  bool Prepare(const vtkUnstructuredVolumeFrame& frame) override;
+  bool Upload(const vtkUnstructuredVolumeFrame& frame) override;
+  bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) override;
+  void ReleaseMapperGraphics() override;
+
   int IntegrationMode = ACCURATE;
   int FixedSteps = 8;
   bool ExactSegmentEnds = true;
   double OpacityThreshold = 0.99;
   int MaximumPeels = 8;
-  bool KeepFloatImage = false;
 
 private:
   vtkHexahedralRayCastMapper(const vtkHexahedralRayCastMapper&) = delete;
   void operator=(const vtkHexahedralRayCastMapper&) = delete;
+
+  bool UpdateMesh(vtkDataSet* input, vtkDataArray* scalars);
+  bool UpdateTransferFunction(vtkVolumeProperty* property);
 
   class Internals;
   std::unique_ptr<Internals> Impl;

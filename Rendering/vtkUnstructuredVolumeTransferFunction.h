@@ -132,6 +132,36 @@ inline std::vector<uv::TransferFunction::Node> TransferFunctionNodes(
   return nodes;
 }
 
+/// TransferFunctionNodes, at most `maximum` (at least 2) of them, for a shader that reads nodes from
+/// uniforms only: curved functions get one piece per interval first; when that is still too many, the
+/// function is resampled at `maximum` evenly spaced scalars over its nodes' range and `resampled` set.
+inline std::vector<uv::TransferFunction::Node> TransferFunctionNodesAtMost(
+  vtkVolumeProperty* property, std::size_t maximum, bool& resampled)
+{
+  resampled = false;
+  std::vector<uv::TransferFunction::Node> nodes = TransferFunctionNodes(property);
+  if (nodes.size() <= maximum)
+  {
+    return nodes;
+  }
+  nodes = TransferFunctionNodes(property, 1);
+  if (nodes.size() <= maximum)
+  {
+    return nodes;
+  }
+  const uv::TransferFunction function(nodes);
+  const double first = nodes.front().Scalar, last = nodes.back().Scalar;
+  nodes.clear();
+  for (std::size_t k = 0; k < maximum; ++k)
+  {
+    const double s = first + (last - first) * static_cast<double>(k) / static_cast<double>(maximum - 1);
+    const auto node = function.Evaluate(s);
+    nodes.push_back({ s, node.Color, node.Extinction });
+  }
+  resampled = true;
+  return nodes;
+}
+
 /// A property's nodes with their scalars normalised as a mapper uploads its field ((s - offset) *
 /// scale), rebuilt only when the property or the normalisation changes.
 class NormalisedTransferFunction
@@ -140,21 +170,29 @@ public:
   std::vector<uv::TransferFunction::Node> Nodes;
 
   /// True when the nodes were rebuilt (upload them again; isovalues normalised the same way too).
-  /// Nodes stays empty when the property has no opacity function.
-  bool Update(vtkVolumeProperty* property, double offset, double scale)
+  /// Nodes stays empty when the property has no opacity function. A `maximumNodes` other than 0
+  /// limits their number (TransferFunctionNodesAtMost; Resampled tells whether it resampled).
+  bool Update(vtkVolumeProperty* property, double offset, double scale, std::size_t maximumNodes = 0)
   {
-    if (property->GetMTime() == this->Time && offset == this->Offset && scale == this->Scale)
+    if (property->GetMTime() == this->Time && offset == this->Offset && scale == this->Scale &&
+      maximumNodes == this->MaximumNodes)
       return false;
-    this->Nodes = TransferFunctionNodes(property);
+    this->Resampled = false;
+    this->Nodes = maximumNodes > 0 ? TransferFunctionNodesAtMost(property, maximumNodes, this->Resampled)
+                                   : TransferFunctionNodes(property);
     for (auto& node : this->Nodes)
       node.Scalar = (node.Scalar - offset) * scale;
     this->Time = property->GetMTime();
     this->Offset = offset;
     this->Scale = scale;
+    this->MaximumNodes = maximumNodes;
     return true;
   }
 
+  bool Resampled = false; ///< the last rebuild resampled the function to maximumNodes nodes
+
 private:
+  std::size_t MaximumNodes = 0;
   vtkMTimeType Time = 0;
   double Offset = std::numeric_limits<double>::quiet_NaN(), Scale = std::numeric_limits<double>::quiet_NaN();
 };

@@ -96,7 +96,7 @@ int HitPatch(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out fl
   return HitPatchAt(origin, direction, a, b, c, d, t0, t1, uv0, uv1);
 }
 
-/// Outward normal of the patch at (the point nearest to) `x`, from the cell centre's side.
+/// The patch's mean normal (the cross product of its diagonals), turned away from the cell's centre.
 vec3 PatchNormal(vec3 a, vec3 b, vec3 c, vec3 d, vec3 cellCentre)
 {
   vec3 n = cross(c - a, d - b);

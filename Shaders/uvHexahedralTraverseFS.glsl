@@ -15,9 +15,7 @@ uniform sampler2D entry;        // (ray parameter, boundary face) of this peel, 
 uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
 uniform sampler2D opaqueDepth;
 uniform isamplerBuffer boundaryFaces;
-uniform usamplerBuffer cellPoints;   // 8 point ids per cell
 uniform isamplerBuffer cellNeighbours; // per cell 6 values (2 texels): neighbour * 8 + its face, or -1
-uniform samplerBuffer pointData;
 uniform mat4 clipToModel;
 uniform vec2 viewportSize;
 uniform int integrationMode;    // 0 accurate, 1 fast, 2 fixed steps
@@ -33,12 +31,12 @@ uniform mat4 modelToEye;
 uniform mat3 normalToEye;       // inverse transpose of modelToEye's linear part
 uniform int parallelProjection;
 
-const int faceCorners[24] = int[24](0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7);
 const float gaussNodes[6] = float[6](-0.9324695142, -0.6612093865, -0.2386191861, 0.2386191861, 0.6612093865,
   0.9324695142);
 const float gaussWeights[6] = float[6](0.1713244924, 0.3607615730, 0.4679139346, 0.4679139346, 0.3607615730,
   0.1713244924);
 const int maximumCuts = 32;
+const float noExit = 3.0e38; // a ray parameter beyond every other
 
 vec3 colour = vec3(0.0);
 float transmittance = 1.0;
@@ -46,6 +44,10 @@ float transmittance = 1.0;
 //UV::TransferFunction
 
 //UV::Phong
+
+//UV::BilinearFace
+
+//UV::Hexahedron
 
 vec4 Evaluate(float s) // (r, g, b, extinction)
 {
@@ -58,14 +60,38 @@ void Composite(vec3 premultiplied, float depth)
   transmittance *= exp(-depth);
 }
 
-// ---- The current segment (set by the traversal before it integrates a cell)
+// ---- The loaded cell (set by LoadCell; the walk, the integration and the lighting read it)
+uint cellIds[8];
 vec3 points[8];
 float scalars[8];
-// The loaded cell's isoparametric map, x = p0 + b r + c s + d t + e rs + f rt + g st + h rst (set
-// by LoadCell: the Jacobian, the inverse map and the curved-cell test all read it).
+// Its isoparametric map, x = p0 + b r + c s + d t + e rs + f rt + g st + h rst: the Jacobian, the
+// inverse map and the curved-cell test read it.
 vec3 mapB, mapC, mapD, mapE, mapF, mapG, mapH;
-vec3 segmentXi0, segmentXi1;  // the segment's ends in the cell's trilinear coordinates
-vec3 segmentStartPoint, segmentEndPoint; // and in model space
+
+void LoadCell(int cell)
+{
+  CellPointIds(cell, cellIds);
+  for (int k = 0; k < 8; ++k)
+  {
+    vec4 data = texelFetch(pointData, int(cellIds[k]));
+    points[k] = data.xyz;
+    scalars[k] = data.w;
+  }
+  mapB = points[1] - points[0];
+  mapC = points[3] - points[0];
+  mapD = points[4] - points[0];
+  mapE = points[0] - points[1] + points[2] - points[3];
+  mapF = points[0] - points[1] - points[4] + points[5];
+  mapG = points[0] - points[3] - points[4] + points[7];
+  mapH = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
+}
+
+/// The neighbour across each face of `cell`: neighbour * 8 + its face, or -1.
+void CellNeighbours(int cell, out int across[6])
+{
+  ivec4 a = texelFetch(cellNeighbours, 2 * cell), b = texelFetch(cellNeighbours, 2 * cell + 1);
+  across = int[6](a.x, a.y, a.z, a.w, b.x, b.y);
+}
 
 /// d(position)/d(r, s, t) of the loaded cell at xi.
 mat3 Jacobian(vec3 xi)
@@ -73,6 +99,33 @@ mat3 Jacobian(vec3 xi)
   float r = xi.x, s = xi.y, t = xi.z;
   return mat3(mapB + mapE * s + mapF * t + mapH * s * t, mapC + mapE * r + mapG * t + mapH * r * t,
     mapD + mapF * r + mapG * s + mapH * r * s);
+}
+
+/// Trilinear coordinates of x in the loaded cell: Newton on the isoparametric map from `xi`.
+vec3 InverseTrilinear(vec3 x, vec3 xi)
+{
+  for (int iteration = 0; iteration < 8; ++iteration)
+  {
+    float r = xi.x, s = xi.y, t = xi.z;
+    vec3 mapped = points[0] + mapB * r + mapC * s + mapD * t + mapE * r * s + mapF * r * t + mapG * s * t +
+      mapH * r * s * t;
+    mat3 jacobian = Jacobian(xi);
+    if (abs(determinant(jacobian)) < 1e-30)
+      break;
+    vec3 step = inverse(jacobian) * (mapped - x);
+    xi = clamp(xi - step, vec3(-0.5), vec3(1.5));
+    if (max(abs(step.x), max(abs(step.y), abs(step.z))) < 1e-6)
+      break;
+  }
+  return xi;
+}
+
+/// Whether the loaded cell's map has bilinear terms: a parallelepiped's map is its frame, whose cubic
+/// is exact.
+bool IsCurved(HexahedronFrame frame)
+{
+  float twist = max(max(length(mapE), length(mapF)), max(length(mapG), length(mapH)));
+  return twist > 1e-5 * (length(frame.axes[0]) + length(frame.axes[1]) + length(frame.axes[2]));
 }
 
 /// The gradient of the loaded cell's trilinear field at xi, in model space.
@@ -91,6 +144,10 @@ vec3 FieldGradient(vec3 xi)
     return vec3(0.0);
   return transpose(inverse(jacobian)) * local;
 }
+
+// ---- The current segment (set by IntegrateCell before it integrates)
+vec3 segmentXi0, segmentXi1;  // the segment's ends in the cell's trilinear coordinates
+vec3 segmentStartPoint, segmentEndPoint; // and in model space
 
 /// Composites isosurface `k` where the segment's parameter is u.
 void CompositeSurface(int k, float u)
@@ -172,24 +229,26 @@ float RootInBracket(vec4 c, float value, float a, float b)
   return u;
 }
 
-/// One piece [u0, u1] of the segment, between consecutive split points: the transfer function is
-/// linear on it. FAST: the scalar linear between the ends, with the Psi table.
-void IntegratePiece(vec4 c, float len, float u0, float u1)
+// ---- Integration of one cell's segment
+
+/// FAST: the piece [u0, u1]'s scalar linear between its ends, with the Psi table.
+void IntegratePieceFast(vec4 c, float len, float u0, float u1)
 {
-  if (integrationMode == 1)
+  vec4 a = Evaluate(CubicValue(c, u0)), b = Evaluate(CubicValue(c, u1));
+  float pieceLength = len * (u1 - u0);
+  float da = a.a * pieceLength, db = b.a * pieceLength;
+  if (da + db > 0.0)
   {
-    vec4 a = Evaluate(CubicValue(c, u0)), b = Evaluate(CubicValue(c, u1));
-    float pieceLength = len * (u1 - u0);
-    float da = a.a * pieceLength, db = b.a * pieceLength;
-    if (da + db > 0.0)
-    {
-      float psi = Psi(da, db);
-      float zeta = exp(-0.5 * (da + db));
-      Composite(a.rgb * (1.0 - psi) + b.rgb * (psi - zeta), 0.5 * (da + db));
-    }
-    return;
+    float psi = Psi(da, db);
+    float zeta = exp(-0.5 * (da + db));
+    Composite(a.rgb * (1.0 - psi) + b.rgb * (psi - zeta), 0.5 * (da + db));
   }
-  // Accurate: the transfer function is linear on this piece; extinction and colour are cubics.
+}
+
+/// ACCURATE: the transfer function is linear on the piece [u0, u1], so extinction and colour are
+/// cubics; exact optical depth, Gauss-Legendre colour on sub-pieces of bounded depth.
+void IntegratePieceAccurate(vec4 c, float len, float u0, float u1)
+{
   float mid = CubicValue(c, 0.5 * (u0 + u1));
   int below = NodesAtOrBelow(mid);
   vec4 base, slope = vec4(0.0);
@@ -230,17 +289,20 @@ void IntegratePiece(vec4 c, float len, float u0, float u1)
   }
 }
 
-/// Integrates the cell's segment of `len` whose scalar is the cubic c(u), u in [0, 1].
-void IntegrateCubicSegment(vec4 c, float len)
+// The segment's split points, ascending, and the isosurface each is on (or -1).
+float cuts[maximumCuts];
+int surfaceAt[maximumCuts];
+int cutCount = 0;
+
+void AddCut(float u, int surface)
 {
-  if (!(len > 0.0))
-    return;
-  // Split points: 0, extrema, 1, then per monotonic interval the node and isovalue crossings (an
-  // isovalue equal to an interval's far end counts there, at its near end not: once per ray).
-  float cuts[maximumCuts];
-  int surfaceAt[maximumCuts]; // the isosurface a cut is on, or -1
-  int cutCount = 0;
-  float bounds[4];
+  surfaceAt[cutCount] = surface;
+  cuts[cutCount++] = u;
+}
+
+/// 0, the cubic's extrema inside (0, 1), and 1: the ends of its monotonic intervals, ascending.
+int MonotonicBounds(vec4 c, out float bounds[4])
+{
   int boundCount = 0;
   bounds[boundCount++] = 0.0;
   float qa = 3.0 * c.w, qb = 2.0 * c.z, qc = c.y;
@@ -269,36 +331,34 @@ void IntegrateCubicSegment(vec4 c, float len)
   if (high > 0.0 && high < 1.0 && high != low)
     bounds[boundCount++] = high;
   bounds[boundCount++] = 1.0;
-  for (int i = 0; i < boundCount; ++i)
+  return boundCount;
+}
+
+/// Cuts where the cubic, monotonic on [a, b], crosses an isovalue (one equal to the interval's far
+/// end counts there, at its near end not: once per ray) and, when `nodes`, a transfer-function node.
+void AddCrossings(vec4 c, float a, float b, bool nodes)
+{
+  float fa = CubicValue(c, a), fb = CubicValue(c, b);
+  float lo = min(fa, fb), hi = max(fa, fb);
+  for (int k = 0; k < isosurfaceCount && cutCount < maximumCuts; ++k)
   {
-    surfaceAt[cutCount] = -1;
-    cuts[cutCount++] = bounds[i];
+    float v = IsoValue(k);
+    if ((v > lo && v < hi) || (v == fb && v != fa))
+      AddCut(RootInBracket(c, v, a, b), k);
   }
-  bool constantSteps = integrationMode == 2;
-  for (int i = 0; i + 1 < boundCount; ++i)
+  if (!nodes)
+    return;
+  for (int k = NodesAtOrBelow(lo); k < nodeCount && NodeScalar(k) < hi && cutCount < maximumCuts; ++k)
   {
-    float a = bounds[i], b = bounds[i + 1];
-    float fa = CubicValue(c, a), fb = CubicValue(c, b);
-    float lo = min(fa, fb), hi = max(fa, fb);
-    for (int k = 0; k < isosurfaceCount && cutCount < maximumCuts; ++k)
-    {
-      float v = IsoValue(k);
-      if ((v > lo && v < hi) || (v == fb && v != fa))
-      {
-        surfaceAt[cutCount] = k;
-        cuts[cutCount++] = RootInBracket(c, v, a, b);
-      }
-    }
-    for (int k = NodesAtOrBelow(lo); !constantSteps && k < nodeCount && NodeScalar(k) < hi && cutCount < maximumCuts; ++k)
-    {
-      if (NodeScalar(k) > lo)
-      {
-        surfaceAt[cutCount] = -1;
-        cuts[cutCount++] = RootInBracket(c, NodeScalar(k), a, b);
-      }
-    }
+    if (NodeScalar(k) > lo)
+      AddCut(RootInBracket(c, NodeScalar(k), a, b), -1);
   }
-  for (int i = 1; i < cutCount; ++i) // insertion sort: a handful of values
+}
+
+/// Insertion sort of the cuts: a handful of values.
+void SortCuts()
+{
+  for (int i = 1; i < cutCount; ++i)
   {
     float v = cuts[i];
     int kind = surfaceAt[i];
@@ -312,42 +372,84 @@ void IntegrateCubicSegment(vec4 c, float len)
     cuts[j + 1] = v;
     surfaceAt[j + 1] = kind;
   }
-  if (constantSteps)
+}
+
+/// The split points of the cubic c(u) on [0, 1]: 0, its extrema, 1, then per monotonic interval the
+/// isovalue and (when `nodes`) node crossings.
+void FindCuts(vec4 c, bool nodes)
+{
+  float bounds[4];
+  int boundCount = MonotonicBounds(c, bounds);
+  cutCount = 0;
+  for (int i = 0; i < boundCount; ++i)
+    AddCut(bounds[i], -1);
+  for (int i = 0; i + 1 < boundCount; ++i)
+    AddCrossings(c, bounds[i], bounds[i + 1], nodes);
+  SortCuts();
+}
+
+/// FIXED_STEPS: constant steps over the cell (the paper's Hexa_CONST); a surface goes in before the
+/// first step whose midpoint lies beyond it.
+void IntegrateFixedSteps(vec4 c, float len)
+{
+  float h = len / float(fixedSteps);
+  int next = 0;
+  for (int i = 0; i < fixedSteps; ++i)
   {
-    // Constant steps over the cell (the paper's Hexa_CONST); a surface goes in before the first step
-    // whose midpoint lies beyond it.
-    float h = len / float(fixedSteps);
-    int next = 0;
-    for (int i = 0; i < fixedSteps; ++i)
-    {
-      float middle = (float(i) + 0.5) / float(fixedSteps);
-      for (; next < cutCount && cuts[next] <= middle; ++next)
-        if (surfaceAt[next] >= 0)
-          CompositeSurface(surfaceAt[next], cuts[next]);
-      vec4 n = Evaluate(CubicValue(c, middle));
-      Composite((1.0 - exp(-n.a * h)) * n.rgb, n.a * h);
-    }
-    for (; next < cutCount; ++next)
+    float middle = (float(i) + 0.5) / float(fixedSteps);
+    for (; next < cutCount && cuts[next] <= middle; ++next)
       if (surfaceAt[next] >= 0)
         CompositeSurface(surfaceAt[next], cuts[next]);
-    return;
+    vec4 n = Evaluate(CubicValue(c, middle));
+    Composite((1.0 - exp(-n.a * h)) * n.rgb, n.a * h);
   }
+  for (; next < cutCount; ++next)
+    if (surfaceAt[next] >= 0)
+      CompositeSurface(surfaceAt[next], cuts[next]);
+}
+
+/// ACCURATE and FAST: each piece between consecutive cuts, then the surface at its far end.
+void IntegratePieces(vec4 c, float len)
+{
   for (int i = 0; i + 1 < cutCount; ++i)
   {
     float u0 = cuts[i], u1 = cuts[i + 1];
     if (u1 > u0)
-      IntegratePiece(c, len, u0, u1);
+    {
+      if (integrationMode == 1)
+        IntegratePieceFast(c, len, u0, u1);
+      else
+        IntegratePieceAccurate(c, len, u0, u1);
+    }
     if (surfaceAt[i + 1] >= 0)
       CompositeSurface(surfaceAt[i + 1], u1);
   }
 }
 
-//UV::BilinearFace
-
-/// False when the transfer function is transparent over the whole scalar range [low, high] and no
-/// isovalue lies in it: such a cell costs this test, and no integration.
-bool RangeVisible(float low, float high)
+/// Integrates the cell's segment of `len` whose scalar is the cubic c(u), u in [0, 1].
+void IntegrateCubicSegment(vec4 c, float len)
 {
+  if (!(len > 0.0))
+    return;
+  bool constantSteps = integrationMode == 2;
+  FindCuts(c, !constantSteps);
+  if (constantSteps)
+    IntegrateFixedSteps(c, len);
+  else
+    IntegratePieces(c, len);
+}
+
+/// False when the transfer function is transparent over the loaded cell's whole scalar range and no
+/// isovalue lies in it (the GPU side of uvCellVisibility.h): such a cell costs this test, and no
+/// integration.
+bool CellVisible()
+{
+  float low = scalars[0], high = scalars[0];
+  for (int k = 1; k < 8; ++k)
+  {
+    low = min(low, scalars[k]);
+    high = max(high, scalars[k]);
+  }
   if (Evaluate(low).a > 0.0 || Evaluate(high).a > 0.0)
     return true;
   for (int k = 0; k < isosurfaceCount; ++k)
@@ -364,57 +466,223 @@ bool RangeVisible(float low, float high)
   return false;
 }
 
+/// The field along the segment through the isoparametric map (the frame's coordinates xi0, xi1 are
+/// the start): its ends, so the field matches the cell's where the ray crosses faces and is
+/// continuous from cell to cell on curved meshes, and two inner points; the cubic through those four
+/// exact values (on a parallelepiped the same cubic as the frame's). The ends' coordinates are
+/// updated.
+vec4 FieldThroughExactEnds(vec3 entryPoint, vec3 exitPoint, inout vec3 xi0, inout vec3 xi1)
+{
+  vec3 xiNear = InverseTrilinear(mix(entryPoint, exitPoint, 0.25), mix(xi0, xi1, 0.25));
+  vec3 xiFar = InverseTrilinear(mix(entryPoint, exitPoint, 0.75), mix(xi0, xi1, 0.75));
+  xi0 = InverseTrilinear(entryPoint, xi0);
+  xi1 = InverseTrilinear(exitPoint, xi1);
+  return CubicThroughSamples(TrilinearAlongSegment(scalars, xi0, xi0).x,
+    TrilinearAlongSegment(scalars, xiNear, xiNear).x, TrilinearAlongSegment(scalars, xiFar, xiFar).x,
+    TrilinearAlongSegment(scalars, xi1, xi1).x);
+}
+
+/// Integrates the loaded cell along the ray from parameter t to segmentEnd.
+void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd)
+{
+  HexahedronFrame frame = MakeHexahedronFrame(points);
+  vec3 entryPoint = origin + t * direction, exitPoint = origin + segmentEnd * direction;
+  vec3 xi0 = FrameCoordinates(frame, entryPoint);
+  vec3 xi1 = FrameCoordinates(frame, exitPoint);
+  vec4 field;
+  if (exactEnds == 1 && IsCurved(frame))
+    field = FieldThroughExactEnds(entryPoint, exitPoint, xi0, xi1);
+  else
+    field = TrilinearAlongSegment(scalars, xi0, xi1);
+  segmentXi0 = xi0;
+  segmentXi1 = xi1;
+  segmentStartPoint = entryPoint;
+  segmentEndPoint = exitPoint;
+  IntegrateCubicSegment(field, segmentEnd - t);
+}
+
 // ---- Traversal
 
-void LoadCell(int cell)
-{
-  uvec4 a = texelFetch(cellPoints, 2 * cell), b = texelFetch(cellPoints, 2 * cell + 1);
-  uint ids[8] = uint[8](a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w);
-  for (int k = 0; k < 8; ++k)
-  {
-    vec4 data = texelFetch(pointData, int(ids[k]));
-    points[k] = data.xyz;
-    scalars[k] = data.w;
-  }
-  mapB = points[1] - points[0];
-  mapC = points[3] - points[0];
-  mapD = points[4] - points[0];
-  mapE = points[0] - points[1] + points[2] - points[3];
-  mapF = points[0] - points[1] - points[4] + points[5];
-  mapG = points[0] - points[3] - points[4] + points[7];
-  mapH = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
-}
-
-/// Trilinear coordinates of x in the loaded cell: Newton on the isoparametric map from `xi`.
-vec3 InverseTrilinear(vec3 x, vec3 xi)
-{
-  for (int iteration = 0; iteration < 8; ++iteration)
-  {
-    float r = xi.x, s = xi.y, t = xi.z;
-    vec3 mapped = points[0] + mapB * r + mapC * s + mapD * t + mapE * r * s + mapF * r * t + mapG * s * t +
-      mapH * r * s * t;
-    mat3 jacobian = Jacobian(xi);
-    if (abs(determinant(jacobian)) < 1e-30)
-      break;
-    vec3 step = inverse(jacobian) * (mapped - x);
-    xi = clamp(xi - step, vec3(-0.5), vec3(1.5));
-    if (max(abs(step.x), max(abs(step.y), abs(step.z))) < 1e-6)
-      break;
-  }
-  return xi;
-}
-
 /// Whether a ray along `direction` leaves a cell where its face's normal is `normal` (either
-/// orientation; `outward`, the face's mean outward normal, orients it). A vanishing normal (a
-/// collapsed edge) falls back to `outward`; a collapsed face does not block.
+/// orientation; `outward`, the face's mean outward normal, orients it). A collapsed face does not
+/// block.
 bool Leaves(vec3 normal, vec3 outward, vec3 direction)
 {
-  float tiny = 1e-6 * dot(outward, outward);
-  if (!(tiny > 0.0))
+  if (!(1e-6 * dot(outward, outward) > 0.0))
     return true;
-  normal = dot(normal, normal) > tiny ? normal : outward;
-  normal = dot(normal, outward) < 0.0 ? -normal : normal;
-  return dot(normal, direction) > 0.0;
+  return dot(OrientedNormal(normal, outward), direction) > 0.0;
+}
+
+/// The face of the loaded cell (other than `enterFace`) where the ray leaves it nearest beyond t, with
+/// that parameter in exitT; -1 when no face claims the ray.
+int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
+{
+  exitT = noExit;
+  int exitFace = -1;
+  vec3 cellCentre = CellCentre(points);
+  float tolerance = 1e-6 * (1.0 + abs(t));
+  for (int f = 0; f < 6; ++f)
+  {
+    if (f == enterFace)
+      continue;
+    // The face exactly, as the bilinear patch through its corners (parameterised canonically).
+    vec3 q[4];
+    uint qi[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      q[k] = points[FaceCorner(f, k)];
+      qi[k] = cellIds[FaceCorner(f, k)];
+    }
+    vec3 a, b, c, d;
+    CanonicalQuad(q, qi, a, b, c, d);
+    float h0, h1;
+    vec2 uv0, uv1;
+    int hits = HitPatchAt(origin, direction, a, b, c, d, h0, h1, uv0, uv1);
+    // Only where the ray leaves the cell: near an edge the ray can also meet (within the edge
+    // slack) a face it enters through, just after the entry on the neighbouring face.
+    vec3 outward = PatchNormal(a, b, c, d, cellCentre);
+    if (hits > 0 && h0 > t + tolerance && h0 < exitT && Leaves(PatchNormalAt(a, b, c, d, uv0), outward, direction))
+    {
+      exitT = h0;
+      exitFace = f;
+    }
+    if (hits > 1 && h1 > t + tolerance && h1 < exitT && Leaves(PatchNormalAt(a, b, c, d, uv1), outward, direction))
+    {
+      exitT = h1;
+      exitFace = f;
+    }
+  }
+  return exitFace;
+}
+
+/// One step of the walk towards `target` from the loaded cell `cell`: the neighbour to cross to
+/// (neighbour * 8 + its face), or -1 when the walk stops, `inside` telling whether the cell holds
+/// the target (or it lies beyond a boundary face). The target's trilinear coordinates decide,
+/// consistently with the exact bilinear faces: the face crossed is the one of the most violated
+/// coordinate (r = 0: face 5, r = 1: face 3, s = 0: 2, s = 1: 4, t = 0: 0, t = 1: 1), preferring
+/// faces with a neighbour.
+int StepTowards(vec3 target, int cell, out bool inside)
+{
+  int across[6];
+  CellNeighbours(cell, across);
+  vec3 xi = InverseTrilinear(target, FrameCoordinates(MakeHexahedronFrame(points), target));
+  float violation[6] = float[6](-xi.z, xi.z - 1.0, -xi.y, xi.x - 1.0, xi.y - 1.0, -xi.x);
+  int outside = -1, outsideBoundary = -1;
+  float farthest = 1e-6, farthestBoundary = 1e-6;
+  for (int f = 0; f < 6; ++f)
+  {
+    if (across[f] >= 0 && violation[f] > farthest)
+    {
+      farthest = violation[f];
+      outside = f;
+    }
+    if (across[f] < 0 && violation[f] > farthestBoundary)
+    {
+      farthestBoundary = violation[f];
+      outsideBoundary = f;
+    }
+  }
+  inside = outside < 0 && outsideBoundary < 0;
+  return outside < 0 ? -1 : across[outside];
+}
+
+/// Walks from the loaded cell towards `target` across the faces it lies outside of; true when it
+/// found the cell holding it (then loaded, in `cell`).
+bool WalkTowards(vec3 target, inout int cell)
+{
+  bool located = false;
+  for (int walk = 0; walk < 32; ++walk)
+  {
+    bool inside;
+    int next = StepTowards(target, cell, inside);
+    if (next < 0)
+    {
+      located = inside;
+      break;
+    }
+    cell = next / 8;
+    LoadCell(cell);
+  }
+  return located;
+}
+
+/// No face claims the ray at t: it passed within rounding of an edge or a corner into a cell it only
+/// touches. Finds the cell holding a point a little ahead (farther on each attempt) by walking
+/// towards it from `cell`; false when there is none (the ray is outside the mesh). `ahead` is how far
+/// past t that point lies: the sliver of path skipped.
+bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ahead)
+{
+  int startCell = cell;
+  bool located = false;
+  for (int attempt = 0; attempt < 3 && !located; ++attempt)
+  {
+    cell = startCell;
+    LoadCell(cell);
+    ahead = (attempt == 0 ? 1e-3 : (attempt == 1 ? 1e-2 : 5e-2)) * length(points[6] - points[0]);
+    located = WalkTowards(origin + (t + ahead) * direction, cell);
+  }
+  return located;
+}
+
+/// Walks the ray from parameter t in `cell` (entered through `enterFace`, -1: none) cell by cell,
+/// integrating each, until it is opaque enough, meets opaque geometry (opaqueT) or leaves the mesh.
+/// Returns where the next peel should pick the ray up (noExit: nowhere).
+float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, float t)
+{
+  float exitParameter = noExit;
+  for (int step = 0; step < maximumCells; ++step)
+  {
+    LoadCell(cell);
+    float exitT;
+    int exitFace = FindExit(origin, direction, t, enterFace, exitT);
+    if (exitFace < 0)
+    {
+      float ahead;
+      if (!Relocate(origin, direction, t, cell, ahead))
+      {
+        exitParameter = t;
+        break;
+      }
+      enterFace = -1;
+      t += ahead;
+      continue;
+    }
+    float segmentEnd = min(exitT, opaqueT);
+    if (segmentEnd > t && CellVisible())
+      IntegrateCell(origin, direction, t, segmentEnd);
+    if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
+      break;
+    int across[6];
+    CellNeighbours(cell, across);
+    int next = across[exitFace];
+    if (next < 0)
+    {
+      exitParameter = exitT; // left the mesh: the next peel looks beyond here
+      break;
+    }
+    cell = next / 8;
+    enterFace = next % 8;
+    t = exitT;
+  }
+  return exitParameter;
+}
+
+/// The pixel's ray from where this peel enters the mesh (`start`: ray parameter, boundary face), or
+/// from the eye in its cell; returns where the next peel picks it up.
+float CastRay(ivec2 pixel, vec4 start, bool fromEye)
+{
+  vec2 ndc = PixelNdc(gl_FragCoord.xy, viewportSize);
+  vec3 origin, direction;
+  EyeRay(ndc, clipToModel, origin, direction);
+  // Opaque geometry ends the ray.
+  float depth = texelFetch(opaqueDepth, pixel, 0).r;
+  vec4 opaque = clipToModel * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+  float opaqueT = depth < 1.0 ? dot(opaque.xyz / opaque.w - origin, direction) : noExit;
+  // The camera inside the mesh starts every ray at the eye, in its cell. (One call of Walk: the
+  // compiler inlines every call, and the walk is most of the shader.)
+  ivec4 cellFace = fromEye ? ivec4(eyeCell, -1, 0, 0) : texelFetch(boundaryFaces, int(start.g));
+  float t = fromEye ? dot(eyeModel - origin, direction) : start.r;
+  return Walk(origin, direction, opaqueT, cellFace.x, cellFace.y, t);
 }
 
 void main()
@@ -424,205 +692,10 @@ void main()
   colour = before.rgb;
   transmittance = 1.0 - before.a;
   vec4 start = texelFetch(entry, pixel, 0);
-  float exitParameter = 3.0e38; // no further peel
+  float exitParameter = noExit; // no further peel
   bool fromEye = eyeCell >= 0;
   if ((start.g >= 0.0 || fromEye) && transmittance > 1.0 - opacityThreshold)
-  {
-    vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
-    vec4 nearPoint = clipToModel * vec4(ndc, -1.0, 1.0);
-    vec4 farPoint = clipToModel * vec4(ndc, 1.0, 1.0);
-    vec3 origin = nearPoint.xyz / nearPoint.w;
-    vec3 direction = normalize(farPoint.xyz / farPoint.w - origin);
-    // Opaque geometry ends the ray.
-    float depth = texelFetch(opaqueDepth, pixel, 0).r;
-    vec4 opaque = clipToModel * vec4(ndc, 2.0 * depth - 1.0, 1.0);
-    float opaqueT = depth < 1.0 ? dot(opaque.xyz / opaque.w - origin, direction) : 3.0e38;
-
-    int cell, enterFace;
-    float t;
-    if (fromEye)
-    {
-      // The camera is inside the mesh: every ray starts at the eye, in its cell.
-      cell = eyeCell;
-      enterFace = -1;
-      t = dot(eyeModel - origin, direction);
-    }
-    else
-    {
-      ivec4 cellFace = texelFetch(boundaryFaces, int(start.g));
-      cell = cellFace.x;
-      enterFace = cellFace.y;
-      t = start.r;
-    }
-    for (int step = 0; step < maximumCells; ++step)
-    {
-      LoadCell(cell);
-      // The exit: the nearest face (other than the entry) the ray meets beyond t.
-      float exitT = 3.0e38;
-      int exitFace = -1;
-      uvec4 idsA = texelFetch(cellPoints, 2 * cell), idsB = texelFetch(cellPoints, 2 * cell + 1);
-      uint ids[8] = uint[8](idsA.x, idsA.y, idsA.z, idsA.w, idsB.x, idsB.y, idsB.z, idsB.w);
-      vec3 cellCentre = vec3(0.0);
-      for (int k = 0; k < 8; ++k)
-        cellCentre += 0.125 * points[k];
-      float tolerance = 1e-6 * (1.0 + abs(t));
-      for (int f = 0; f < 6; ++f)
-      {
-        if (f == enterFace)
-          continue;
-        int corner[4] = int[4](faceCorners[4 * f], faceCorners[4 * f + 1], faceCorners[4 * f + 2], faceCorners[4 * f + 3]);
-        // The face exactly, as the bilinear patch through its corners (parameterised canonically).
-        vec3 q[4] = vec3[4](points[corner[0]], points[corner[1]], points[corner[2]], points[corner[3]]);
-        uint qi[4] = uint[4](ids[corner[0]], ids[corner[1]], ids[corner[2]], ids[corner[3]]);
-        vec3 a, b, c, d;
-        CanonicalQuad(q, qi, a, b, c, d);
-        float h0, h1;
-        vec2 uv0, uv1;
-        int hits = HitPatchAt(origin, direction, a, b, c, d, h0, h1, uv0, uv1);
-        // Only where the ray leaves the cell: near an edge the ray can also meet (within the edge
-        // slack) a face it enters through, just after the entry on the neighbouring face.
-        vec3 outward = PatchNormal(a, b, c, d, cellCentre);
-        if (hits > 0 && h0 > t + tolerance && h0 < exitT && Leaves(PatchNormalAt(a, b, c, d, uv0), outward, direction))
-        {
-          exitT = h0;
-          exitFace = f;
-        }
-        if (hits > 1 && h1 > t + tolerance && h1 < exitT && Leaves(PatchNormalAt(a, b, c, d, uv1), outward, direction))
-        {
-          exitT = h1;
-          exitFace = f;
-        }
-      }
-      if (exitFace < 0)
-      {
-        // No face claims the ray: it passed within rounding of an edge or a corner into a cell it
-        // only touches. Find the cell holding a point just ahead by walking towards it across the
-        // faces it lies outside of, and go on from there.
-        bool located = false;
-        float ahead = 0.0;
-        int startCell = cell;
-        for (int attempt = 0; attempt < 3 && !located; ++attempt)
-        {
-          // A point a little ahead (farther on each attempt), located by walking towards it.
-          cell = startCell;
-          LoadCell(cell);
-          ahead = (attempt == 0 ? 1e-3 : (attempt == 1 ? 1e-2 : 5e-2)) * length(points[6] - points[0]);
-          vec3 target = origin + (t + ahead) * direction;
-          for (int walk = 0; walk < 32; ++walk)
-          {
-            // The point's trilinear coordinates in this cell decide, consistently with the exact
-            // bilinear faces, whether it is inside, and if not, which face to cross: the one of the
-            // most violated coordinate (r = 0: face 5, r = 1: face 3, s = 0: 2, s = 1: 4, t = 0: 0,
-            // t = 1: 1), preferring faces with a neighbour.
-            ivec4 m0 = texelFetch(cellNeighbours, 2 * cell), m1 = texelFetch(cellNeighbours, 2 * cell + 1);
-            int across[6] = int[6](m0.x, m0.y, m0.z, m0.w, m1.x, m1.y);
-            vec3 centre = vec3(0.0);
-            for (int k = 0; k < 8; ++k)
-              centre += 0.125 * points[k];
-            vec3 r = 0.25 * ((points[1] - points[0]) + (points[2] - points[3]) + (points[5] - points[4]) + (points[6] - points[7]));
-            vec3 s = 0.25 * ((points[3] - points[0]) + (points[2] - points[1]) + (points[7] - points[4]) + (points[6] - points[5]));
-            vec3 w = 0.25 * ((points[4] - points[0]) + (points[5] - points[1]) + (points[6] - points[2]) + (points[7] - points[3]));
-            vec3 xi = InverseTrilinear(target, inverse(mat3(r, s, w)) * (target - (centre - 0.5 * (r + s + w))));
-            float violation[6] = float[6](-xi.z, xi.z - 1.0, -xi.y, xi.x - 1.0, xi.y - 1.0, -xi.x);
-            int outside = -1, outsideBoundary = -1;
-            float farthest = 1e-6, farthestBoundary = 1e-6;
-            for (int f = 0; f < 6; ++f)
-            {
-              if (across[f] >= 0 && violation[f] > farthest)
-              {
-                farthest = violation[f];
-                outside = f;
-              }
-              if (across[f] < 0 && violation[f] > farthestBoundary)
-              {
-                farthestBoundary = violation[f];
-                outsideBoundary = f;
-              }
-            }
-            if (outside < 0)
-            {
-              located = outsideBoundary < 0; // inside this cell, or outside the mesh
-              break;
-            }
-            cell = across[outside] / 8;
-            LoadCell(cell);
-          }
-        }
-        if (!located)
-        {
-          exitParameter = t;
-          break;
-        }
-        enterFace = -1;
-        t += ahead; // the skipped sliver of path is a thousandth of a cell
-        continue;
-      }
-      float segmentEnd = min(exitT, opaqueT);
-      float low = scalars[0], high = scalars[0];
-      for (int k = 1; k < 8; ++k)
-      {
-        low = min(low, scalars[k]);
-        high = max(high, scalars[k]);
-      }
-      if (segmentEnd > t && RangeVisible(low, high))
-      {
-        // Parametric coordinates of both ends in the cell's affine frame.
-        vec3 r = 0.25 * ((points[1] - points[0]) + (points[2] - points[3]) + (points[5] - points[4]) + (points[6] - points[7]));
-        vec3 s = 0.25 * ((points[3] - points[0]) + (points[2] - points[1]) + (points[7] - points[4]) + (points[6] - points[5]));
-        vec3 w = 0.25 * ((points[4] - points[0]) + (points[5] - points[1]) + (points[6] - points[2]) + (points[7] - points[3]));
-        vec3 centre = vec3(0.0);
-        for (int k = 0; k < 8; ++k)
-          centre += 0.125 * points[k];
-        mat3 toLocal = inverse(mat3(r, s, w));
-        vec3 frameOrigin = centre - 0.5 * (r + s + w);
-        vec3 entryPoint = origin + t * direction, exitPoint = origin + segmentEnd * direction;
-        vec3 xi0 = toLocal * (entryPoint - frameOrigin);
-        vec3 xi1 = toLocal * (exitPoint - frameOrigin);
-        // A parallelepiped's map is its frame (no bilinear terms): the frame's cubic is exact.
-        float twist = max(max(length(mapE), length(mapF)), max(length(mapG), length(mapH)));
-        bool curved = twist > 1e-5 * (length(r) + length(s) + length(w));
-        vec4 field;
-        if (exactEnds == 1 && curved)
-        {
-          // Through the isoparametric map (the frame's coordinates are the start): the ends, so the
-          // field matches the cell's where the ray crosses faces and is continuous from cell to cell
-          // on curved meshes, and two inner points; the field is the cubic through those four exact
-          // values (on a parallelepiped the same cubic as the frame's).
-          vec3 xiNear = InverseTrilinear(mix(entryPoint, exitPoint, 0.25), mix(xi0, xi1, 0.25));
-          vec3 xiFar = InverseTrilinear(mix(entryPoint, exitPoint, 0.75), mix(xi0, xi1, 0.75));
-          xi0 = InverseTrilinear(entryPoint, xi0);
-          xi1 = InverseTrilinear(exitPoint, xi1);
-          field = CubicThroughSamples(TrilinearAlongSegment(scalars, xi0, xi0).x,
-            TrilinearAlongSegment(scalars, xiNear, xiNear).x, TrilinearAlongSegment(scalars, xiFar, xiFar).x,
-            TrilinearAlongSegment(scalars, xi1, xi1).x);
-        }
-        else
-        {
-          field = TrilinearAlongSegment(scalars, xi0, xi1);
-        }
-        segmentXi0 = xi0;
-        segmentXi1 = xi1;
-        segmentStartPoint = entryPoint;
-        segmentEndPoint = exitPoint;
-        IntegrateCubicSegment(field, segmentEnd - t);
-      }
-      if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
-      {
-        break;
-      }
-      ivec4 n0 = texelFetch(cellNeighbours, 2 * cell), n1 = texelFetch(cellNeighbours, 2 * cell + 1);
-      int neighbours[6] = int[6](n0.x, n0.y, n0.z, n0.w, n1.x, n1.y);
-      int next = neighbours[exitFace];
-      if (next < 0)
-      {
-        exitParameter = exitT; // left the mesh: the next peel looks beyond here
-        break;
-      }
-      cell = next / 8;
-      enterFace = next % 8;
-      t = exitT;
-    }
-  }
+    exitParameter = CastRay(pixel, start, fromEye);
   gl_FragData[0] = vec4(colour, 1.0 - transmittance);
   gl_FragData[1] = vec4(exitParameter, 0.0, 0.0, 1.0);
 }

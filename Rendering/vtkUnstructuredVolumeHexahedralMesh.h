@@ -1,0 +1,138 @@
+// The hexahedra of any vtkDataSet as vtkHexahedralRayCastMapper's passes read them: 8 point ids per
+// cell, the recentred points with the normalised scalar (vtkUnstructuredVolumePointData.h), face
+// adjacency and boundary faces (uvHexahedralMesh.h), rebuilt only when the input or its scalar
+// changes. Reads VTK data through the generic cell API, so no input type needs a conversion.
+#ifndef vtkUnstructuredVolumeHexahedralMesh_h
+#define vtkUnstructuredVolumeHexahedralMesh_h
+
+#include "uvHexahedralMesh.h"
+#include "uvLinearCellSplit.h"
+#include "uvScalarNormalisation.h"
+#include "vtkUnstructuredVolumePointData.h"
+#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkSMPTools.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace uvvtk
+{
+
+/// Unstructured grids; structured grids, whose blanked cells are empty and skipped; image data and
+/// rectilinear grids, as voxels. Cells touching a NaN scalar are left out; folded cells are counted.
+class HexahedralMesh
+{
+public:
+  std::vector<std::uint32_t> CellPoints; // 8 per cell, VTK hexahedron order
+  RecentredPoints Points;
+  uv::HexahedralFaces Faces;
+  vtkIdType TangledCells = 0, NaNCells = 0;
+  int Builds = 0;
+  std::uint64_t Version = 0; // bumped by every build
+
+  std::size_t CellCount() const { return this->CellPoints.size() / 8; }
+  std::size_t BoundaryCount() const { return this->Faces.Boundary.size() / 4; }
+
+  /// Rebuilds the mesh when `input` or its point scalar `scalars` changed (`built` then true);
+  /// returns an error message, empty on success. `progress` goes from 0 to 1 over a build.
+  std::string Update(vtkDataSet* input, vtkDataArray* scalars, const std::function<void(double)>& progress, bool& built)
+  {
+    built = false;
+    const Source source{ input, input->GetMTime(), scalars, scalars->GetMTime() };
+    if (source == this->BuiltFrom)
+    {
+      return std::string();
+    }
+    progress(0.0); // the adjacency can take seconds on large meshes
+    this->BuiltFrom = Source();
+    this->Points.Build(input, scalars);
+    const vtkIdType others = this->ReadCells(input);
+    if (others > 0)
+    {
+      this->CellPoints.clear();
+      this->Faces = uv::HexahedralFaces();
+      return std::to_string(others) + " cells are not hexahedra or voxels: split the mesh with "
+                                      "vtkHexahedraToTetrahedra and render it with vtkPreIntegratedTetrahedraMapper";
+    }
+    this->TangledCells =
+      static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
+    this->Faces = uv::MakeHexahedralFaces(
+      this->CellPoints, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
+      [&progress](double fraction) { progress(0.8 * fraction); });
+    this->BuiltFrom = source;
+    ++this->Builds;
+    ++this->Version;
+    progress(1.0);
+    built = true;
+    return std::string();
+  }
+
+  std::size_t Bytes() const
+  {
+    return sizeof(std::uint32_t) * this->CellPoints.size() + sizeof(float) * this->Points.Values.size() +
+      sizeof(std::int32_t) * (this->Faces.Neighbours.size() + this->Faces.Boundary.size());
+  }
+
+private:
+  /// What the mesh was built from: it is rebuilt when any of these differ.
+  struct Source
+  {
+    const void* Input = nullptr;
+    vtkMTimeType InputTime = 0;
+    const void* Scalars = nullptr;
+    vtkMTimeType ScalarsTime = 0;
+
+    bool operator==(const Source& other) const
+    {
+      return this->Input == other.Input && this->InputTime == other.InputTime && this->Scalars == other.Scalars &&
+        this->ScalarsTime == other.ScalarsTime;
+    }
+  };
+  Source BuiltFrom;
+
+  /// The hexahedra and voxels of `grid` into CellPoints (voxels reordered), leaving out those that
+  /// touch a NaN scalar. Returns how many cells are neither (not drawable here).
+  vtkIdType ReadCells(vtkDataSet* grid)
+  {
+    this->CellPoints.clear();
+    this->NaNCells = 0;
+    vtkIdType others = 0;
+    vtkNew<vtkIdList> cellIds;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      const int type = grid->GetCellType(c);
+      if (type == VTK_EMPTY_CELL)
+        continue; // blanked
+      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL)
+      {
+        ++others;
+        continue;
+      }
+      grid->GetCellPoints(c, cellIds);
+      const vtkIdType* ids = cellIds->GetPointer(0);
+      std::array<std::uint32_t, 8> corners;
+      for (int k = 0; k < 8; ++k)
+        corners[k] = static_cast<std::uint32_t>(ids[type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k]);
+      if (!uv::ScalarsFinite(this->Points.Values, corners.data(), 8))
+      {
+        ++this->NaNCells;
+        continue;
+      }
+      this->CellPoints.insert(this->CellPoints.end(), corners.begin(), corners.end());
+    }
+    return others;
+  }
+};
+
+} // namespace uvvtk
+
+#endif

@@ -1,0 +1,87 @@
+// Hexahedron geometry shared by the entry and traversal passes of vtkHexahedralRayCastMapper: the
+// mesh's cells and points (it declares their buffer textures), a cell's corners, centre and affine
+// frame (the GPU twin of uv::MakeHexahedronFrame in uvHexahedronRay.h), the eye ray of a pixel, and
+// the orientation of a face's normal.
+uniform usamplerBuffer cellPoints; // 8 point ids per cell (two texels), VTK hexahedron order
+uniform samplerBuffer pointData;   // recentred model position, normalised scalar
+
+// Corners of each local face in cyclic order, outward (uv::HexahedronFaces).
+const int faceCorners[24] = int[24](0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7);
+
+/// Corner k (of 4) of local face `face`, as a cell corner.
+int FaceCorner(int face, int k)
+{
+  return faceCorners[4 * face + k];
+}
+
+/// The 8 point ids of `cell`.
+void CellPointIds(int cell, out uint ids[8])
+{
+  uvec4 a = texelFetch(cellPoints, 2 * cell), b = texelFetch(cellPoints, 2 * cell + 1);
+  ids = uint[8](a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w);
+}
+
+vec3 PointPosition(uint id)
+{
+  return texelFetch(pointData, int(id)).xyz;
+}
+
+/// The mean of the corners.
+vec3 CellCentre(vec3 p[8])
+{
+  vec3 centre = vec3(0.0);
+  for (int k = 0; k < 8; ++k)
+    centre += 0.125 * p[k];
+  return centre;
+}
+
+/// x = origin + axes xi: the centre and the averaged edge vectors, exact for every parallelepiped.
+struct HexahedronFrame
+{
+  mat3 axes;
+  vec3 origin;
+  mat3 toLocal; // inverse of axes
+};
+
+HexahedronFrame MakeHexahedronFrame(vec3 p[8])
+{
+  // Edges along r: 0-1, 3-2, 4-5, 7-6; along s: 0-3, 1-2, 4-7, 5-6; along t: 0-4, 1-5, 2-6, 3-7.
+  vec3 r = 0.25 * ((p[1] - p[0]) + (p[2] - p[3]) + (p[5] - p[4]) + (p[6] - p[7]));
+  vec3 s = 0.25 * ((p[3] - p[0]) + (p[2] - p[1]) + (p[7] - p[4]) + (p[6] - p[5]));
+  vec3 t = 0.25 * ((p[4] - p[0]) + (p[5] - p[1]) + (p[6] - p[2]) + (p[7] - p[3]));
+  HexahedronFrame frame;
+  frame.axes = mat3(r, s, t);
+  frame.origin = CellCentre(p) - 0.5 * (r + s + t);
+  frame.toLocal = inverse(frame.axes);
+  return frame;
+}
+
+/// The frame's coordinates of x (the cell's trilinear coordinates for a parallelepiped).
+vec3 FrameCoordinates(HexahedronFrame frame, vec3 x)
+{
+  return frame.toLocal * (x - frame.origin);
+}
+
+/// The pixel at `fragCoord` in normalised device coordinates.
+vec2 PixelNdc(vec2 fragCoord, vec2 viewportSize)
+{
+  return fragCoord / viewportSize * 2.0 - 1.0;
+}
+
+/// The ray through `ndc` in model space, from the near plane, unit direction.
+void EyeRay(vec2 ndc, mat4 clipToModel, out vec3 origin, out vec3 direction)
+{
+  vec4 nearPoint = clipToModel * vec4(ndc, -1.0, 1.0);
+  vec4 farPoint = clipToModel * vec4(ndc, 1.0, 1.0);
+  origin = nearPoint.xyz / nearPoint.w;
+  direction = normalize(farPoint.xyz / farPoint.w - origin);
+}
+
+/// A face's normal at a point, turned to the side of `outward` (the face's mean outward normal). A
+/// vanishing normal (a collapsed edge) is replaced by `outward`.
+vec3 OrientedNormal(vec3 normal, vec3 outward)
+{
+  float tiny = 1e-6 * dot(outward, outward);
+  normal = dot(normal, normal) > tiny ? normal : outward;
+  return dot(normal, outward) < 0.0 ? -normal : normal;
+}
