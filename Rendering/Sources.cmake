@@ -16,21 +16,20 @@ foreach (class IN LISTS uv_rendering_classes)
 endforeach ()
 # Not wrapped: VTK-free math (uv*.h, unit-tested on its own), the VTK-reading helpers the mappers
 # share, the OpenGL layer under vtkUnstructuredVolumeMapper (vtkUnstructuredVolume*.h) and each
-# mapper's passes and program catalogue (vtkBarycentricShell*.h, vtkPreIntegratedTetrahedraPrograms.h).
+# mapper's passes and program catalogue (vtkBarycentricShell*.h, vtk*Programs.h).
 set(uv_rendering_private_headers)
 foreach (header IN ITEMS
-    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedronRay uvImageErrorMetrics uvShellBuckets
+    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedralMesh uvHexahedronRay uvImageErrorMetrics
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
-    uvVisibilitySort
-    vtkPreIntegratedTetrahedraPrograms
+    uvScalarNormalisation uvShellBuckets uvVisibilitySort
+    vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms
     vtkBarycentricShellBlendPass vtkBarycentricShellCellDrawer vtkBarycentricShellCellProjectionPass
     vtkBarycentricShellImageTexture vtkBarycentricShellIsosurfacePeelPass vtkBarycentricShellMaskPass
     vtkBarycentricShellOpaqueDistancePass vtkBarycentricShellPrograms vtkBarycentricShellSlicePass
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
-    vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL vtkUnstructuredVolumeTetrahedralMesh
-    vtkUnstructuredVolumeTexture vtkUnstructuredVolumeTransferFunction
-    vtkUnstructuredVolumeTransferFunctionTexture
-    uvHexahedralMesh uvScalarNormalisation vtkUnstructuredVolumeHexahedralMesh vtkUnstructuredVolumePointData)
+    vtkUnstructuredVolumeHexahedralMesh vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL
+    vtkUnstructuredVolumePointData vtkUnstructuredVolumeTetrahedralMesh vtkUnstructuredVolumeTexture
+    vtkUnstructuredVolumeTransferFunction vtkUnstructuredVolumeTransferFunctionTexture)
   list(APPEND uv_rendering_private_headers "${CMAKE_CURRENT_LIST_DIR}/${header}.h")
 endforeach ()
 # The float target has a source file of its own (the other OpenGL-layer classes are header-only).

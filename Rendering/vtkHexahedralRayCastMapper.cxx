@@ -1,14 +1,7 @@
 #include "vtkHexahedralRayCastMapper.h"
 
-#include "uvBilinearFaceLib.h"
-#include "uvFullScreenTriangleVS.h"
-#include "uvHexahedralEntryFS.h"
-#include "uvHexahedralEntryVS.h"
-#include "uvHexahedralTraverseFS.h"
-#include "uvHexahedronLib.h"
 #include "uvIsosurfaceList.h"
-#include "uvPhongLib.h"
-#include "uvTransferFunctionLib.h"
+#include "vtkHexahedralRayCastPrograms.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
@@ -186,13 +179,6 @@ struct PassFrame
 class EntryPass
 {
 public:
-  EntryPass()
-    : VertexSource(uvgl::ShaderSource(uvHexahedralEntryVS, "", { { "//UV::Hexahedron", uvHexahedronLib } }))
-    , FragmentSource(uvgl::ShaderSource(uvHexahedralEntryFS, "",
-        { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } }))
-  {
-  }
-
   /// False when the program failed; `entered` tells whether any ray entered the mesh.
   bool Draw(const PassFrame& pass, PeelImages& images, GpuResources& gpu, std::size_t boundaryCount, bool firstPeel,
     bool& entered)
@@ -208,8 +194,7 @@ public:
     state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     state->vtkglEnable(GL_DEPTH_TEST);
     state->vtkglDepthFunc(GL_LESS);
-    vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-      this->VertexSource.c_str(), this->FragmentSource.c_str(), "");
+    vtkShaderProgram* program = uvgl::ReadyProgram(window, this->Sources);
     if (program)
     {
       gpu.BoundaryFaces.Bind(program, "boundaryFaces");
@@ -233,7 +218,7 @@ public:
   }
 
 private:
-  std::string VertexSource, FragmentSource;
+  const uvgl::ProgramSources Sources = vtkHexahedralRayCastPrograms::Entry();
 
   /// Draws the faces' triangles; returns the samples that passed (zero: no ray enters again).
   static GLuint DrawCountingSamples(vtkOpenGLVertexArrayObject* noAttributes, std::size_t boundaryCount)
@@ -308,20 +293,19 @@ public:
   }
 
 private:
-  std::string Defines, FragmentSource;
+  bool NodeTexture = false;
+  uvgl::ProgramSources Sources;
 
-  /// The program for these nodes (their number decides the defines).
+  /// The program for these nodes (whether they fit in uniforms decides the defines).
   vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const std::vector<uv::TransferFunction::Node>& nodes)
   {
-    const std::string defines = uvgl::TransferFunctionDefines(nodes);
-    if (defines != this->Defines || this->FragmentSource.empty())
+    const bool nodeTexture = uvgl::NodesNeedTexture(nodes);
+    if (nodeTexture != this->NodeTexture || this->Sources.Fragment.empty())
     {
-      this->FragmentSource = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
-        { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
-          { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
-      this->Defines = defines;
+      this->Sources = vtkHexahedralRayCastPrograms::Traversal({ nodeTexture });
+      this->NodeTexture = nodeTexture;
     }
-    return window->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, this->FragmentSource.c_str(), "");
+    return uvgl::ReadyProgram(window, this->Sources);
   }
 
   static void SetUniforms(vtkShaderProgram* program, const PassFrame& pass, const TraversalSettings& settings)

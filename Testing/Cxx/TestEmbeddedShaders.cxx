@@ -9,6 +9,7 @@
 #include "uvBarycentricShellMaskFS.h"
 #include "uvBarycentricShellSliceFS.h"
 #include "vtkBarycentricShellPrograms.h"
+#include "vtkHexahedralRayCastPrograms.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
 
 #include "vtkOpenGLRenderWindow.h"
@@ -97,6 +98,16 @@ TEST_F(EmbeddedShaders, EveryBarycentricShellProgramLinks)
         EXPECT_NE(programs.FullScreen(fragment), nullptr) << variant;
       EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << variant;
     }
+}
+
+TEST_F(EmbeddedShaders, EveryHexahedralRayCastProgramLinks)
+{
+  this->ExpectLinks(vtkHexahedralRayCastPrograms::Entry(), "hexahedral entry program");
+  const auto all = vtkHexahedralRayCastPrograms::AllTraversalOptions();
+  EXPECT_EQ(all.size(), 2u);
+  for (const auto& options : all)
+    this->ExpectLinks(vtkHexahedralRayCastPrograms::Traversal(options),
+      std::string("hexahedral traversal program") + (options.NodeTexture ? ", node texture" : ""));
 }
 
 TEST_F(EmbeddedShaders, CompositePassCopiesAFloatImage)

@@ -1,0 +1,55 @@
+/**
+ * @class vtkHexahedralRayCastPrograms
+ * @brief Every shader program vtkHexahedralRayCastMapper can use, by its options.
+ *
+ * Two programs per peel: the entry pass (boundary faces, no options) and the full-screen traversal,
+ * whose defines follow the transfer function's node count. The mapper resamples the transfer
+ * function to the uniform capacity, so it uses NodeTexture = false; the traversal also builds with
+ * the node texture, and Testing/Cxx/TestEmbeddedShaders compiles both, so lifting that limit needs
+ * no shader work. (OpenGL layer; not wrapped.)
+ */
+#ifndef vtkHexahedralRayCastPrograms_h
+#define vtkHexahedralRayCastPrograms_h
+
+#include "uvBilinearFaceLib.h"
+#include "uvFullScreenTriangleVS.h"
+#include "uvHexahedralEntryFS.h"
+#include "uvHexahedralEntryVS.h"
+#include "uvHexahedralTraverseFS.h"
+#include "uvHexahedronLib.h"
+#include "uvPhongLib.h"
+#include "uvTransferFunctionLib.h"
+#include "vtkUnstructuredVolumeOpenGL.h"
+
+#include <vector>
+
+struct vtkHexahedralRayCastPrograms
+{
+  struct TraversalOptions
+  {
+    bool NodeTexture = false; // more transfer-function nodes than fit in uniforms
+  };
+
+  static uvgl::ProgramSources Entry()
+  {
+    uvgl::ProgramSources sources;
+    sources.Vertex = uvgl::ShaderSource(uvHexahedralEntryVS, "", { { "//UV::Hexahedron", uvHexahedronLib } });
+    sources.Fragment = uvgl::ShaderSource(uvHexahedralEntryFS, "",
+      { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
+    return sources;
+  }
+
+  static uvgl::ProgramSources Traversal(const TraversalOptions& options)
+  {
+    uvgl::ProgramSources sources;
+    sources.Vertex = uvFullScreenTriangleVS;
+    sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, uvgl::TransferFunctionDefines(options.NodeTexture),
+      { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
+        { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
+    return sources;
+  }
+
+  static std::vector<TraversalOptions> AllTraversalOptions() { return { { false }, { true } }; }
+};
+
+#endif
