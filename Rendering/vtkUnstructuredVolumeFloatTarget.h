@@ -53,8 +53,6 @@ public:
   vtkOpenGLFramebufferObject* GetFramebuffer();
   /// An empty vertex array, for passes whose vertices come from gl_VertexID or buffer textures.
   vtkOpenGLVertexArrayObject* GetNoAttributes();
-  int GetWidth() const { return this->Width; }
-  int GetHeight() const { return this->Height; }
 
   void Release();
 

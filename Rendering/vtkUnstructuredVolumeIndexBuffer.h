@@ -42,7 +42,6 @@ public:
   bool Holds(std::uint64_t version) const { return this->Version == version && this->Buffer->GetHandle(); }
   std::size_t GetCount() const { return this->Version ? this->Count : 0; }
   std::size_t GetBytes() const { return sizeof(std::uint32_t) * this->GetCount(); }
-  vtkOpenGLBufferObject* GetBuffer() { return this->Buffer; }
 
   void Release()
   {

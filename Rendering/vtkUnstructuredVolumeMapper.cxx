@@ -34,7 +34,6 @@ void vtkUnstructuredVolumeMapper::AddIsosurface(double value, double red, double
 {
   this->Base->Isosurfaces.Add(value, red, green, blue, opacity);
   this->Modified();
-  this->IsosurfaceTime = this->GetMTime();
 }
 
 void vtkUnstructuredVolumeMapper::RemoveAllIsosurfaces()
@@ -42,7 +41,6 @@ void vtkUnstructuredVolumeMapper::RemoveAllIsosurfaces()
   if (this->Base->Isosurfaces.Clear())
   {
     this->Modified();
-    this->IsosurfaceTime = this->GetMTime();
   }
 }
 

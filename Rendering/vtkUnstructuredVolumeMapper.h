@@ -100,8 +100,6 @@ protected:
 
   /// The isosurfaces, in value order.
   const uv::IsosurfaceList& GetIsosurfaces() const;
-  /// Changes whenever the isosurface list does.
-  vtkMTimeType GetIsosurfaceTime() const { return this->IsosurfaceTime; }
 
   bool KeepFloatImage = false;
   int ProjectionRoute = VERTEX_PULLING;
@@ -116,7 +114,6 @@ private:
 
   struct Shared;
   std::unique_ptr<Shared> Base;
-  vtkMTimeType IsosurfaceTime = 0;
 };
 
 #endif

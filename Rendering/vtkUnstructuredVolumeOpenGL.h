@@ -1,13 +1,12 @@
-// The OpenGL steps every mapper of this module takes the same way: VTK matrices to GLM, the Psi table
-// texture, the copy of the scene's depth, embedded GLSL with defines and shared libraries, and the
-// final blend of a premultiplied float image into VTK's scene. (Uses VTK's OpenGL2 classes; the
-// mappers' math lives in the VTK-free uv*.h headers.)
+// The OpenGL steps every mapper of this module takes the same way: VTK matrices to GLM, the copy of
+// the scene's depth, the transfer function's uniforms, embedded GLSL with defines and shared
+// libraries, and the final blend of a premultiplied float image into VTK's scene. (Uses VTK's
+// OpenGL2 classes; the mappers' math lives in the VTK-free uv*.h headers.)
 #ifndef vtkUnstructuredVolumeOpenGL_h
 #define vtkUnstructuredVolumeOpenGL_h
 
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
-#include "uvIsosurfaceList.h"
 #include "uvOpticalModel.h"
 #include "uvPhongLib.h"
 #include "uvPreIntegration.h"
@@ -118,24 +117,6 @@ inline void ReadFloatImage(vtkOpenGLFramebufferObject* framebuffer, unsigned int
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image->GetScalarPointer());
   image->GetPointData()->GetScalars()->Modified();
-}
-
-/// Creates the Psi table texture (bilinear, clamped) unless it exists; the table is computed once
-/// per process.
-inline void EnsurePsiTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* window)
-{
-  if (texture->GetHandle())
-  {
-    return;
-  }
-  static const uv::PsiTable table;
-  texture->SetContext(window);
-  texture->SetMinificationFilter(vtkTextureObject::Linear);
-  texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->Create2DFromRaw(
-    table.GetSize(), table.GetSize(), 1, VTK_FLOAT, const_cast<float*>(table.GetValues().data()));
 }
 
 /// Copies the depth of what VTK drew so far (opaque geometry) from the current framebuffer's
@@ -294,18 +275,6 @@ inline void SetPhongUniforms(
     static_cast<float>(lightColor.b) };
   program->SetUniform3f("lightDirection", direction);
   program->SetUniform3f("lightColor", color);
-}
-
-/// The drawn isosurfaces as the shaders read them (uniform `isosurfaces`, see
-/// uv::IsosurfaceList::Texels): a 2-row float RGBA texture, nearest filtering.
-inline void UploadIsosurfaces(
-  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, const std::vector<uv::Isosurface>& drawn)
-{
-  std::vector<float> texels = uv::IsosurfaceList::Texels(drawn);
-  texture->SetContext(window);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->Create2DFromRaw(static_cast<unsigned int>(texels.size() / 8), 2, 4, VTK_FLOAT, texels.data());
 }
 
 /// Blends a premultiplied RGBA image over the viewport of VTK's scene (ONE, ONE_MINUS_SRC_ALPHA).
