@@ -284,8 +284,8 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(vtkBarycentricShellMapper*
 bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
   vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame)
 {
-  this->Now.ScalarOffset = this->Mesh.ScalarOffset;
-  this->Now.ScalarScale = this->Mesh.ScalarScale;
+  this->Now.ScalarOffset = this->Mesh.Normalisation.Offset;
+  this->Now.ScalarScale = this->Mesh.Normalisation.Scale;
   if (this->Now.Textured)
   {
     double range[2];

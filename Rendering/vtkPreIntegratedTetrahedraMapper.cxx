@@ -194,13 +194,13 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
 
   // Transfer function and isosurfaces, normalised like the scalar.
   vtkVolumeProperty* property = frame.Property;
-  impl.TransferFunction.Update(property, impl.Mesh.ScalarOffset, impl.Mesh.ScalarScale);
+  impl.TransferFunction.Update(property, impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale);
   if (impl.TransferFunction.Nodes.empty())
   {
     vtkErrorMacro("the volume property has no scalar opacity function");
     return false;
   }
-  impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(impl.Mesh.ScalarOffset, impl.Mesh.ScalarScale);
+  impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale);
   impl.Isovalues.clear();
   for (const uv::Isosurface& s : impl.DrawnIsosurfaces)
     impl.Isovalues.push_back(s.Value);

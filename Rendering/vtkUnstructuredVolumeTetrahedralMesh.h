@@ -8,6 +8,7 @@
 #include "uvCellVisibility.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
+#include "vtkUnstructuredVolumePointData.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkCellArray.h"
@@ -62,7 +63,7 @@ public:
   std::vector<float> ScalarLow, ScalarHigh;        // per tetrahedron, normalised
   std::vector<float> Centroids;                    // per tetrahedron, recentred
   glm::dvec3 Center{ 0.0 };
-  double ScalarOffset = 0.0, ScalarScale = 1.0;
+  uv::ScalarNormalisation Normalisation;          // of the rendered scalar's finite values
   vtkIdType SplitCells = 0;       // input cells that were not tetrahedra, as of the last build
   vtkIdType NaNTetrahedra = 0;    // tetrahedra left out for a NaN scalar
   int Builds = 0, PointRefreshes = 0;
@@ -71,8 +72,7 @@ public:
   std::uint64_t CellsVersion = 0; // TetrahedronPoints, ScalarLow/High (not a point-only refresh)
 
   std::size_t Size() const { return this->TetrahedronPoints.size() / 4; }
-  /// Identifies the current build (changes whenever anything does).
-  const std::string& Key() const { return this->FullKey; }
+  /// Forgets the build: the next Update rebuilds.
   void Invalidate() { this->TopologyKey.clear(); this->FullKey.clear(); }
 
   /// Brings the mesh up to date with `input` and its rendered point scalar `inputScalars` (first
@@ -172,34 +172,11 @@ private:
     this->Tetrahedra = grid;
 
     // Normalised scalar (first component) and recentred positions, in double then float.
-    const vtkIdType pointCount = grid->GetNumberOfPoints();
-    double low = std::numeric_limits<double>::infinity(), high = -low;
-    for (vtkIdType p = 0; p < pointCount; ++p)
-    {
-      const double s = this->Scalars->GetComponent(p, 0);
-      if (std::isfinite(s))
-      {
-        low = std::min(low, s);
-        high = std::max(high, s);
-      }
-    }
-    if (!(low <= high))
-    {
-      low = high = 0.0; // every scalar is NaN: nothing will be drawn
-    }
-    this->ScalarOffset = low;
-    this->ScalarScale = high > low ? 1.0 / (high - low) : 1.0;
-    double bounds[6];
-    grid->GetBounds(bounds);
-    this->Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
-    this->PointData.assign(4 * pointCount, 0.0f);
-    vtkDataArray* scalars = this->Scalars;
-    const double offset = this->ScalarOffset, scale = this->ScalarScale;
-    vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType p = begin; p < end; ++p)
-        this->PointData[4 * p + 3] = static_cast<float>((scalars->GetComponent(p, 0) - offset) * scale);
-    });
-    this->WritePositions();
+    RecentredPoints recentred;
+    recentred.Build(grid, this->Scalars);
+    this->PointData = std::move(recentred.Values);
+    this->Center = recentred.Center;
+    this->Normalisation = recentred.Normalisation;
 
     // Tetrahedra: those with a NaN scalar are left out.
     this->TetrahedronPoints.clear();
@@ -212,10 +189,7 @@ private:
       if (grid->GetCellType(c) != VTK_TETRA)
         continue;
       grid->GetCellPoints(c, npts, ids);
-      bool finite = true;
-      for (int k = 0; k < 4; ++k)
-        finite = finite && std::isfinite(this->PointData[4 * ids[k] + 3]);
-      if (!finite)
+      if (!uv::ScalarsFinite(this->PointData, ids, 4))
       {
         ++this->NaNTetrahedra;
         continue;
