@@ -48,12 +48,6 @@ void vtkBarycentricShellRepresentation::SetSkipInvisibleCells(int skip)
   this->MarkModified();
 }
 
-void vtkBarycentricShellRepresentation::SetProjectionRoute(int route)
-{
-  this->ShellMapper->SetProjectionRoute(route);
-  this->MarkModified();
-}
-
 void vtkBarycentricShellRepresentation::SetSegmentIntegration(int integration)
 {
   this->ShellMapper->SetSegmentIntegration(integration);
@@ -70,14 +64,4 @@ void vtkBarycentricShellRepresentation::SetGradientMode(int mode)
 {
   this->ShellMapper->SetGradientMode(mode);
   this->MarkModified();
-}
-
-void vtkBarycentricShellRepresentation::ClearMapperIsosurfaces()
-{
-  this->ShellMapper->RemoveAllIsosurfaces();
-}
-
-void vtkBarycentricShellRepresentation::AddMapperIsosurface(double value, const double rgb[3], double opacity)
-{
-  this->ShellMapper->AddIsosurface(value, rgb[0], rgb[1], rgb[2], opacity);
 }

@@ -31,7 +31,6 @@ public:
   void SetSlicesPerShell(int slices);
   void SetOpacityThreshold(double threshold);
   void SetSkipInvisibleCells(int skip);
-  void SetProjectionRoute(int route);
   void SetSegmentIntegration(int integration);
   void SetIsosurfaceLayers(int layers);
   void SetGradientMode(int mode);
@@ -40,9 +39,6 @@ public:
 protected:
   vtkBarycentricShellRepresentation();
   ~vtkBarycentricShellRepresentation() override;
-
-  void ClearMapperIsosurfaces() override;
-  void AddMapperIsosurface(double value, const double rgb[3], double opacity) override;
 
   vtkNew<vtkBarycentricShellMapper> ShellMapper;
 

@@ -97,13 +97,3 @@ void vtkHexahedralRayCastRepresentation::SetExactSegmentEnds(int exact)
   this->HexahedralMapper->SetExactSegmentEnds(exact != 0);
   this->MarkModified();
 }
-
-void vtkHexahedralRayCastRepresentation::ClearMapperIsosurfaces()
-{
-  this->HexahedralMapper->RemoveAllIsosurfaces();
-}
-
-void vtkHexahedralRayCastRepresentation::AddMapperIsosurface(double value, const double rgb[3], double opacity)
-{
-  this->HexahedralMapper->AddIsosurface(value, rgb[0], rgb[1], rgb[2], opacity);
-}

@@ -39,8 +39,6 @@ protected:
   ~vtkHexahedralRayCastRepresentation() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  void ClearMapperIsosurfaces() override;
-  void AddMapperIsosurface(double value, const double rgb[3], double opacity) override;
 
   vtkNew<vtkHexahedralRayCastMapper> HexahedralMapper;
 

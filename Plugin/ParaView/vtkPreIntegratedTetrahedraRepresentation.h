@@ -25,16 +25,12 @@ public:
   ///@{
   /// Forwarded to vtkPreIntegratedTetrahedraMapper.
   void SetIntegrationMode(int mode);
-  void SetProjectionRoute(int route);
   void SetSkipInvisibleCells(int skip);
   ///@}
 
 protected:
   vtkPreIntegratedTetrahedraRepresentation();
   ~vtkPreIntegratedTetrahedraRepresentation() override;
-
-  void ClearMapperIsosurfaces() override;
-  void AddMapperIsosurface(double value, const double rgb[3], double opacity) override;
 
   vtkNew<vtkPreIntegratedTetrahedraMapper> PreIntegratedMapper;
 

@@ -1,9 +1,9 @@
 #include "vtkUnstructuredVolumeRepresentation.h"
 
-#include "vtkAbstractVolumeMapper.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkInformation.h"
+#include "vtkUnstructuredVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 vtkUnstructuredVolumeRepresentation::vtkUnstructuredVolumeRepresentation() = default;
@@ -17,7 +17,7 @@ vtkUnstructuredVolumeRepresentation::~vtkUnstructuredVolumeRepresentation()
   }
 }
 
-void vtkUnstructuredVolumeRepresentation::PinMapper(const char* name, vtkAbstractVolumeMapper* mapper)
+void vtkUnstructuredVolumeRepresentation::PinMapper(const char* name, vtkUnstructuredVolumeMapper* mapper)
 {
   this->MapperName = name;
   this->PinnedMapper = mapper;
@@ -65,6 +65,12 @@ void vtkUnstructuredVolumeRepresentation::SetIsosurfaceOpacity(double opacity)
   this->MarkModified();
 }
 
+void vtkUnstructuredVolumeRepresentation::SetProjectionRoute(int route)
+{
+  this->PinnedMapper->SetProjectionRoute(route);
+  this->MarkModified();
+}
+
 void vtkUnstructuredVolumeRepresentation::UpdateMapperParameters()
 {
   this->Superclass::UpdateMapperParameters();
@@ -78,7 +84,7 @@ void vtkUnstructuredVolumeRepresentation::UpdateMapperParameters()
   this->SeparateOpacityWarned = this->UseSeparateOpacityArray;
   // Isosurfaces take the colour map's colour at their value, like ParaView's contours coloured by
   // the same array.
-  this->ClearMapperIsosurfaces();
+  this->PinnedMapper->RemoveAllIsosurfaces();
   vtkColorTransferFunction* colors = this->Property->GetRGBTransferFunction(0);
   for (double value : this->Isovalues)
   {
@@ -87,7 +93,7 @@ void vtkUnstructuredVolumeRepresentation::UpdateMapperParameters()
     {
       colors->GetColor(value, rgb);
     }
-    this->AddMapperIsosurface(value, rgb, this->IsosurfaceOpacity);
+    this->PinnedMapper->AddIsosurface(value, rgb[0], rgb[1], rgb[2], this->IsosurfaceOpacity);
   }
 }
 

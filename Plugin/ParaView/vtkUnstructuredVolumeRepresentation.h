@@ -8,9 +8,11 @@
  * Array" draws a warning: the mappers integrate one scalar. Isosurfaces are kept here (values,
  * coloured by the colour map, one opacity) and handed to the mapper before each render.
  *
- * Adding a mapper to the plugin: a subclass that pins it and forwards its settings, its proxy in
- * Plugin/UnstructuredVolumeRepresentations.xml and its row in Plugin/Representations.cmake (the menu
- * entries are generated from that table).
+ * The pinned mapper is a vtkUnstructuredVolumeMapper, so what that base holds (isosurfaces, the
+ * projection route) is forwarded here, once for all entries. Adding a mapper to the plugin: a
+ * subclass that pins it and forwards its own settings, its proxy in
+ * Plugin/UnstructuredVolumeRepresentations.xml and its row in Plugin/Representations.cmake (the
+ * menu entries are generated from that table).
  */
 #ifndef vtkUnstructuredVolumeRepresentation_h
 #define vtkUnstructuredVolumeRepresentation_h
@@ -20,6 +22,8 @@
 
 #include <string> // for std::string
 #include <vector> // for std::vector
+
+class vtkUnstructuredVolumeMapper;
 
 class VTKUNSTRUCTUREDVOLUMEPARAVIEW_EXPORT vtkUnstructuredVolumeRepresentation
   : public vtkUnstructuredGridVolumeRepresentation
@@ -38,26 +42,24 @@ public:
   void SetIsosurfaceOpacity(double opacity);
   ///@}
 
+  /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetProjectionRoute); the XML exposes it
+  /// only where the mapper projects tetrahedra.
+  void SetProjectionRoute(int route);
+
 protected:
   vtkUnstructuredVolumeRepresentation();
   ~vtkUnstructuredVolumeRepresentation() override;
 
   /// For subclasses' constructors: the mapper to render with, under a name. Its progress (mesh
   /// preparation) is reported as this representation's, which ParaView's progress bar shows.
-  void PinMapper(const char* name, vtkAbstractVolumeMapper* mapper);
+  void PinMapper(const char* name, vtkUnstructuredVolumeMapper* mapper);
   void ForwardMapperProgress(vtkObject* mapper, unsigned long event, void* progress);
-
-  ///@{
-  /// The pinned mapper's isosurface calls.
-  virtual void ClearMapperIsosurfaces() = 0;
-  virtual void AddMapperIsosurface(double value, const double rgb[3], double opacity) = 0;
-  ///@}
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   void UpdateMapperParameters() override;
 
   std::string MapperName;
-  vtkAbstractVolumeMapper* PinnedMapper = nullptr;
+  vtkUnstructuredVolumeMapper* PinnedMapper = nullptr;
   unsigned long ProgressObserver = 0;
   std::vector<double> Isovalues;
   double IsosurfaceOpacity = 1.0;
