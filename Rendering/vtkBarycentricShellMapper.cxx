@@ -185,7 +185,7 @@ public:
     this->Projection.Release();
   }
 
-  bool UpdateMesh(vtkBarycentricShellMapper* self);
+  bool UpdateMesh(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateTransferFunction(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateLists(vtkBarycentricShellMapper* self);
   void UpdateGradients(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
@@ -223,7 +223,8 @@ public:
 
 /// The input as tetrahedra: rebuilt when the cells or the scalar changed, positions only when the
 /// points moved. With a bound image the mesh's own scalar is not drawn, and any point array will do.
-bool vtkBarycentricShellMapper::Internals::UpdateMesh(vtkBarycentricShellMapper* self)
+bool vtkBarycentricShellMapper::Internals::UpdateMesh(
+  vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame)
 {
   vtkUnstructuredGridBase* input = self->GetInput();
   vtkImageData* image = this->TextureImage;
@@ -237,25 +238,22 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(vtkBarycentricShellMapper*
     return false;
   }
   this->Now.Textured = image != nullptr;
-  vtkDataArray* scalars = nullptr;
+  uvvtk::RenderedScalar scalar;
   if (this->Now.Textured)
   {
-    int cellFlag = 0;
-    scalars = uvvtk::MapperScalars(self, input, cellFlag);
-    scalars = scalars && cellFlag == 0 ? scalars : this->TextureCoordinates;
+    // Any point array carries the mesh through the split: the texture coordinates will do.
+    scalar = uvvtk::FindRenderedScalar(input, self->GetScalarMode(), self->GetArrayAccessMode(),
+      self->GetArrayId(), self->GetArrayName(), nullptr);
+    if (!scalar || scalar.OnCells)
+      scalar = uvvtk::RenderedScalar{ this->TextureCoordinates, false, 0 };
   }
-  else if (!(scalars = self->FindPointScalars(input)))
+  else if (!self->FindScalar(input, frame.Property, scalar))
   {
     return false;
   }
   uvvtk::TetrahedralMesh::Change change;
-  const std::string error = this->Mesh.Update(
-    input, scalars,
-    [self](vtkDataSet* split) {
-      int flag = 0;
-      return uvvtk::MapperScalars(self, split, flag);
-    },
-    [self](double progress) { self->UpdateProgress(progress); }, change);
+  const std::string error =
+    this->Mesh.Update(input, scalar, [self](double progress) { self->UpdateProgress(progress); }, change);
   if (!error.empty())
   {
     vtkErrorWithObjectMacro(self, << error);
@@ -300,6 +298,8 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
     return false;
   }
   this->DrawnIsosurfaces = self->GetIsosurfaces().Drawn(this->Now.ScalarOffset, this->Now.ScalarScale);
+  if (!this->Now.Textured && self->WarnCellScalarLimits(this->Mesh.Scalar, frame.Property->GetShade() != 0))
+    this->DrawnIsosurfaces.clear(); // constant in each cell: no crossing inside one
   if (this->Now.Textured && (!this->DrawnIsosurfaces.empty() || self->RenderMode == CELL_PROJECTION))
   {
     // The field inside a cell is the image's, not linear: no closed-form crossings or whole segments.
@@ -333,7 +333,7 @@ bool vtkBarycentricShellMapper::Internals::UpdateLists(vtkBarycentricShellMapper
 void vtkBarycentricShellMapper::Internals::UpdateGradients(
   vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame)
 {
-  this->Now.Shade = this->Now.CellProjection && frame.Property->GetShade() != 0;
+  this->Now.Shade = this->Now.CellProjection && frame.Property->GetShade() != 0 && !this->Mesh.OnCells();
   this->Now.Lit = this->Now.Shade || !this->Isovalues.empty();
   this->Now.NeedGradients = this->Now.Lit && self->GradientMode == VERTEX_GRADIENTS;
   if (this->Now.NeedGradients)
@@ -790,7 +790,7 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   Internals& impl = *this->Impl;
   impl.Shells = impl.SkippedShells = impl.IsosurfaceLayers = 0;
   impl.DrawnTetrahedra = 0;
-  if (!impl.UpdateMesh(this) || !impl.UpdateTransferFunction(this, frame) || !impl.UpdateLists(this))
+  if (!impl.UpdateMesh(this, frame) || !impl.UpdateTransferFunction(this, frame) || !impl.UpdateLists(this))
   {
     return false;
   }

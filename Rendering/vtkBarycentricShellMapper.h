@@ -34,8 +34,10 @@
  * no shell; shells nothing overlaps are skipped; between shells, pixels whose opacity reached
  * OpacityThreshold are masked in the depth buffer so later shells neither sample nor blend them.
  *
- * Input, errors and opaque geometry as vtkPreIntegratedTetrahedraMapper: tetrahedra with a point
- * scalar (first component); other linear cells split once with a warning; NaN tetrahedra left out.
+ * Input, errors and opaque geometry as vtkPreIntegratedTetrahedraMapper: tetrahedra with a point or
+ * cell scalar (the base's selection); other linear cells split once with a warning; NaN tetrahedra
+ * left out. Cell projection integrates a cell scalar exactly; the shells sample it, so the jumps
+ * between cells are placed to within a sample.
  * The frame's steps, the float image and the final blend are vtkUnstructuredVolumeMapper's.
  */
 #ifndef vtkBarycentricShellMapper_h

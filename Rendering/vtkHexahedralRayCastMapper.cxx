@@ -68,13 +68,14 @@ private:
 struct GpuResources
 {
   vtkUnstructuredVolumeBufferTexture CellPoints, Points, Neighbours, BoundaryFaces;
+  vtkUnstructuredVolumeBufferTexture CellScalars; // cell data only
   vtkUnstructuredVolumeTransferFunctionTexture TransferFunction;
   vtkUnstructuredVolumeTexture Isosurfaces;
 
   void Release()
   {
     for (vtkUnstructuredVolumeBufferTexture* texture : { &this->CellPoints, &this->Points, &this->Neighbours,
-           &this->BoundaryFaces })
+           &this->BoundaryFaces, &this->CellScalars })
       texture->Release();
     this->TransferFunction.Release();
     this->Isosurfaces.Release();
@@ -245,6 +246,7 @@ struct TraversalSettings
   int MaximumCells = 0; // bounds the walk (and any cycle in it)
   int EyeCell = -1;     // the cell holding the eye on the first peel, or -1
   int IsosurfaceCount = 0;
+  bool CellScalars = false;    // the mesh's scalar is per cell (uploaded to GpuResources::CellScalars)
 };
 
 /// Per peel, full screen: walks each ray from its entry through the cells, integrating them, and
@@ -260,7 +262,9 @@ public:
     images.Framebuffer->AddColorAttachment(0, into);
     images.Framebuffer->AddColorAttachment(1, images.Exit);
     images.Framebuffer->ActivateDrawBuffers(2);
-    vtkShaderProgram* program = this->Ready(pass.Frame->Window, gpu.TransferFunction.GetNodes());
+    const bool cellScalars = settings.CellScalars;
+    vtkShaderProgram* program =
+      this->Ready(pass.Frame->Window, { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars });
     if (program)
     {
       images.Entry->Activate();
@@ -273,6 +277,8 @@ public:
       gpu.CellPoints.Bind(program, "cellPoints");
       gpu.Neighbours.Bind(program, "cellNeighbours");
       gpu.Points.Bind(program, "pointData");
+      if (cellScalars)
+        gpu.CellScalars.Bind(program, "cellScalars");
       gpu.TransferFunction.Bind(program);
       gpu.Isosurfaces.Bind(program, "isosurfaces");
       SetUniforms(program, pass, settings);
@@ -284,6 +290,8 @@ public:
       for (vtkUnstructuredVolumeBufferTexture* texture : { &gpu.BoundaryFaces, &gpu.CellPoints, &gpu.Neighbours,
              &gpu.Points })
         texture->Unbind();
+      if (cellScalars)
+        gpu.CellScalars.Unbind();
       gpu.TransferFunction.Unbind();
       gpu.Isosurfaces.Unbind();
     }
@@ -293,17 +301,16 @@ public:
   }
 
 private:
-  bool NodeTexture = false;
+  vtkHexahedralRayCastPrograms::TraversalOptions Options;
   uvgl::ProgramSources Sources;
 
-  /// The program for these nodes (whether they fit in uniforms decides the defines).
-  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const std::vector<uv::TransferFunction::Node>& nodes)
+  /// The program for these options (built again only when they change).
+  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const vtkHexahedralRayCastPrograms::TraversalOptions& options)
   {
-    const bool nodeTexture = uvgl::NodesNeedTexture(nodes);
-    if (nodeTexture != this->NodeTexture || this->Sources.Fragment.empty())
+    if (!(options == this->Options) || this->Sources.Fragment.empty())
     {
-      this->Sources = vtkHexahedralRayCastPrograms::Traversal({ nodeTexture });
-      this->NodeTexture = nodeTexture;
+      this->Sources = vtkHexahedralRayCastPrograms::Traversal(options);
+      this->Options = options;
     }
     return uvgl::ReadyProgram(window, this->Sources);
   }
@@ -438,12 +445,12 @@ void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumPeels: " << this->MaximumPeels << "\n";
 }
 
-bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, vtkDataArray* scalars)
+bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
 {
   uvvtk::HexahedralMesh& mesh = this->Impl->Mesh;
   bool built = false;
   const std::string error =
-    mesh.Update(input, scalars, [this](double progress) { this->UpdateProgress(progress); }, built);
+    mesh.Update(input, scalar, [this](double progress) { this->UpdateProgress(progress); }, built);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
@@ -486,13 +493,18 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
   Internals& impl = *this->Impl;
   impl.Peels = 0;
   vtkDataSet* input = this->GetDataSetInput();
-  vtkDataArray* scalars = this->FindPointScalars(input);
-  if (!scalars || !this->UpdateMesh(input, scalars) || !this->UpdateTransferFunction(frame.Property))
+  uvvtk::RenderedScalar scalar;
+  if (!this->FindScalar(input, frame.Property, scalar) || !this->UpdateMesh(input, scalar) ||
+    !this->UpdateTransferFunction(frame.Property))
   {
     return false;
   }
   const uv::ScalarNormalisation& normalisation = impl.Mesh.Points.Normalisation;
   impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(normalisation.Offset, normalisation.Scale);
+  // Constant in each cell: no isosurface crosses one; the volume is unlit (the shader lights only
+  // isosurfaces).
+  if (this->WarnCellScalarLimits(scalar, false))
+    impl.DrawnIsosurfaces.clear();
   const glm::dvec3& center = impl.Mesh.Points.Center;
   impl.EyeCellOfFrame = frame.Parallel ? -1 : impl.Eye.Update(impl.Mesh, frame.EyeInModel(center));
   return true;
@@ -507,6 +519,8 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
   impl.Gpu.Points.Sync(window, mesh.Points.Values, 4, mesh.Version);
   impl.Gpu.Neighbours.Sync(window, mesh.Faces.Neighbours, 4, mesh.Version);
   impl.Gpu.BoundaryFaces.Sync(window, mesh.Faces.Boundary, 4, mesh.Version);
+  if (!mesh.CellScalars.empty())
+    impl.Gpu.CellScalars.Sync(window, mesh.CellScalars, 1, mesh.Version);
   impl.Gpu.TransferFunction.Sync(window, impl.TransferFunction.Nodes);
   impl.Gpu.Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(impl.DrawnIsosurfaces), 2, 4,
     uv::IsosurfaceList::Texels(impl.DrawnIsosurfaces));
@@ -525,6 +539,7 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.OpacityThreshold = static_cast<float>(this->OpacityThreshold);
   settings.MaximumCells = static_cast<int>(std::min<std::size_t>(impl.Mesh.CellCount() + 8, 1 << 20));
   settings.IsosurfaceCount = static_cast<int>(impl.DrawnIsosurfaces.size());
+  settings.CellScalars = !impl.Mesh.CellScalars.empty();
 
   impl.Images.Framebuffer->SaveCurrentBindingsAndBuffers();
   impl.Images.Framebuffer->Bind();

@@ -33,7 +33,8 @@
  * uvgl::MaximumUniformNodes nodes is approximated by fewer (with a warning). A perspective eye inside
  * the mesh starts every ray of the first peel in the cell holding it.
  *
- * Input: any vtkDataSet of hexahedra and voxels with a point scalar: vtkUnstructuredGrid, and
+ * Input: any vtkDataSet of hexahedra and voxels with a point or cell scalar (the base's selection; a
+ * cell scalar is one value per cell, constant along the ray inside it): vtkUnstructuredGrid, and
  * vtkStructuredGrid (blanked cells left out), vtkImageData and vtkRectilinearGrid as they are, with
  * no conversion. Other cells are an error: split mixed meshes with vtkHexahedraToTetrahedra and
  * render them with vtkPreIntegratedTetrahedraMapper. Cells touching a NaN scalar are left out (one
@@ -138,7 +139,7 @@ private:
   vtkHexahedralRayCastMapper(const vtkHexahedralRayCastMapper&) = delete;
   void operator=(const vtkHexahedralRayCastMapper&) = delete;
 
-  bool UpdateMesh(vtkDataSet* input, vtkDataArray* scalars);
+  bool UpdateMesh(vtkDataSet* input, const uvvtk::RenderedScalar& scalar);
   bool UpdateTransferFunction(vtkVolumeProperty* property);
 
   class Internals;

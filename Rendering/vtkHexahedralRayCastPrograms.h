@@ -21,6 +21,7 @@
 #include "uvTransferFunctionLib.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
+#include <string>
 #include <vector>
 
 struct vtkHexahedralRayCastPrograms
@@ -28,6 +29,12 @@ struct vtkHexahedralRayCastPrograms
   struct TraversalOptions
   {
     bool NodeTexture = false; // more transfer-function nodes than fit in uniforms
+    bool CellScalars = false; // one scalar per cell (cell data), constant inside it
+
+    bool operator==(const TraversalOptions& other) const
+    {
+      return this->NodeTexture == other.NodeTexture && this->CellScalars == other.CellScalars;
+    }
   };
 
   static uvgl::ProgramSources Entry()
@@ -43,13 +50,23 @@ struct vtkHexahedralRayCastPrograms
   {
     uvgl::ProgramSources sources;
     sources.Vertex = uvFullScreenTriangleVS;
-    sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, uvgl::TransferFunctionDefines(options.NodeTexture),
+    std::string defines = uvgl::TransferFunctionDefines(options.NodeTexture);
+    if (options.CellScalars)
+      defines += "#define UV_CELL_SCALARS\n";
+    sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
       { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
         { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
     return sources;
   }
 
-  static std::vector<TraversalOptions> AllTraversalOptions() { return { { false }, { true } }; }
+  static std::vector<TraversalOptions> AllTraversalOptions()
+  {
+    std::vector<TraversalOptions> all;
+    for (bool nodeTexture : { false, true })
+      for (bool cellScalars : { false, true })
+        all.push_back({ nodeTexture, cellScalars });
+    return all;
+  }
 };
 
 #endif

@@ -1,6 +1,7 @@
 #include "vtkLocatorRayMarcher.h"
 
 #include "vtkCamera.h"
+#include "vtkCellData.h"
 #include "vtkCell.h"
 #include "vtkCellType.h"
 #include "vtkColorTransferFunction.h"
@@ -221,18 +222,26 @@ bool StrictlyInside(vtkCell* cell, const double pcoords[3])
   }
 }
 
-/// The first component of every tuple.
-std::vector<double> FirstComponent(vtkDataArray* array)
+/// One component of every tuple, or (component -1) the tuple's Euclidean norm.
+std::vector<double> ComponentOrNorm(vtkDataArray* array, int component)
 {
   std::vector<double> values(static_cast<std::size_t>(array->GetNumberOfTuples()));
+  std::vector<double> tuple(static_cast<std::size_t>(array->GetNumberOfComponents()));
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-    values[i] = array->GetComponent(i, 0);
+  {
+    array->GetTuple(i, tuple.data());
+    double norm = 0;
+    for (double v : tuple)
+      norm += v * v;
+    values[i] = component < 0 ? std::sqrt(norm) : tuple[component];
+  }
   return values;
 }
 
-/// 1 for the cells the marcher samples: 3D, every point scalar finite. Single-threaded; it also
-/// makes VTK's lazy cell initialisation happen before any thread calls GetCell.
-std::vector<unsigned char> UsableCells(vtkDataSet* input, const std::vector<double>& scalars)
+/// 1 for the cells the marcher samples: 3D, every point scalar (or the cell's scalar) finite.
+/// Single-threaded; it also makes VTK's lazy cell initialisation happen before any thread calls
+/// GetCell.
+std::vector<unsigned char> UsableCells(vtkDataSet* input, const std::vector<double>& scalars, bool cellScalars)
 {
   const vtkIdType numberOfCells = input->GetNumberOfCells();
   vtkNew<vtkGenericCell> cell;
@@ -253,8 +262,8 @@ std::vector<unsigned char> UsableCells(vtkDataSet* input, const std::vector<doub
     if (found->second != 3)
       continue;
     input->GetCellPoints(c, pointIds);
-    bool finite = pointIds->GetNumberOfIds() > 0;
-    for (vtkIdType j = 0; j < pointIds->GetNumberOfIds() && finite; ++j)
+    bool finite = pointIds->GetNumberOfIds() > 0 && (!cellScalars || std::isfinite(scalars[c]));
+    for (vtkIdType j = 0; j < pointIds->GetNumberOfIds() && finite && !cellScalars; ++j)
       finite = std::isfinite(scalars[pointIds->GetId(j)]);
     usable[c] = finite ? 1 : 0;
   }
@@ -280,7 +289,8 @@ struct MarchPixelsWorker
   vtkStaticCellLocator* Locator;
   const double* CellBounds;
   const std::vector<unsigned char>* UsableCell;
-  const std::vector<double>* Scalars;
+  const std::vector<double>* Scalars; // per point, or per cell when CellScalars
+  bool CellScalars;
   const OpticalModel* Model;
   double InverseProjection[16];
   double Bounds[6];
@@ -345,9 +355,13 @@ struct MarchPixelsWorker
       }
       double s = 0;
       const vtkIdType np = cell->GetNumberOfPoints();
-      for (vtkIdType j = 0; j < np; ++j)
+      for (vtkIdType j = 0; j < np && !this->CellScalars; ++j)
       {
         s += weights[j] * (*this->Scalars)[cell->GetPointId(j)];
+      }
+      if (this->CellScalars)
+      {
+        s = (*this->Scalars)[cellId];
       }
       ++found;
       if (!visit(s))
@@ -651,20 +665,24 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
     vtkErrorMacro("Bad image size " << width << "x" << height << ".");
     return false;
   }
-  vtkDataArray* array = this->ScalarArrayName
-    ? this->Input->GetPointData()->GetArray(this->ScalarArrayName)
-    : this->Input->GetPointData()->GetScalars();
+  vtkDataSetAttributes* attributes = this->CellScalars
+    ? static_cast<vtkDataSetAttributes*>(this->Input->GetCellData())
+    : static_cast<vtkDataSetAttributes*>(this->Input->GetPointData());
+  vtkDataArray* array =
+    this->ScalarArrayName ? attributes->GetArray(this->ScalarArrayName) : attributes->GetScalars();
+  const char* where = this->CellScalars ? "cell" : "point";
   if (!array)
   {
-    vtkErrorMacro("The input has no point array "
+    vtkErrorMacro("The input has no " << where << " array "
       << (this->ScalarArrayName ? this->ScalarArrayName : "(active scalars)") << ".");
     return false;
   }
-  const vtkIdType numberOfPoints = this->Input->GetNumberOfPoints();
-  if (array->GetNumberOfTuples() != numberOfPoints || array->GetNumberOfComponents() < 1)
+  const vtkIdType expected = this->CellScalars ? this->Input->GetNumberOfCells() : this->Input->GetNumberOfPoints();
+  if (array->GetNumberOfTuples() != expected || array->GetNumberOfComponents() <= this->ScalarComponent)
   {
-    vtkErrorMacro("The scalar array has " << array->GetNumberOfTuples() << " tuples for "
-                                          << numberOfPoints << " points.");
+    vtkErrorMacro("The scalar array has " << array->GetNumberOfTuples() << " tuples of "
+      << array->GetNumberOfComponents() << " components for " << expected << " " << where << "s (component "
+      << this->ScalarComponent << " asked for).");
     return false;
   }
   OpticalModel model;
@@ -700,8 +718,8 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
     return true;
   }
 
-  const std::vector<double> scalars = FirstComponent(array);
-  const std::vector<unsigned char> usable = UsableCells(this->Input, scalars);
+  const std::vector<double> scalars = ComponentOrNorm(array, this->ScalarComponent);
+  const std::vector<unsigned char> usable = UsableCells(this->Input, scalars, this->CellScalars);
   this->UpdateLocator();
 
   MarchPixelsWorker worker;
@@ -710,6 +728,7 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
   worker.CellBounds = this->CellBounds.data();
   worker.UsableCell = &usable;
   worker.Scalars = &scalars;
+  worker.CellScalars = this->CellScalars;
   worker.Model = &model;
   this->Input->GetBounds(worker.Bounds);
   const double dx = worker.Bounds[1] - worker.Bounds[0], dy = worker.Bounds[3] - worker.Bounds[2],
@@ -737,6 +756,8 @@ void vtkLocatorRayMarcher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Input: " << this->Input.Get() << "\n";
   os << indent << "ScalarArrayName: " << (this->ScalarArrayName ? this->ScalarArrayName : "(none)")
      << "\n";
+  os << indent << "CellScalars: " << this->CellScalars << "\n";
+  os << indent << "ScalarComponent: " << this->ScalarComponent << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty.Get() << "\n";
   os << indent << "Camera: " << this->Camera.Get() << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";

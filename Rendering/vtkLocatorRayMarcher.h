@@ -10,7 +10,7 @@
  * every cell that contains the sample (vtkStaticCellLocator::FindCellsWithinBounds on a tiny box,
  * then vtkCell::EvaluatePosition == 1 with pcoords strictly in the cell's parametric domain) adds
  * its own extinction tau(s) and emission c(s) tau(s), s being the point scalar interpolated with
- * the cell's weights: overlapping cells superpose (a point on a face between two cells belongs to
+ * the cell's weights (or the cell's own value, for a cell scalar): overlapping cells superpose (a point on a face between two cells belongs to
  * one of them: membership is decided 1e-9 of the bounds' diagonal away, in a fixed generic
  * direction). A step whose ends differ in "inside the mesh" is cut at the boundary (bisection)
  * and only its inside part is integrated; so is a step whose ends agree but whose middle does not
@@ -23,7 +23,8 @@
  * functions are accepted: RGB colour space, linear scale, no discretisation, every node with
  * midpoint 0.5 and sharpness 0, 1D transfer-function mode.
  *
- * Cells that are not 3D, or that have a point with a non-finite scalar, are ignored. The locator
+ * Cells that are not 3D, or that have a point (for a cell scalar: a value) with a non-finite scalar,
+ * are ignored. The locator
  * is built once per input (rebuilt when the input's MTime changes). Pixels run in parallel
  * (vtkSMPTools). Gradient opacity and shading are ignored.
  */
@@ -58,9 +59,17 @@ public:
   ///@}
 
   ///@{
-  /// The point array to render (first component); the active point scalars when unset.
+  /// The array to render: the point (CellScalars off, the default) or cell array of that name; the
+  /// active point or cell scalars when unset. ScalarComponent: the component rendered (default 0),
+  /// or -1 for the magnitude (Euclidean norm of the tuple). Set explicitly here, unlike the
+  /// renderers, so that the check does not share their selection code.
   vtkSetStringMacro(ScalarArrayName);
   vtkGetStringMacro(ScalarArrayName);
+  vtkSetMacro(CellScalars, bool);
+  vtkGetMacro(CellScalars, bool);
+  vtkBooleanMacro(CellScalars, bool);
+  vtkSetClampMacro(ScalarComponent, int, -1, VTK_INT_MAX);
+  vtkGetMacro(ScalarComponent, int);
   ///@}
 
   ///@{
@@ -100,6 +109,8 @@ protected:
   vtkSmartPointer<vtkVolumeProperty> VolumeProperty;
   vtkSmartPointer<vtkCamera> Camera;
   char* ScalarArrayName = nullptr;
+  bool CellScalars = false;
+  int ScalarComponent = 0;
   int ImageSize[2] = { 0, 0 };
   int NumberOfSteps = 4000;
 

@@ -167,15 +167,15 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   impl.DrawnTetrahedra = 0;
   // The mesh, when the input or its scalar changed.
   vtkUnstructuredGridBase* input = this->GetInput();
-  vtkDataArray* inputScalars = this->FindPointScalars(input);
-  if (!inputScalars)
+  vtkVolumeProperty* property = frame.Property;
+  uvvtk::RenderedScalar scalar;
+  if (!this->FindScalar(input, property, scalar))
   {
     return false;
   }
   uvvtk::TetrahedralMesh::Change change;
-  const std::string error = impl.Mesh.Update(
-    input, inputScalars, [this](vtkDataSet* split) { return this->FindPointScalars(split); },
-    [this](double progress) { this->UpdateProgress(progress); }, change);
+  const std::string error =
+    impl.Mesh.Update(input, scalar, [this](double progress) { this->UpdateProgress(progress); }, change);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
@@ -192,8 +192,8 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
     return false;
   }
 
-  // Transfer function and isosurfaces, normalised like the scalar.
-  vtkVolumeProperty* property = frame.Property;
+  // Transfer function and isosurfaces, normalised like the scalar (a cell scalar has none).
+  const bool onCells = this->WarnCellScalarLimits(scalar, property->GetShade() != 0);
   impl.TransferFunction.Update(property, impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale);
   if (impl.TransferFunction.Nodes.empty())
   {
@@ -201,6 +201,8 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
     return false;
   }
   impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale);
+  if (onCells)
+    impl.DrawnIsosurfaces.clear();
   impl.Isovalues.clear();
   for (const uv::Isosurface& s : impl.DrawnIsosurfaces)
     impl.Isovalues.push_back(s.Value);
@@ -212,7 +214,7 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   }
 
   // Gradients, only when something is lit.
-  impl.Shade = property->GetShade() != 0;
+  impl.Shade = property->GetShade() != 0 && !onCells;
   impl.NeedGradients = impl.Shade || !impl.Isovalues.empty();
   if (impl.NeedGradients)
   {

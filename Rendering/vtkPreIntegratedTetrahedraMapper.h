@@ -5,7 +5,7 @@
  * A vtkUnstructuredVolumeMapper: it prepares the mesh, visible list and order (Prepare), syncs them
  * to the GPU (Upload) and projects the tetrahedra (Draw); the base does the rest of the frame.
  *
- * Renders a vtkUnstructuredGrid of tetrahedra with a point scalar by cell projection on the GPU,
+ * Renders a vtkUnstructuredGrid of tetrahedra with a point or cell scalar by cell projection on the GPU,
  * after "Volume and Isosurface Rendering with GPU-Accelerated Cell Projection" (Marroquim, Maximo,
  * Farias, Esperanca). Each frame the CPU only sorts the visible tetrahedra (parallel radix sort of
  * centroid distances, redone only when the camera or the data changed) and uploads that order; on
@@ -35,9 +35,10 @@
  *
  * Input: tetrahedra are drawn as they are; other linear 3D cells (hexahedra, voxels, wedges,
  * pyramids) are split once by vtkHexahedraToTetrahedra, with a warning. Quadratic and other cells
- * are an error (nothing drawn). The scalar must be a point array (cell scalars are an error: convert
- * them with vtkCellDataToPointData); its first component is used. Tetrahedra touching a NaN scalar
- * are not drawn (one warning). An empty grid draws nothing.
+ * are an error (nothing drawn). The scalar is selected as the base describes (point or cell array,
+ * magnitude or component); a cell scalar gives each tetrahedron points of its own, so the segment
+ * through it is constant and integrated exactly. Tetrahedra touching a NaN scalar are not drawn (one
+ * warning). An empty grid draws nothing.
  *
  * Tetrahedra whose whole scalar range has zero opacity and holds no isovalue are never drawn; the
  * list of the rest is rebuilt only when a transfer-function edit changes the zero-opacity set.

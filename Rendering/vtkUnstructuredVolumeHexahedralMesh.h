@@ -1,7 +1,7 @@
 // The hexahedra of any vtkDataSet as vtkHexahedralRayCastMapper's passes read them: 8 point ids per
-// cell, the recentred points with the normalised scalar (vtkUnstructuredVolumePointData.h), face
-// adjacency and boundary faces (uvHexahedralMesh.h), rebuilt only when the input or its scalar
-// changes. Reads VTK data through the generic cell API, so no input type needs a conversion.
+// cell, the recentred points with the normalised point scalar (vtkUnstructuredVolumePointData.h) or
+// one normalised value per cell for cell data, face adjacency and boundary faces (uvHexahedralMesh.h),
+// rebuilt only when the input or its scalar changes. Reads VTK data through the generic cell API, so no input type needs a conversion.
 #ifndef vtkUnstructuredVolumeHexahedralMesh_h
 #define vtkUnstructuredVolumeHexahedralMesh_h
 
@@ -19,6 +19,7 @@
 #include "vtkSMPTools.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -33,6 +34,7 @@ class HexahedralMesh
 {
 public:
   std::vector<std::uint32_t> CellPoints; // 8 per cell, VTK hexahedron order
+  std::vector<float> CellScalars;        // per cell, normalised, for a cell scalar (else empty)
   RecentredPoints Points;
   uv::HexahedralFaces Faces;
   vtkIdType TangledCells = 0, NaNCells = 0;
@@ -42,19 +44,21 @@ public:
   std::size_t CellCount() const { return this->CellPoints.size() / 8; }
   std::size_t BoundaryCount() const { return this->Faces.Boundary.size() / 4; }
 
-  /// Rebuilds the mesh when `input` or its point scalar `scalars` changed (`built` then true);
-  /// returns an error message, empty on success. `progress` goes from 0 to 1 over a build.
-  std::string Update(vtkDataSet* input, vtkDataArray* scalars, const std::function<void(double)>& progress, bool& built)
+  /// Rebuilds the mesh when `input` or its rendered scalar changed (`built` then true); returns an
+  /// error message, empty on success. `progress` goes from 0 to 1 over a build.
+  std::string Update(
+    vtkDataSet* input, const RenderedScalar& scalar, const std::function<void(double)>& progress, bool& built)
   {
     built = false;
-    const Source source{ input, input->GetMTime(), scalars, scalars->GetMTime() };
+    const Source source{ input, input->GetMTime(), scalar.Array, scalar.Array->GetMTime(), scalar.OnCells,
+      scalar.Component };
     if (source == this->BuiltFrom)
     {
       return std::string();
     }
     progress(0.0); // the adjacency can take seconds on large meshes
     this->BuiltFrom = Source();
-    this->Points.Build(input, scalars);
+    this->Points.Build(input, scalar);
     const vtkIdType others = this->ReadCells(input);
     if (others > 0)
     {
@@ -79,6 +83,7 @@ public:
   std::size_t Bytes() const
   {
     return sizeof(std::uint32_t) * this->CellPoints.size() + sizeof(float) * this->Points.Values.size() +
+      sizeof(float) * this->CellScalars.size() +
       sizeof(std::int32_t) * (this->Faces.Neighbours.size() + this->Faces.Boundary.size());
   }
 
@@ -90,20 +95,26 @@ private:
     vtkMTimeType InputTime = 0;
     const void* Scalars = nullptr;
     vtkMTimeType ScalarsTime = 0;
+    bool OnCells = false;
+    int Component = 0;
 
     bool operator==(const Source& other) const
     {
       return this->Input == other.Input && this->InputTime == other.InputTime && this->Scalars == other.Scalars &&
-        this->ScalarsTime == other.ScalarsTime;
+        this->ScalarsTime == other.ScalarsTime && this->OnCells == other.OnCells &&
+        this->Component == other.Component;
     }
   };
   Source BuiltFrom;
 
   /// The hexahedra and voxels of `grid` into CellPoints (voxels reordered), leaving out those that
-  /// touch a NaN scalar. Returns how many cells are neither (not drawable here).
+  /// touch a NaN point scalar or hold a NaN cell scalar. Returns how many cells are neither (not
+  /// drawable here).
   vtkIdType ReadCells(vtkDataSet* grid)
   {
+    const bool onCells = !this->Points.CellValues.empty();
     this->CellPoints.clear();
+    this->CellScalars.clear();
     this->NaNCells = 0;
     vtkIdType others = 0;
     vtkNew<vtkIdList> cellIds;
@@ -122,12 +133,16 @@ private:
       std::array<std::uint32_t, 8> corners;
       for (int k = 0; k < 8; ++k)
         corners[k] = static_cast<std::uint32_t>(ids[type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k]);
-      if (!uv::ScalarsFinite(this->Points.Values, corners.data(), 8))
+      const bool finite = onCells ? std::isfinite(this->Points.CellValues[c])
+                                  : uv::ScalarsFinite(this->Points.Values, corners.data(), 8);
+      if (!finite)
       {
         ++this->NaNCells;
         continue;
       }
       this->CellPoints.insert(this->CellPoints.end(), corners.begin(), corners.end());
+      if (onCells)
+        this->CellScalars.push_back(this->Points.CellValues[c]);
     }
     return others;
   }

@@ -3,7 +3,7 @@
 #include "uvIsosurfaceList.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
-#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+#include "vtkUnstructuredVolumeScalar.h"
 
 #include "vtkDataSet.h"
 #include "vtkImageData.h"
@@ -20,7 +20,7 @@ struct vtkUnstructuredVolumeMapper::Shared
   vtkUnstructuredVolumeFloatTarget Target;
   vtkSmartPointer<vtkImageData> FloatImage;
   vtkOpenGLRenderWindow* Context = nullptr;
-  bool WarnedMultisample = false;
+  bool WarnedMultisample = false, WarnedCellScalarLimits = false;
 };
 
 vtkUnstructuredVolumeMapper::vtkUnstructuredVolumeMapper()
@@ -59,21 +59,37 @@ vtkImageData* vtkUnstructuredVolumeMapper::GetFloatImage()
   return this->Base->FloatImage;
 }
 
-vtkDataArray* vtkUnstructuredVolumeMapper::FindPointScalars(vtkDataSet* data)
+bool vtkUnstructuredVolumeMapper::FindScalar(
+  vtkDataSet* data, vtkVolumeProperty* property, uvvtk::RenderedScalar& scalar)
 {
-  int cellFlag = 0;
-  vtkDataArray* scalars = uvvtk::MapperScalars(this, data, cellFlag);
-  if (!scalars)
+  scalar = uvvtk::FindRenderedScalar(
+    data, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, property);
+  if (!scalar)
   {
-    vtkErrorMacro("the input has no point scalar to render (set one, or select an array with SelectScalarArray)");
-    return nullptr;
+    vtkErrorMacro("the input has no point or cell scalar to render (set one, or select an array with "
+                  "SelectScalarArray)");
+    return false;
   }
-  if (cellFlag != 0)
+  return true;
+}
+
+bool vtkUnstructuredVolumeMapper::WarnCellScalarLimits(const uvvtk::RenderedScalar& scalar, bool shade)
+{
+  if (!scalar.OnCells)
   {
-    vtkErrorMacro("cell scalars are not supported: convert them to point data (vtkCellDataToPointData)");
-    return nullptr;
+    return false;
   }
-  return scalars;
+  const bool isosurfaces = this->GetNumberOfIsosurfaces() > 0;
+  if ((isosurfaces || shade) && !this->Base->WarnedCellScalarLimits)
+  {
+    vtkWarningMacro("rendering the " << scalar.Describe() << ", constant in each cell: "
+                                     << (isosurfaces ? "isosurfaces are not drawn" : "")
+                                     << (isosurfaces && shade ? " and " : "")
+                                     << (shade ? "volume shading is off" : "")
+                                     << " (both need a field that varies inside cells)");
+    this->Base->WarnedCellScalarLimits = true;
+  }
+  return true;
 }
 
 bool vtkUnstructuredVolumeMapper::CheckArguments(vtkRenderer* renderer, vtkVolume* volume)

@@ -2,11 +2,16 @@
  * @class vtkUnstructuredVolumeMapper
  * @brief The base of this module's volume mappers: one frame as Prepare, Upload, Draw.
  *
- * What every mapper shares lives here, once: the isosurface list, the float image a test or the
- * benchmark may keep, the projection route of the tetrahedral mappers, the checks of the render
- * call's arguments with one set of error messages, the camera (vtkUnstructuredVolumeFrame), the
- * premultiplied float target with the scene's depth (vtkUnstructuredVolumeFloatTarget), the OpenGL
- * state saved around the mapper's passes, the final blend into VTK's scene, and releasing it all.
+ * What every mapper shares lives here, once: the rendered scalar's selection (FindScalar: a point
+ * or cell array by the scalar mode and SelectScalarArray, the default taking point scalars, else
+ * cell scalars; of a multi-component array its magnitude or one component, as the colour transfer
+ * function's vector mode and component say, which ParaView's "Magnitude" / "X" entries set), the
+ * isosurface list, the float image a test or the benchmark may keep, the projection route of the
+ * tetrahedral mappers, the checks of the render call's arguments with one set of error messages,
+ * the camera (vtkUnstructuredVolumeFrame), the premultiplied float target with the scene's depth
+ * (vtkUnstructuredVolumeFloatTarget), the OpenGL state saved around the mapper's passes, the final
+ * blend into VTK's scene, and releasing it all. A cell scalar is constant in each cell: no mapper
+ * draws isosurfaces or shades the volume for it yet (one warning says so).
  *
  * Render is final and reads as the frame's steps:
  *   1. check the window, the volume's property and the input (an empty input draws nothing);
@@ -29,11 +34,16 @@ class vtkDataArray;
 class vtkDataSet;
 class vtkImageData;
 class vtkOpenGLRenderWindow;
+class vtkVolumeProperty;
 class vtkUnstructuredVolumeFloatTarget;
 struct vtkUnstructuredVolumeFrame;
 namespace uv
 {
 class IsosurfaceList;
+}
+namespace uvvtk
+{
+struct RenderedScalar;
 }
 
 class VTKUNSTRUCTUREDVOLUME_EXPORT vtkUnstructuredVolumeMapper : public vtkUnstructuredGridVolumeMapper
@@ -94,9 +104,14 @@ protected:
   /// Releases the mapper's own GPU resources (the base releases the float target).
   virtual void ReleaseMapperGraphics() = 0;
 
-  /// The point scalar the mapper is set to render on `data` (scalar mode, array access, id or name),
-  /// or null after reporting why (none, or cell data).
-  vtkDataArray* FindPointScalars(vtkDataSet* data);
+  /// The scalar the mapper is set to render on `data`: a point or cell array by scalar mode, array
+  /// access, id or name; magnitude or a component by `property`'s colour function (VTK's vector
+  /// mode). False after reporting why there is none.
+  bool FindScalar(vtkDataSet* data, vtkVolumeProperty* property, uvvtk::RenderedScalar& scalar);
+
+  /// For a cell scalar (constant in each cell): says once that isosurfaces and shading, which need a
+  /// field varying inside cells, are not drawn. Returns true when the scalar is on cells.
+  bool WarnCellScalarLimits(const uvvtk::RenderedScalar& scalar, bool shade);
 
   /// The isosurfaces, in value order.
   const uv::IsosurfaceList& GetIsosurfaces() const;

@@ -4,6 +4,7 @@
 #include "uvLinearCellSplit.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
+#include "vtkUnstructuredVolumeScalar.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
 
 #include "vtkCamera.h"
@@ -65,27 +66,35 @@ struct Mesh
 {
   glm::dvec3 Centre{ 0.0 };
   std::vector<glm::dvec3> Points;
-  std::vector<double> Values;
+  std::vector<double> Values;     // per point (point scalar)
+  std::vector<double> CellValues; // per input cell (cell scalar), else empty
   std::vector<Cell> Cells;
+  std::vector<double> CellScalar; // per entry of Cells, for a cell scalar
   std::vector<uv::BoundingVolumeHierarchy::Box> Boxes;
   vtkIdType NotThreeDimensional = 0;
   vtkIdType NonFinite = 0;
   vtkIdType Unsupported = -1; // the first cell of a type the reference does not take
 
-  void LoadPoints(vtkDataSet* input, vtkDataArray* scalars)
+  bool OnCells() const { return !this->CellValues.empty(); }
+
+  void LoadPoints(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
   {
     double bounds[6];
     input->GetBounds(bounds);
     this->Centre = 0.5 * glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]);
     const vtkIdType count = input->GetNumberOfPoints();
     this->Points.resize(count);
-    this->Values.resize(count);
+    this->Values.assign(scalar.OnCells ? 0 : count, 0.0);
     for (vtkIdType i = 0; i < count; ++i)
     {
       input->GetPoint(i, &this->Points[i].x);
       this->Points[i] -= this->Centre;
-      this->Values[i] = scalars->GetComponent(i, 0);
+      if (!scalar.OnCells)
+        this->Values[i] = scalar(i);
     }
+    this->CellValues.resize(scalar.OnCells ? input->GetNumberOfCells() : 0);
+    for (std::size_t c = 0; c < this->CellValues.size(); ++c)
+      this->CellValues[c] = scalar(static_cast<vtkIdType>(c));
   }
 
   /// Collects the 3D cells; false at the first cell type it cannot take (Unsupported says which).
@@ -110,13 +119,13 @@ struct Mesh
       input->GetCellPoints(c, ids);
       Cell cell{ ShapeOf(type), {} };
       uv::BoundingVolumeHierarchy::Box box;
-      bool finite = true;
+      bool finite = !this->OnCells() || std::isfinite(this->CellValues[c]);
       for (int k = 0; k < cell.Corners(); ++k)
       {
         const vtkIdType id = ids->GetId(type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k);
         cell.Ids[k] = id;
         box.Add({ this->Points[id], this->Points[id] });
-        finite = finite && std::isfinite(this->Values[id]);
+        finite = finite && (this->OnCells() || std::isfinite(this->Values[id]));
       }
       if (!finite)
       {
@@ -125,6 +134,8 @@ struct Mesh
       }
       this->Cells.push_back(cell);
       this->Boxes.push_back(box);
+      if (this->OnCells())
+        this->CellScalar.push_back(this->CellValues[c]);
     }
     return true;
   }
@@ -136,9 +147,9 @@ struct Segment
   std::int64_t Cell;
 };
 
-/// The scalar along one segment of a ray: linear in a tetrahedron; in an isoparametric cell a
-/// certified Chebyshev fit (17 inverse solves stand in for the hundreds the quadrature makes), or
-/// the inverse map itself where the fit is not resolved.
+/// The scalar along one segment of a ray: the cell's value for a cell scalar; linear in a
+/// tetrahedron; in an isoparametric cell a certified Chebyshev fit (17 inverse solves stand in for
+/// the hundreds the quadrature makes), or the inverse map itself where the fit is not resolved.
 class SegmentScalar
 {
 public:
@@ -147,6 +158,11 @@ public:
     , T0(segment.Span.Enter)
     , T1(segment.Span.Exit)
   {
+    if (mesh.OnCells())
+    {
+      this->S0 = this->S1 = mesh.CellScalar[segment.Cell]; // constant: no shape needed
+      return;
+    }
     const Cell& cell = mesh.Cells[segment.Cell];
     for (int k = 0; k < cell.Corners(); ++k)
     {
@@ -406,6 +422,24 @@ void vtkUnstructuredVolumeReferenceRenderer::SetInputData(vtkDataSet* input)
   vtkSetObjectBodyMacro(Input, vtkDataSet, input);
 }
 
+uvvtk::RenderedScalar vtkUnstructuredVolumeReferenceRenderer::FindScalar()
+{
+  const char* name = this->ScalarArrayName;
+  int mode = this->ScalarMode;
+  if (mode == VTK_SCALAR_MODE_DEFAULT && name)
+  {
+    // A name alone: the point array of that name, else the cell array.
+    mode = this->Input->GetPointData()->GetArray(name) ? VTK_SCALAR_MODE_USE_POINT_FIELD_DATA
+                                                       : VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
+  }
+  if (!name && mode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA)
+    mode = VTK_SCALAR_MODE_USE_POINT_DATA;
+  if (!name && mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
+    mode = VTK_SCALAR_MODE_USE_CELL_DATA;
+  return uvvtk::FindRenderedScalar(
+    this->Input, mode, VTK_GET_ARRAY_BY_NAME, -1, name ? name : "", this->VolumeProperty);
+}
+
 bool vtkUnstructuredVolumeReferenceRenderer::Render()
 {
   const int width = this->ImageSize[0], height = this->ImageSize[1];
@@ -432,13 +466,12 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     return true; // nothing to render: a transparent image
   }
 
-  vtkDataArray* scalars = this->ScalarArrayName
-    ? this->Input->GetPointData()->GetArray(this->ScalarArrayName)
-    : this->Input->GetPointData()->GetScalars();
-  if (!scalars || scalars->GetNumberOfComponents() != 1)
+  const uvvtk::RenderedScalar scalar = this->FindScalar();
+  if (!scalar)
   {
-    vtkErrorMacro("No single-component point scalar array "
-      << (this->ScalarArrayName ? this->ScalarArrayName : "(active scalars)") << " on the input.");
+    vtkErrorMacro("No " << (this->ScalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA ? "cell" : "point or cell")
+                        << " array " << (this->ScalarArrayName ? this->ScalarArrayName : "(active scalars)")
+                        << " on the input.");
     return false;
   }
   const std::vector<uv::TransferFunction::Node> nodes = uvvtk::TransferFunctionNodes(this->VolumeProperty);
@@ -454,7 +487,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   }
 
   Mesh mesh;
-  mesh.LoadPoints(this->Input, scalars);
+  mesh.LoadPoints(this->Input, scalar);
   if (!mesh.LoadCells(this->Input))
   {
     vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges and "
@@ -530,4 +563,5 @@ void vtkUnstructuredVolumeReferenceRenderer::PrintSelf(ostream& os, vtkIndent in
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "ScalarArrayName: " << (this->ScalarArrayName ? this->ScalarArrayName : "(active)") << "\n";
+  os << indent << "ScalarMode: " << this->ScalarMode << "\n";
 }

@@ -3,7 +3,8 @@
  * @brief   Exact CPU volume rendering of unstructured grids in double precision: the ground truth.
  *
  * Renders a point scalar on tetrahedra (linear), hexahedra/voxels (trilinear), wedges and pyramids
- * (VTK's isoparametric bases) with
+ * (VTK's isoparametric bases), or a cell scalar (constant in each cell, so each segment's integral is
+ * closed-form), with
  * the project's optical model (see README, "Optical model"): every ray visits every cell it meets in
  * exact order (non-convex meshes, holes and re-entering rays included; a ray may enter a curved
  * hexahedron twice), each segment is cut where the scalar crosses a transfer-function node and
@@ -27,6 +28,7 @@
 #ifndef vtkUnstructuredVolumeReferenceRenderer_h
 #define vtkUnstructuredVolumeReferenceRenderer_h
 
+#include "vtkAbstractMapper.h" // for VTK_SCALAR_MODE_*
 #include "vtkObject.h"
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
@@ -34,6 +36,10 @@ class vtkCamera;
 class vtkDataSet;
 class vtkImageData;
 class vtkVolumeProperty;
+namespace uvvtk
+{
+struct RenderedScalar;
+}
 
 class VTKUNSTRUCTUREDVOLUME_EXPORT vtkUnstructuredVolumeReferenceRenderer : public vtkObject
 {
@@ -46,9 +52,21 @@ public:
   void SetInputData(vtkDataSet* input);
   vtkGetObjectMacro(Input, vtkDataSet);
 
-  /// Point scalar to render; the active point scalars when unset.
+  ///@{
+  /// The array to render, as VTK's mappers select it: ScalarMode VTK_SCALAR_MODE_DEFAULT (the
+  /// default) takes the point array named ScalarArrayName, else the cell array of that name, and
+  /// without a name the active point scalars, else the active cell scalars;
+  /// ..._USE_POINT_FIELD_DATA / ..._USE_CELL_FIELD_DATA take the named (or active) point / cell
+  /// array. Of a multi-component array the volume property's colour function selects the magnitude
+  /// or a component (vtkScalarsToColors' vector mode and component), as for the mappers.
   vtkSetStringMacro(ScalarArrayName);
   vtkGetStringMacro(ScalarArrayName);
+  vtkSetMacro(ScalarMode, int);
+  vtkGetMacro(ScalarMode, int);
+  void SetScalarModeToDefault() { this->SetScalarMode(VTK_SCALAR_MODE_DEFAULT); }
+  void SetScalarModeToUsePointFieldData() { this->SetScalarMode(VTK_SCALAR_MODE_USE_POINT_FIELD_DATA); }
+  void SetScalarModeToUseCellFieldData() { this->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_FIELD_DATA); }
+  ///@}
 
   void SetVolumeProperty(vtkVolumeProperty* property);
   vtkGetObjectMacro(VolumeProperty, vtkVolumeProperty);
@@ -81,6 +99,7 @@ protected:
 
   vtkDataSet* Input = nullptr;
   char* ScalarArrayName = nullptr;
+  int ScalarMode = VTK_SCALAR_MODE_DEFAULT;
   vtkVolumeProperty* VolumeProperty = nullptr;
   vtkCamera* Camera = nullptr;
   int ImageSize[2] = { 512, 512 };
@@ -88,6 +107,8 @@ protected:
   vtkImageData* Output = nullptr;
 
 private:
+  uvvtk::RenderedScalar FindScalar();
+
   vtkUnstructuredVolumeReferenceRenderer(const vtkUnstructuredVolumeReferenceRenderer&) = delete;
   void operator=(const vtkUnstructuredVolumeReferenceRenderer&) = delete;
 };

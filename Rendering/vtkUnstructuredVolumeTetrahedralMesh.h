@@ -9,11 +9,13 @@
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
 #include "vtkUnstructuredVolumePointData.h"
+#include "vtkUnstructuredVolumeScalar.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkHexahedraToTetrahedra.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -57,9 +59,14 @@ public:
   };
 
   vtkSmartPointer<vtkUnstructuredGrid> Tetrahedra; // the input, or its split
-  vtkSmartPointer<vtkDataArray> Scalars;           // the rendered scalar of Tetrahedra
-  std::vector<std::uint32_t> TetrahedronPoints;    // 4 point ids per drawable tetrahedron
+  vtkSmartPointer<vtkDataArray> Scalars;           // the rendered array of Tetrahedra
+  RenderedScalar Scalar;                           // what of it is rendered (Array == Scalars)
+  std::vector<std::uint32_t> TetrahedronPoints;    // 4 uploaded point ids per drawable tetrahedron
   std::vector<float> PointData;                    // recentred position and normalised scalar
+  // For a cell scalar every tetrahedron has 4 points of its own carrying its value (the field is
+  // constant in it and jumps at its faces); this is the Tetrahedra point each one copies. Empty for a
+  // point scalar, whose points are Tetrahedra's.
+  std::vector<std::uint32_t> CornerPoints;
   std::vector<float> ScalarLow, ScalarHigh;        // per tetrahedron, normalised
   std::vector<float> Centroids;                    // per tetrahedron, recentred
   glm::dvec3 Center{ 0.0 };
@@ -72,39 +79,24 @@ public:
   std::uint64_t CellsVersion = 0; // TetrahedronPoints, ScalarLow/High (not a point-only refresh)
 
   std::size_t Size() const { return this->TetrahedronPoints.size() / 4; }
+  bool OnCells() const { return this->Scalar.OnCells; }
   /// Forgets the build: the next Update rebuilds.
   void Invalidate() { this->TopologyKey.clear(); this->FullKey.clear(); }
 
-  /// Brings the mesh up to date with `input` and its rendered point scalar `inputScalars` (first
-  /// component). When only the points moved (same cells, same scalar array) just the positions and
-  /// centroids are refreshed: a deforming mesh costs no rebuild. `findScalars` finds the scalar again
-  /// on the split grid. Returns an error message, empty on success.
-  std::string Update(vtkUnstructuredGridBase* input, vtkDataArray* inputScalars,
-    const std::function<vtkDataArray*(vtkDataSet*)>& findScalars, const std::function<void(double)>& progress,
-    Change& change)
+  /// Brings the mesh up to date with `input` and its rendered scalar. When only the points moved
+  /// (same cells, same scalar) just the positions and centroids are refreshed: a deforming mesh costs
+  /// no rebuild. Returns an error message, empty on success.
+  std::string Update(vtkUnstructuredGridBase* input, const RenderedScalar& scalar,
+    const std::function<void(double)>& progress, Change& change)
   {
     change = Change::Nothing;
-    auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
-    const auto id = [](const void* p) { return std::to_string(reinterpret_cast<std::uintptr_t>(p)); };
-    std::string topologyKey = id(input) + ":" + id(inputScalars) + ":" + std::to_string(inputScalars->GetMTime());
-    std::string pointsKey;
-    if (grid && grid->GetCells() && grid->GetCellTypesArray() && grid->GetPoints())
-    {
-      topologyKey += ":" + id(grid->GetCells()) + ":" + std::to_string(grid->GetCells()->GetMTime()) + ":" +
-        id(grid->GetCellTypesArray()) + ":" + std::to_string(grid->GetCellTypesArray()->GetMTime()) + ":" +
-        std::to_string(grid->GetNumberOfPoints());
-      pointsKey = id(grid->GetPoints()) + ":" + std::to_string(grid->GetPoints()->GetMTime());
-    }
-    else
-    {
-      topologyKey += ":" + std::to_string(input->GetMTime());
-    }
-    const std::string fullKey = topologyKey + "|" + pointsKey;
+    const std::string topologyKey = TopologyKeyOf(input, scalar);
+    const std::string fullKey = topologyKey + "|" + PointsKeyOf(input);
     if (fullKey == this->FullKey)
     {
       return std::string();
     }
-    if (topologyKey == this->TopologyKey && this->SplitCells == 0 && grid == this->Tetrahedra)
+    if (topologyKey == this->TopologyKey && this->SplitCells == 0 && input == this->Tetrahedra.Get())
     {
       this->RefreshPoints();
       this->FullKey = fullKey;
@@ -117,7 +109,7 @@ public:
     change = Change::All;
     ++this->Version;
     ++this->CellsVersion;
-    std::string error = this->Build(input, inputScalars, findScalars, progress);
+    std::string error = this->Build(input, scalar, progress);
     if (error.empty())
     {
       this->TopologyKey = topologyKey;
@@ -130,10 +122,60 @@ public:
 private:
   std::string TopologyKey, FullKey;
 
-  std::string Build(vtkUnstructuredGridBase* input, vtkDataArray* inputScalars,
-    const std::function<vtkDataArray*(vtkDataSet*)>& findScalars, const std::function<void(double)>& progress)
+  static std::string Id(const void* p) { return std::to_string(reinterpret_cast<std::uintptr_t>(p)); }
+
+  /// Identifies the cells and the scalar (not the point positions) by address and modification time.
+  static std::string TopologyKeyOf(vtkUnstructuredGridBase* input, const RenderedScalar& scalar)
+  {
+    std::string key = Id(input) + ":" + Id(scalar.Array) + ":" + std::to_string(scalar.Array->GetMTime()) + ":" +
+      (scalar.OnCells ? "cells:" : "points:") + std::to_string(scalar.Component);
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+    if (grid && grid->GetCells() && grid->GetCellTypesArray() && grid->GetPoints())
+    {
+      return key + ":" + Id(grid->GetCells()) + ":" + std::to_string(grid->GetCells()->GetMTime()) + ":" +
+        Id(grid->GetCellTypesArray()) + ":" + std::to_string(grid->GetCellTypesArray()->GetMTime()) + ":" +
+        std::to_string(grid->GetNumberOfPoints());
+    }
+    return key + ":" + std::to_string(input->GetMTime());
+  }
+
+  static std::string PointsKeyOf(vtkUnstructuredGridBase* input)
+  {
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+    if (grid && grid->GetCells() && grid->GetCellTypesArray() && grid->GetPoints())
+    {
+      return Id(grid->GetPoints()) + ":" + std::to_string(grid->GetPoints()->GetMTime());
+    }
+    return std::string();
+  }
+
+  std::string Build(vtkUnstructuredGridBase* input, const RenderedScalar& scalar,
+    const std::function<void(double)>& progress)
   {
     progress(0.0); // preparation (split, arrays) can take seconds on large meshes
+    std::string error = this->SplitIntoTetrahedra(input, scalar, progress);
+    if (!error.empty())
+    {
+      return error;
+    }
+    // Normalised scalar and recentred positions, in double then float.
+    RecentredPoints recentred;
+    recentred.Build(this->Tetrahedra, this->Scalar);
+    this->PointData = std::move(recentred.Values);
+    this->Center = recentred.Center;
+    this->Normalisation = recentred.Normalisation;
+    this->ReadTetrahedra(recentred.CellValues);
+    this->WriteScalarRanges();
+    this->WriteCentroids();
+    progress(1.0);
+    return std::string();
+  }
+
+  /// Tetrahedra := the input's cells as tetrahedra (the input itself when it has only those), and
+  /// Scalar the same selection on it.
+  std::string SplitIntoTetrahedra(
+    vtkUnstructuredGridBase* input, const RenderedScalar& scalar, const std::function<void(double)>& progress)
+  {
     vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(input);
     if (!grid)
     {
@@ -145,7 +187,7 @@ private:
     {
       this->SplitCells += grid->GetCellType(c) != VTK_TETRA ? 1 : 0;
     }
-    this->Scalars = inputScalars;
+    this->Scalar = scalar;
     if (this->SplitCells > 0)
     {
       vtkNew<vtkHexahedraToTetrahedra> split;
@@ -158,30 +200,28 @@ private:
       }
       grid = tets;
       progress(0.5);
-      this->Scalars = findScalars(grid);
-      if (!this->Scalars)
-      {
-        // The scalar had no name to find it by after the split: it is the output's scalars.
-        this->Scalars = grid->GetPointData()->GetScalars();
-      }
-      if (!this->Scalars)
+      this->Scalar = scalar.On(grid);
+      if (!this->Scalar)
       {
         return "lost the scalar array while splitting the cells";
       }
     }
     this->Tetrahedra = grid;
+    this->Scalars = this->Scalar.Array;
+    return std::string();
+  }
 
-    // Normalised scalar (first component) and recentred positions, in double then float.
-    RecentredPoints recentred;
-    recentred.Build(grid, this->Scalars);
-    this->PointData = std::move(recentred.Values);
-    this->Center = recentred.Center;
-    this->Normalisation = recentred.Normalisation;
-
-    // Tetrahedra: those with a NaN scalar are left out.
+  /// TetrahedronPoints (and for a cell scalar CornerPoints and the corners' PointData) from the
+  /// tetrahedra whose scalar is finite; `cellValues` holds a cell scalar's normalised values.
+  void ReadTetrahedra(const std::vector<float>& cellValues)
+  {
+    vtkUnstructuredGrid* grid = this->Tetrahedra;
+    const bool onCells = this->Scalar.OnCells;
     this->TetrahedronPoints.clear();
     this->TetrahedronPoints.reserve(4 * grid->GetNumberOfCells());
+    this->CornerPoints.clear();
     this->NaNTetrahedra = 0;
+    std::vector<float> corners; // cell scalar: the corners' values
     vtkIdType npts;
     const vtkIdType* ids;
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
@@ -189,14 +229,33 @@ private:
       if (grid->GetCellType(c) != VTK_TETRA)
         continue;
       grid->GetCellPoints(c, npts, ids);
-      if (!uv::ScalarsFinite(this->PointData, ids, 4))
+      if (onCells ? !std::isfinite(cellValues[c]) : !uv::ScalarsFinite(this->PointData, ids, 4))
       {
         ++this->NaNTetrahedra;
         continue;
       }
       for (int k = 0; k < 4; ++k)
-        this->TetrahedronPoints.push_back(static_cast<std::uint32_t>(ids[k]));
+      {
+        const auto point = static_cast<std::uint32_t>(ids[k]);
+        this->TetrahedronPoints.push_back(onCells ? static_cast<std::uint32_t>(this->CornerPoints.size()) : point);
+        if (onCells)
+        {
+          this->CornerPoints.push_back(point);
+          corners.push_back(cellValues[c]);
+        }
+      }
     }
+    if (onCells)
+    {
+      this->PointData.assign(4 * corners.size(), 0.0f);
+      for (std::size_t i = 0; i < corners.size(); ++i)
+        this->PointData[4 * i + 3] = corners[i];
+      this->WritePositions();
+    }
+  }
+
+  void WriteScalarRanges()
+  {
     const std::size_t tetCount = this->Size();
     this->ScalarLow.resize(tetCount);
     this->ScalarHigh.resize(tetCount);
@@ -214,21 +273,21 @@ private:
         this->ScalarHigh[t] = hi;
       }
     });
-    this->WriteCentroids();
-    progress(1.0);
-    return std::string();
   }
 
-  /// Positions relative to Center.
+  /// Positions relative to Center (of each corner's point, for a cell scalar).
   void WritePositions()
   {
     vtkPoints* points = this->Tetrahedra->GetPoints();
     const glm::dvec3 center = this->Center;
-    vtkSMPTools::For(0, this->Tetrahedra->GetNumberOfPoints(), [&](vtkIdType begin, vtkIdType end) {
+    const bool corners = this->Scalar.OnCells;
+    const vtkIdType count =
+      corners ? static_cast<vtkIdType>(this->CornerPoints.size()) : this->Tetrahedra->GetNumberOfPoints();
+    vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
       double x[3];
       for (vtkIdType p = begin; p < end; ++p)
       {
-        points->GetPoint(p, x);
+        points->GetPoint(corners ? this->CornerPoints[p] : p, x);
         for (int d = 0; d < 3; ++d)
           this->PointData[4 * p + d] = static_cast<float>(x[d] - center[d]);
       }
@@ -260,14 +319,6 @@ private:
     this->WriteCentroids();
   }
 };
-
-/// The point scalar a volume mapper is set to render on `data` (its scalar mode, array access, id and
-/// name); `cellFlag` is 1 when it found cell data instead.
-inline vtkDataArray* MapperScalars(vtkAbstractVolumeMapper* mapper, vtkDataSet* data, int& cellFlag)
-{
-  return vtkAbstractMapper::GetScalars(data, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
-    mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
-}
 
 /// The warnings a mesh update owes the user, each once per mapper: cells split into tetrahedra and
 /// tetrahedra left out for a NaN scalar.
@@ -308,10 +359,12 @@ inline std::vector<float> VertexGradients(const TetrahedralMesh& mesh, vtkDataAr
     {
       named->ShallowCopy(mesh.Scalars);
     }
-    else // the rendered scalar is component 0 (e.g. ParaView's "_and_opacity" arrays)
+    else // the rendered magnitude or component
     {
+      named = vtkSmartPointer<vtkDoubleArray>::New();
       named->SetNumberOfTuples(mesh.Scalars->GetNumberOfTuples());
-      named->CopyComponent(0, mesh.Scalars, 0);
+      for (vtkIdType p = 0; p < named->GetNumberOfTuples(); ++p)
+        named->SetComponent(p, 0, mesh.Scalar(p));
     }
     named->SetName("uvScalar");
     scalarOnly->GetPointData()->AddArray(named);

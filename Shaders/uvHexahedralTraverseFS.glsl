@@ -16,6 +16,9 @@ uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
 uniform sampler2D opaqueDepth;
 uniform isamplerBuffer boundaryFaces;
 uniform isamplerBuffer cellNeighbours; // per cell 6 values (2 texels): neighbour * 8 + its face, or -1
+#ifdef UV_CELL_SCALARS
+uniform samplerBuffer cellScalars;      // cell data: one normalised value per cell, constant in it
+#endif
 uniform mat4 clipToModel;
 uniform vec2 viewportSize;
 uniform int integrationMode;    // 0 accurate, 1 fast, 2 fixed steps
@@ -77,6 +80,12 @@ void LoadCell(int cell)
     points[k] = data.xyz;
     scalars[k] = data.w;
   }
+#ifdef UV_CELL_SCALARS
+  // Every corner takes the cell's value: the cubic along the ray is that constant.
+  float value = texelFetch(cellScalars, cell).r;
+  for (int k = 0; k < 8; ++k)
+    scalars[k] = value;
+#endif
   mapB = points[1] - points[0];
   mapC = points[3] - points[0];
   mapD = points[4] - points[0];

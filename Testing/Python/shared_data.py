@@ -114,6 +114,19 @@ def openfoam_cavity_points():
     return reader.GetOutput().GetBlock(0)  # the internal mesh, an unstructured grid
 
 
+def openfoam_cavity_cells():
+    """The OpenFOAM cavity's internal mesh (400 hexahedra) at its last time step with its data as
+    OpenFOAM writes it, per cell; "p" (scalar) and "U" (vector)."""
+    reader = vtkOpenFOAMReader()
+    reader.SetFileName(path("openfoam_cavity", "cavity", "case.foam"))
+    reader.CreateCellToPointOff()
+    reader.UpdateInformation()
+    steps = reader.GetTimeValues()
+    reader.UpdateTimeStep(steps.GetValue(steps.GetNumberOfTuples() - 1))
+    reader.Update()
+    return reader.GetOutput().GetBlock(0)
+
+
 def bucky():
     """NVIDIA's 32^3 uint8 Bucky ball as 29791 voxels; "density"."""
     reader = vtkImageReader2()
@@ -127,8 +140,9 @@ def bucky():
     return _unstructured(reader)
 
 
-# Every real mesh the reference renders with a point scalar: name, loader, scalar. The cell-data,
-# higher-order and polyhedral meshes of ../shared/data are not here (the reference does not take them yet).
+# Every real mesh the reference renders with a point scalar: name, loader, scalar. The higher-order
+# and polyhedral meshes of ../shared/data are not here (the reference does not take them yet); the
+# cell data is in CELL_DATA_MESHES.
 REFERENCE_MESHES = [
     ("blunt_fin", bluntfin, "Density"),
     ("super_phoenix", lambda: legacy("spx", "spx.vtk"), "scalars"),
@@ -145,3 +159,11 @@ REFERENCE_MESHES = [
     ("bucky", bucky, "density"),
 ] + [(f"mfem_{name}", (lambda name=name: _with_smooth_field(legacy("mfem_small", f"{name}.vtk"))), "field")
      for name in ("beam-hex", "beam-tet", "beam-wedge", "escher", "fichera")]
+
+# Every real mesh with a cell scalar: name, loader, the cell array (SampleStructGrid has a point and a
+# cell array both named "scalars").
+CELL_DATA_MESHES = [
+    ("openfoam_cavity", openfoam_cavity_cells, "p"),
+    ("can", can, "EQPS"),
+    ("sample_struct_grid", sample_struct_grid, "scalars"),
+]
