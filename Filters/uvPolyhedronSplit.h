@@ -91,7 +91,12 @@ bool ParseFaces(const IdType* stream, std::size_t length, IdType numPoints, Face
   for (IdType f = 0; f < stream[0]; ++f)
   {
     const IdType n = at < length ? stream[at] : 0;
-    if (n < 3 || at + 1 + static_cast<std::size_t>(n) > length)
+    if (at >= length || (n >= 0 && at + 1 + static_cast<std::size_t>(n) > length))
+    {
+      error = "the face stream ends inside face " + std::to_string(f);
+      return false;
+    }
+    if (n < 3)
     {
       error = "face " + std::to_string(f) + " has fewer than 3 points";
       return false;
