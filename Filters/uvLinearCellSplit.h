@@ -1,15 +1,17 @@
 // Splitting linear 3D cells into positively oriented tetrahedra, free of VTK so it can be tested alone.
 //
-// Conforming rule (unstructured meshes): every quadrilateral face is cut along the diagonal through
-// its vertex of smallest global id, so two cells sharing a face always cut it the same way. A cell is
-// then split as the cone from its own smallest-id vertex m over the faces that do not contain m. The
-// faces that do contain m are cut through m by the same rule, so the cone's tets meet them exactly:
-// no Steiner points, hexahedron -> 6, wedge -> 3, pyramid -> 2 tets.
+// Conforming rule (unstructured meshes): every polygonal face (quadrilateral, pentagon, hexagon) is
+// fanned from its vertex of smallest global id, so two cells sharing a face always cut it the same
+// way; for a quadrilateral the fan is the cut along the diagonal through that vertex. A cell is then
+// split as the cone from its own smallest-id vertex m over the faces that do not contain m. The faces
+// that do contain m have m as their smallest vertex, so they are fanned from m and the cone's tets meet
+// them exactly: no Steiner points, hexahedron -> 6, wedge -> 3, pyramid -> 2, pentagonal prism -> 9,
+// hexagonal prism -> 12 tets. The cone is a valid split of any convex cell.
 //
-// Local vertex numbering is VTK's (VTK_HEXAHEDRON, VTK_WEDGE, VTK_PYRAMID, VTK_TETRA). A tet (a,b,c,d)
-// is positive when (b-a)x(c-a) points towards d, VTK's convention. The face lists below are oriented
-// outwards for a valid cell, so reversing a face triangle and appending the inner apex gives a
-// positive tet without looking at coordinates.
+// Local vertex numbering is VTK's (VTK_HEXAHEDRON, VTK_WEDGE, VTK_PYRAMID, VTK_PENTAGONAL_PRISM,
+// VTK_HEXAGONAL_PRISM, VTK_TETRA). A tet (a,b,c,d) is positive when (b-a)x(c-a) points towards d, VTK's
+// convention. The face lists below are oriented outwards for a valid cell, so reversing a face
+// triangle and appending the inner apex gives a positive tet without looking at coordinates.
 #ifndef uvLinearCellSplit_h
 #define uvLinearCellSplit_h
 
@@ -20,11 +22,33 @@
 namespace uv
 {
 
+constexpr int MaxLocalFaceSize = 6;
+
 struct LocalFace
 {
-  int Size; // 3 or 4
-  std::array<int, 4> Vertices;
+  int Size; // 3 to MaxLocalFaceSize
+  std::array<int, MaxLocalFaceSize> Vertices;
 };
+
+/// Fans a polygon of `size` vertices from the one whose key is smallest, calling
+/// emit(i, j, k) with positions in the polygon for each triangle, in the polygon's own orientation.
+/// Two cells sharing a face (same keys, either orientation) get the same triangles.
+template <typename Key, typename Emit>
+void FanFromLowest(int size, Key&& key, Emit&& emit)
+{
+  int lowest = 0;
+  for (int i = 1; i < size; ++i)
+  {
+    if (key(i) < key(lowest))
+    {
+      lowest = i;
+    }
+  }
+  for (int i = 1; i + 1 < size; ++i)
+  {
+    emit(lowest, (lowest + i) % size, (lowest + i + 1) % size);
+  }
+}
 
 // Outward-oriented faces of VTK's linear cells.
 constexpr std::array<LocalFace, 6> HexahedronFaces = { {
@@ -50,10 +74,31 @@ constexpr std::array<LocalFace, 5> PyramidFaces = { {
   { 3, { 3, 0, 4, -1 } },
 } };
 
+/// Outward faces of an n-gonal prism numbered as VTK's prisms: the bottom polygon 0..n-1 turns
+/// anticlockwise seen from the top polygon n..2n-1, vertex n+i above vertex i (as the hexahedron).
+template <int N>
+constexpr std::array<LocalFace, N + 2> PrismFaces()
+{
+  std::array<LocalFace, N + 2> faces{};
+  faces[0].Size = N;
+  faces[1].Size = N;
+  for (int i = 0; i < N; ++i)
+  {
+    faces[0].Vertices[i] = (N - i) % N; // 0, n-1, ..., 1: reversed, so it faces down
+    faces[1].Vertices[i] = N + i;
+    LocalFace& side = faces[2 + i];
+    side.Size = 4;
+    side.Vertices = { i, (i + 1) % N, N + (i + 1) % N, N + i, -1, -1 };
+  }
+  return faces;
+}
+constexpr std::array<LocalFace, 7> PentagonalPrismFaces = PrismFaces<5>();
+constexpr std::array<LocalFace, 8> HexagonalPrismFaces = PrismFaces<6>();
+
 // VTK_VOXEL numbers its corners x-fastest; this maps hexahedron local index -> voxel local index.
 constexpr std::array<int, 8> VoxelToHexahedronOrder = { 0, 1, 3, 2, 4, 5, 7, 6 };
 
-constexpr int MaxTetsPerCell = 6;
+constexpr int MaxTetsPerCell = 12; // the hexagonal prism
 
 /// Splits a cell described by outward faces into tets (local indices), conforming by global ids.
 /// Returns the number of tets written to `tets` (at most MaxTetsPerCell).
@@ -81,37 +126,17 @@ int SplitByMinimumVertexCone(const std::array<LocalFace, NumFaces>& faces, int n
     {
       continue;
     }
+    // Outward fan triangles, each reversed towards the apex.
     const auto& f = face.Vertices;
-    if (face.Size == 3)
-    {
-      tets[count][0] = f[0];
-      tets[count][1] = f[2];
-      tets[count][2] = f[1];
-      tets[count][3] = apex;
-      ++count;
-      continue;
-    }
-    // Cut the quad along the diagonal through its smallest global id.
-    int lowest = 0;
-    for (int i = 1; i < 4; ++i)
-    {
-      if (globalIds[f[i]] < globalIds[f[lowest]])
-      {
-        lowest = i;
-      }
-    }
-    const int a = f[lowest], b = f[(lowest + 1) % 4], c = f[(lowest + 2) % 4], d = f[(lowest + 3) % 4];
-    // Outward triangles (a,b,c) and (a,c,d), each reversed towards the apex.
-    tets[count][0] = a;
-    tets[count][1] = c;
-    tets[count][2] = b;
-    tets[count][3] = apex;
-    ++count;
-    tets[count][0] = a;
-    tets[count][1] = d;
-    tets[count][2] = c;
-    tets[count][3] = apex;
-    ++count;
+    FanFromLowest(
+      face.Size, [&](int i) { return globalIds[f[i]]; },
+      [&](int i, int j, int k) {
+        tets[count][0] = f[i];
+        tets[count][1] = f[k];
+        tets[count][2] = f[j];
+        tets[count][3] = apex;
+        ++count;
+      });
   }
   return count;
 }
@@ -132,6 +157,18 @@ template <typename IdType>
 int SplitPyramid(const IdType globalIds[5], int tets[][4])
 {
   return SplitByMinimumVertexCone(PyramidFaces, 5, globalIds, tets);
+}
+
+template <typename IdType>
+int SplitPentagonalPrism(const IdType globalIds[10], int tets[][4])
+{
+  return SplitByMinimumVertexCone(PentagonalPrismFaces, 10, globalIds, tets);
+}
+
+template <typename IdType>
+int SplitHexagonalPrism(const IdType globalIds[12], int tets[][4])
+{
+  return SplitByMinimumVertexCone(HexagonalPrismFaces, 12, globalIds, tets);
 }
 
 /// Six times the signed volume of tet (a,b,c,d): positive for VTK's orientation.

@@ -1,11 +1,13 @@
 #include "vtkHexahedraToTetrahedra.h"
 
 #include "uvLinearCellSplit.h"
+#include "uvPolyhedronSplit.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkCellTypes.h"
+#include "vtkAbstractArray.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -34,15 +36,18 @@
 #include <atomic>
 #include <limits>
 #include <numeric>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkHexahedraToTetrahedra);
 
 namespace
 {
-// What happens to each input cell type: a positive tet count, 0 (dropped: not 3D), or -1 (error).
+// What happens to each input cell type: a positive tet count, 0 (dropped: not 3D), -1 (error), or
+// -2 (polyhedra: counted cell by cell).
 constexpr int DroppedCell = 0;
 constexpr int UnsupportedCell = -1;
+constexpr int VariableCell = -2;
 
 int TetsPerCellType(int cellType, int splitMode)
 {
@@ -57,6 +62,12 @@ int TetsPerCellType(int cellType, int splitMode)
       return 3;
     case VTK_PYRAMID:
       return 2;
+    case VTK_PENTAGONAL_PRISM:
+      return 9;
+    case VTK_HEXAGONAL_PRISM:
+      return 12;
+    case VTK_POLYHEDRON:
+      return VariableCell;
     default:
       return UnsupportedCell;
   }
@@ -146,6 +157,12 @@ int SplitCell(int cellType, const vtkIdType* ids, vtkIdType tets[uv::MaxTetsPerC
       break;
     case VTK_PYRAMID:
       count = uv::SplitPyramid(cornerIds, local);
+      break;
+    case VTK_PENTAGONAL_PRISM:
+      count = uv::SplitPentagonalPrism(cornerIds, local);
+      break;
+    case VTK_HEXAGONAL_PRISM:
+      count = uv::SplitHexagonalPrism(cornerIds, local);
       break;
     default:
       return 0;
@@ -324,10 +341,181 @@ void SplitStructured(const int dims[3], const int parityOrigin[3], bool fiveTets
   });
 }
 
+/// The splits of an input's polyhedra, found before the output is sized: their tet counts vary,
+/// and some add a centre point.
+struct PolyhedraSplits
+{
+  std::vector<vtkIdType> Cells; // ascending cell ids of the polyhedra
+  std::vector<uv::PolyhedronSplit<vtkIdType>> Splits;
+  std::vector<vtkIdType> CentreIds; // output point id of each split's centre, or -1
+  vtkIdType NumberOfCentres = 0;
+
+  const uv::PolyhedronSplit<vtkIdType>* Find(vtkIdType cell, vtkIdType& centreId) const
+  {
+    const auto at = std::lower_bound(this->Cells.begin(), this->Cells.end(), cell);
+    const std::size_t index = static_cast<std::size_t>(at - this->Cells.begin());
+    centreId = this->CentreIds[index];
+    return &this->Splits[index];
+  }
+};
+
+/// The cells whose entry in `counts` is `count`, ascending.
+std::vector<vtkIdType> CellsOfCount(const std::vector<vtkIdType>& counts, vtkIdType count)
+{
+  std::vector<vtkIdType> cells;
+  for (std::size_t cell = 0; cell + 1 < counts.size(); ++cell)
+  {
+    if (counts[cell] == count)
+    {
+      cells.push_back(static_cast<vtkIdType>(cell));
+    }
+  }
+  return cells;
+}
+
+/// Splits the given polyhedra of `input` (in parallel), then numbers the centres after the input's
+/// points, in cell order.
+PolyhedraSplits SplitPolyhedra(vtkDataSet* input, std::vector<vtkIdType> cells)
+{
+  PolyhedraSplits result;
+  result.Cells = std::move(cells);
+  result.Splits.resize(result.Cells.size());
+  auto grid = vtkUnstructuredGrid::SafeDownCast(input);
+  vtkIdTypeArray* faces = grid ? grid->GetFaces() : nullptr;
+  vtkIdTypeArray* locations = grid ? grid->GetFaceLocations() : nullptr;
+  vtkPoints* points = grid ? grid->GetPoints() : nullptr;
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkSMPTools::For(0, static_cast<vtkIdType>(result.Cells.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const vtkIdType cell = result.Cells[i];
+      const vtkIdType location =
+        locations && cell < locations->GetNumberOfValues() ? locations->GetValue(cell) : -1;
+      if (!faces || !points || location < 0 || location >= faces->GetNumberOfValues())
+      {
+        result.Splits[i].Error = "it has no face stream";
+        continue;
+      }
+      const std::size_t length = static_cast<std::size_t>(faces->GetNumberOfValues() - location);
+      result.Splits[i] = uv::SplitPolyhedron(faces->GetPointer(location), length, numPoints,
+        [points](vtkIdType id) {
+          std::array<double, 3> p;
+          points->GetPoint(id, p.data());
+          return p;
+        });
+    }
+  });
+  result.CentreIds.assign(result.Cells.size(), -1);
+  for (std::size_t i = 0; i < result.Cells.size(); ++i)
+  {
+    if (result.Splits[i].HasCentre && result.Splits[i].Error.empty())
+    {
+      result.CentreIds[i] = numPoints + result.NumberOfCentres++;
+    }
+  }
+  return result;
+}
+
+/// One line on the polyhedra that could not be split: how many, and the first with its reason.
+std::string PolyhedraError(const PolyhedraSplits& polyhedra)
+{
+  std::size_t failed = 0;
+  std::string first;
+  for (std::size_t i = 0; i < polyhedra.Cells.size(); ++i)
+  {
+    if (!polyhedra.Splits[i].Error.empty() && failed++ == 0)
+    {
+      first = "cell " + std::to_string(polyhedra.Cells[i]) + ": " + polyhedra.Splits[i].Error;
+    }
+  }
+  if (failed == 0)
+  {
+    return std::string();
+  }
+  return "Skipped " + std::to_string(failed) + " polyhedra that cannot be split into tetrahedra " +
+    "(they give no tets); the first is " + first + ".";
+}
+
+/// The output points with the polyhedra's centres appended, or `points` itself when there are none.
+vtkSmartPointer<vtkPoints> AppendCentres(vtkPoints* points, const PolyhedraSplits& polyhedra)
+{
+  if (polyhedra.NumberOfCentres == 0)
+  {
+    return points;
+  }
+  auto out = vtkSmartPointer<vtkPoints>::New();
+  out->SetDataType(points->GetDataType());
+  out->DeepCopy(points);
+  // Inserted, not set: SetNumberOfPoints would reallocate without keeping the copied points.
+  for (std::size_t i = 0; i < polyhedra.Cells.size(); ++i)
+  {
+    if (polyhedra.CentreIds[i] >= 0)
+    {
+      out->InsertPoint(polyhedra.CentreIds[i], polyhedra.Splits[i].Centre.data());
+    }
+  }
+  return out;
+}
+
+/// Point data of the output: the input's, each array extended by the centres as the mean of the
+/// polyhedron's vertices (vtkAbstractArray::InterpolateTuple: integers rounded, non-numeric
+/// arrays take the first vertex's value).
+void PassPointData(vtkPointData* in, vtkPointData* out, const PolyhedraSplits& polyhedra)
+{
+  if (polyhedra.NumberOfCentres == 0)
+  {
+    out->PassData(in);
+    return;
+  }
+  out->DeepCopy(in);
+  const vtkIdType numPoints = in->GetNumberOfTuples();
+  vtkNew<vtkIdList> vertices;
+  std::vector<double> weights;
+  for (int a = 0; a < out->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* source = in->GetAbstractArray(a);
+    vtkAbstractArray* target = out->GetAbstractArray(a);
+    // Grown by the inserts below (ascending ids right after the input's), which keep the copy.
+    target->Resize(numPoints + polyhedra.NumberOfCentres);
+    for (std::size_t i = 0; i < polyhedra.Cells.size(); ++i)
+    {
+      if (polyhedra.CentreIds[i] < 0)
+      {
+        continue;
+      }
+      const std::vector<vtkIdType>& ids = polyhedra.Splits[i].Vertices;
+      vertices->SetNumberOfIds(static_cast<vtkIdType>(ids.size()));
+      std::copy(ids.begin(), ids.end(), vertices->GetPointer(0));
+      weights.assign(ids.size(), 1.0 / static_cast<double>(ids.size()));
+      target->InterpolateTuple(polyhedra.CentreIds[i], vertices, source, weights.data());
+    }
+  }
+}
+
+/// Writes a polyhedron's tets from its split, its centre numbered.
+template <typename ConnectivityType>
+void CopyPolyhedronTets(const PolyhedraSplits& polyhedra, vtkIdType cell, vtkIdType firstTet,
+  ConnectivityType* connectivity, vtkIdType* originalIds)
+{
+  vtkIdType centreId = -1;
+  const uv::PolyhedronSplit<vtkIdType>* split = polyhedra.Find(cell, centreId);
+  for (std::size_t t = 0; t < split->Tets.size(); ++t)
+  {
+    const vtkIdType tet = firstTet + static_cast<vtkIdType>(t);
+    originalIds[tet] = cell;
+    for (int v = 0; v < 4; ++v)
+    {
+      const vtkIdType id = split->Tets[t][v];
+      connectivity[4 * tet + v] =
+        static_cast<ConnectivityType>(id == uv::PolyhedronSplit<vtkIdType>::CentreId ? centreId : id);
+    }
+  }
+}
+
 /// Fills connectivity and original cell ids for any dataset, given each cell's first tet.
 template <typename ConnectivityType>
 void SplitGeneric(vtkDataSet* input, const std::vector<vtkIdType>& firstTet,
-  ConnectivityType* connectivity, vtkIdType* originalIds)
+  const PolyhedraSplits& polyhedra, ConnectivityType* connectivity, vtkIdType* originalIds)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
   vtkSMPThreadLocalObject<vtkIdList> threadIds;
@@ -338,6 +526,11 @@ void SplitGeneric(vtkDataSet* input, const std::vector<vtkIdType>& firstTet,
     {
       if (firstTet[cell + 1] == firstTet[cell])
       {
+        continue;
+      }
+      if (input->GetCellType(cell) == VTK_POLYHEDRON)
+      {
+        CopyPolyhedronTets(polyhedra, cell, firstTet[cell], connectivity, originalIds);
         continue;
       }
       input->GetCellPoints(cell, ids);
@@ -416,6 +609,7 @@ int vtkHexahedraToTetrahedra::RequestData(
 
   // Tets per cell, then each cell's first tet by a prefix sum.
   std::vector<vtkIdType> firstTet;
+  PolyhedraSplits polyhedra;
   vtkIdType numTets = 0;
   if (structured)
   {
@@ -429,7 +623,8 @@ int vtkHexahedraToTetrahedra::RequestData(
     {
       vtkErrorMacro("Input has 3D cells that cannot be split (first type: "
         << vtkCellTypes::GetClassNameFromTypeId(unsupported.front())
-        << "). Only linear tetrahedra, hexahedra, voxels, wedges and pyramids are supported; "
+        << "). Only linear tetrahedra, hexahedra, voxels, wedges, pyramids, pentagonal and "
+           "hexagonal prisms and polyhedra are supported; "
            "linearize higher-order cells first (e.g. with vtkTessellatorFilter).");
       return 0;
     }
@@ -441,11 +636,24 @@ int vtkHexahedraToTetrahedra::RequestData(
         firstTet[cell] = tetsPerType[input->GetCellType(cell)];
       }
     });
+    if (tetsPerType[VTK_POLYHEDRON] == VariableCell)
+    {
+      polyhedra = SplitPolyhedra(input, CellsOfCount(firstTet, VariableCell));
+      const std::string error = PolyhedraError(polyhedra);
+      if (!error.empty())
+      {
+        vtkErrorMacro(<< error);
+      }
+      for (std::size_t i = 0; i < polyhedra.Cells.size(); ++i)
+      {
+        firstTet[polyhedra.Cells[i]] = static_cast<vtkIdType>(polyhedra.Splits[i].Tets.size());
+      }
+    }
     vtkIdType dropped = 0;
     for (vtkIdType cell = 0; cell < numCells; ++cell)
     {
       const vtkIdType count = firstTet[cell];
-      dropped += count == 0 ? 1 : 0;
+      dropped += count == 0 && tetsPerType[input->GetCellType(cell)] == DroppedCell ? 1 : 0;
       firstTet[cell] = numTets;
       numTets += count;
     }
@@ -458,7 +666,7 @@ int vtkHexahedraToTetrahedra::RequestData(
   }
   this->UpdateProgress(0.2);
 
-  vtkSmartPointer<vtkPoints> points = OutputPoints(input);
+  vtkSmartPointer<vtkPoints> points = AppendCentres(OutputPoints(input), polyhedra);
   this->UpdateProgress(0.4);
 
   vtkNew<vtkIdTypeArray> originalIds;
@@ -476,20 +684,20 @@ int vtkHexahedraToTetrahedra::RequestData(
     }
     else
     {
-      SplitGeneric(input, firstTet, connectivity, originalIdData);
+      SplitGeneric(input, firstTet, polyhedra, connectivity, originalIdData);
     }
   };
   // 32-bit connectivity halves memory and bandwidth whenever the ids fit.
   const vtkIdType int32Max = std::numeric_limits<vtkTypeInt32>::max();
   vtkSmartPointer<vtkCellArray> cells =
-    (input->GetNumberOfPoints() <= int32Max && 4 * numTets <= int32Max)
+    (points->GetNumberOfPoints() <= int32Max && 4 * numTets <= int32Max)
     ? BuildCells<vtkTypeInt32Array>(numTets, fill, points, congruentCells)
     : BuildCells<vtkTypeInt64Array>(numTets, fill, points, congruentCells);
   this->UpdateProgress(0.8);
 
   output->SetPoints(points);
   output->SetCells(VTK_TETRA, cells);
-  output->GetPointData()->PassData(input->GetPointData());
+  PassPointData(input->GetPointData(), output->GetPointData(), polyhedra);
   output->GetFieldData()->PassData(input->GetFieldData());
   vtkCellData* inCellData = input->GetCellData();
   vtkCellData* outCellData = output->GetCellData();

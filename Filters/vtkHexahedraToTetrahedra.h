@@ -1,21 +1,36 @@
 /**
  * @class   vtkHexahedraToTetrahedra
- * @brief   Conforming split of linear 3D cells (hexahedra, voxels, wedges, pyramids) into tetrahedra.
+ * @brief   Conforming split of linear 3D cells (hexahedra, voxels, wedges, pyramids, pentagonal and
+ *          hexagonal prisms, polyhedra) into tetrahedra.
  *
  * Input: any vtkDataSet (vtkImageData, vtkRectilinearGrid, vtkStructuredGrid, vtkUnstructuredGrid).
  * Output: a vtkUnstructuredGrid of VTK_TETRA cells only, every one positively oriented.
  *
- * - SixTetrahedra (default, any mesh): every quadrilateral face is cut along the diagonal through
- *   its smallest global point id, so neighbouring cells always agree; a hexahedron gives 6 tets, a
- *   wedge 3, a pyramid 2. Tetrahedra pass through unchanged.
+ * - SixTetrahedra (default, any mesh): every polygonal face (quadrilateral, pentagon, hexagon, any
+ *   polyhedron face) is fanned from its smallest global point id, so neighbouring cells always agree
+ *   (for a quadrilateral: cut along the diagonal through that id). A cell is split as the cone from
+ *   its own smallest-id vertex over the faces not containing it: a hexahedron gives 6 tets, a wedge
+ *   3, a pyramid 2, a pentagonal prism 9, a hexagonal prism 12. Tetrahedra pass through unchanged.
  * - FiveTetrahedra (structured inputs only): 5 tets per hexahedron with alternating parity so that
  *   neighbours agree. On unstructured input this falls back to SixTetrahedra with a warning.
  *
- * Point data and field data pass through unchanged; cell data is copied to every child tet; the
- * output has a `vtkOriginalCellIds` cell array giving each tet's input cell.
- * 2D, 1D and vertex cells are dropped with one warning giving their count. Non-linear cells
- * (quadratic, Lagrange, Bezier), polyhedra and other unsupported 3D cells are an error and produce
- * an empty output: linearize them first (e.g. vtkTessellatorFilter).
+ * VTK_POLYHEDRON (see uvPolyhedronSplit.h): the face stream may list faces in either orientation.
+ * Every face must have at least 3 distinct points and be planar, strictly convex and simple, and
+ * the faces must close (each edge used by exactly two faces); lengths are judged relative to the
+ * cell's size. A convex polyhedron is split as the cone from its smallest-id vertex, like the fixed
+ * types (a hexahedron written as a polyhedron gives the same tets as the VTK_HEXAHEDRON). Any other
+ * polyhedron gets one new output point, its centre: position and every point-data array the mean
+ * of its distinct vertices (integer arrays rounded, non-numeric arrays take the value of its
+ * smallest-id vertex); the centres follow the input's points in cell order. It is split as the cone
+ * from the centre over every face's fan, and must be star-shaped with respect to the centre. A
+ * polyhedron breaking any of these rules is skipped (no tets) and one error reports how many were
+ * skipped, the first one's cell id and why; the other cells are split as usual.
+ *
+ * Point data and field data pass through unchanged (extended by the centres, if any); cell data is
+ * copied to every child tet; the output has a `vtkOriginalCellIds` cell array giving each tet's
+ * input cell. 2D, 1D and vertex cells are dropped with one warning giving their count. Non-linear
+ * cells (quadratic, Lagrange, Bezier) and other unsupported 3D cells are an error and produce an
+ * empty output: linearize them first (e.g. vtkTessellatorFilter).
  * Multithreaded with vtkSMPTools.
  */
 #ifndef vtkHexahedraToTetrahedra_h

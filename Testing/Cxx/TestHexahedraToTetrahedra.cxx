@@ -10,6 +10,7 @@
 #include "vtkDataObjectTreeIterator.h"
 #include "vtkDoubleArray.h"
 #include "vtkExodusIIReader.h"
+#include "vtkGenericCell.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
@@ -25,7 +26,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <map>
 #include <numeric>
+#include <random>
 
 namespace
 {
@@ -131,6 +135,218 @@ vtkSmartPointer<vtkUnstructuredGrid> Analytic(int resolution, int distortion, in
   source->SetCellKind(cellKind);
   source->Update();
   return source->GetOutput();
+}
+
+/// Each input cell's volume by the divergence theorem over its own faces (vtkCell::GetFace), summed:
+/// independent of the split. Valid for cells with planar faces.
+double FaceVolume(vtkDataSet* mesh)
+{
+  double total = 0.0;
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCell(c, cell);
+    double six = 0.0;
+    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+    {
+      vtkIdList* ids = cell->GetFace(f)->GetPointIds();
+      double p[3][3];
+      mesh->GetPoint(ids->GetId(0), p[0]);
+      for (vtkIdType i = 1; i + 1 < ids->GetNumberOfIds(); ++i)
+      {
+        mesh->GetPoint(ids->GetId(i), p[1]);
+        mesh->GetPoint(ids->GetId(i + 1), p[2]);
+        six += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+          p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) + p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+      }
+    }
+    total += std::abs(six) / 6.0;
+  }
+  return total;
+}
+
+/// `mesh` with the cells picked by `convert` rewritten as VTK_POLYHEDRON from their faces
+/// (vtkCell::GetFace), every other face reversed when `flipFaces` (the split must not care); points,
+/// point data and cell data shared.
+template <typename Pick>
+vtkSmartPointer<vtkUnstructuredGrid> AsPolyhedra(vtkUnstructuredGrid* mesh, Pick convert, bool flipFaces = false)
+{
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->SetPoints(mesh->GetPoints());
+  vtkNew<vtkGenericCell> cell;
+  vtkNew<vtkIdList> stream;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCell(c, cell);
+    if (!convert(c))
+    {
+      out->InsertNextCell(cell->GetCellType(), cell->GetPointIds());
+      continue;
+    }
+    stream->Reset();
+    stream->InsertNextId(cell->GetNumberOfFaces());
+    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+    {
+      vtkIdList* ids = cell->GetFace(f)->GetPointIds();
+      stream->InsertNextId(ids->GetNumberOfIds());
+      for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+      {
+        const vtkIdType at = flipFaces && f % 2 ? ids->GetNumberOfIds() - 1 - i : i;
+        stream->InsertNextId(ids->GetId(at));
+      }
+    }
+    out->InsertNextCell(VTK_POLYHEDRON, stream);
+  }
+  out->GetPointData()->ShallowCopy(mesh->GetPointData());
+  out->GetCellData()->ShallowCopy(mesh->GetCellData());
+  return out;
+}
+
+/// Each tet as its sorted point ids -> its vtkOriginalCellIds entry.
+std::map<std::vector<vtkIdType>, vtkIdType> TetKeys(vtkUnstructuredGrid* tets)
+{
+  std::map<std::vector<vtkIdType>, vtkIdType> keys;
+  vtkDataArray* original = tets->GetCellData()->GetArray("vtkOriginalCellIds");
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType t = 0; t < tets->GetNumberOfCells(); ++t)
+  {
+    tets->GetCellPoints(t, ids);
+    std::vector<vtkIdType> key(ids->GetPointer(0), ids->GetPointer(0) + 4);
+    std::sort(key.begin(), key.end());
+    keys[key] = static_cast<vtkIdType>(original->GetTuple1(t));
+  }
+  return keys;
+}
+
+/// Same points, point data, tets (as id sets, with their input cells) and cell data.
+void ExpectSameTets(vtkUnstructuredGrid* expected, vtkUnstructuredGrid* actual)
+{
+  ASSERT_EQ(actual->GetNumberOfPoints(), expected->GetNumberOfPoints());
+  ASSERT_EQ(actual->GetNumberOfCells(), expected->GetNumberOfCells());
+  EXPECT_EQ(TetKeys(actual), TetKeys(expected));
+  for (vtkIdType i = 0; i < expected->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    expected->GetPoint(i, p);
+    actual->GetPoint(i, q);
+    ASSERT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) << "point " << i;
+  }
+  vtkPointData* expectedData = expected->GetPointData();
+  ASSERT_EQ(actual->GetPointData()->GetNumberOfArrays(), expectedData->GetNumberOfArrays());
+  for (int a = 0; a < expectedData->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* e = expectedData->GetArray(a);
+    vtkDataArray* g = actual->GetPointData()->GetArray(e->GetName());
+    ASSERT_TRUE(g && g->GetNumberOfTuples() == e->GetNumberOfTuples()) << e->GetName();
+    for (vtkIdType i = 0; i < e->GetNumberOfTuples(); ++i)
+    {
+      ASSERT_EQ(g->GetTuple1(i), e->GetTuple1(i));
+    }
+  }
+}
+
+/// A column of `levels` regular n-gonal prisms (unit circumradius, unit height) sharing their
+/// n-gons, point ids shuffled so each cell's smallest vertex falls anywhere, with a point scalar.
+vtkSmartPointer<vtkUnstructuredGrid> PrismColumn(int n, int levels, unsigned seed)
+{
+  const int numPoints = n * (levels + 1);
+  std::vector<vtkIdType> id(numPoints);
+  std::iota(id.begin(), id.end(), 0);
+  std::mt19937 random(seed);
+  std::shuffle(id.begin(), id.end(), random);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numPoints);
+  vtkNew<vtkDoubleArray> values;
+  values->SetName("values");
+  values->SetNumberOfValues(numPoints);
+  for (int level = 0; level <= levels; ++level)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double angle = 2.0 * std::acos(-1.0) * i / n;
+      const vtkIdType at = id[level * n + i];
+      points->SetPoint(at, std::cos(angle), std::sin(angle), level);
+      values->SetValue(at, std::cos(angle) + 2.0 * level);
+    }
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  grid->GetPointData()->SetScalars(values);
+  for (int level = 0; level < levels; ++level)
+  {
+    std::vector<vtkIdType> corners;
+    for (int i = 0; i < 2 * n; ++i)
+    {
+      corners.push_back(id[level * n + i]);
+    }
+    grid->InsertNextCell(n == 5 ? VTK_PENTAGONAL_PRISM : VTK_HEXAGONAL_PRISM, 2 * n, corners.data());
+  }
+  return grid;
+}
+
+double RegularPolygonArea(int n)
+{
+  return 0.5 * n * std::sin(2.0 * std::acos(-1.0) / n);
+}
+
+/// An L-shaped polyhedron (outline (0,0) (3,0) (3,w) (w,w) (w,3) (0,3), z in [0, 1]; top and bottom
+/// each two convex quads) and a hexahedron on its x = 3 face, with point and cell arrays.
+vtkSmartPointer<vtkUnstructuredGrid> LShapeAndHexahedron(double w)
+{
+  const double outline[6][2] = { { 0, 0 }, { 3, 0 }, { 3, w }, { w, w }, { w, 3 }, { 0, 3 } };
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> values;
+  values->SetName("values");
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("pointLabel");
+  for (double z : { 0.0, 1.0 })
+  {
+    for (const auto& xy : outline)
+    {
+      points->InsertNextPoint(xy[0], xy[1], z);
+    }
+  }
+  points->InsertNextPoint(4, 0, 0); // 12..15: the hexahedron's far face at x = 4
+  points->InsertNextPoint(4, w, 0);
+  points->InsertNextPoint(4, w, 1);
+  points->InsertNextPoint(4, 0, 1);
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    values->InsertNextValue(p[0] + 10.0 * p[1] + 100.0 * p[2]);
+    labels->InsertNextValue(static_cast<int>(i));
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  grid->GetPointData()->SetScalars(values);
+  grid->GetPointData()->AddArray(labels);
+  std::vector<std::vector<vtkIdType>> faces = { { 0, 3, 2, 1 }, { 0, 5, 4, 3 }, { 6, 7, 8, 9 }, { 6, 9, 10, 11 } };
+  for (vtkIdType i = 0; i < 6; ++i)
+  {
+    faces.push_back({ i, (i + 1) % 6, 6 + (i + 1) % 6, 6 + i });
+  }
+  vtkNew<vtkIdList> stream;
+  stream->InsertNextId(static_cast<vtkIdType>(faces.size()));
+  for (const auto& face : faces)
+  {
+    stream->InsertNextId(static_cast<vtkIdType>(face.size()));
+    for (vtkIdType id : face)
+    {
+      stream->InsertNextId(id);
+    }
+  }
+  grid->InsertNextCell(VTK_POLYHEDRON, stream);
+  const vtkIdType hexahedron[8] = { 1, 12, 13, 2, 7, 15, 14, 8 };
+  grid->InsertNextCell(VTK_HEXAHEDRON, 8, hexahedron);
+  vtkNew<vtkIntArray> cellLabel;
+  cellLabel->SetName("cellLabel");
+  cellLabel->InsertNextValue(70);
+  cellLabel->InsertNextValue(71);
+  grid->GetCellData()->AddArray(cellLabel);
+  return grid;
 }
 
 } // namespace
@@ -330,5 +546,201 @@ TEST(HexahedraToTetrahedra, SharedHexahedralMeshes)
       EXPECT_EQ(five->GetNumberOfCells(), 5 * c.Mesh->GetNumberOfCells());
       ExpectValidSplit(c.Mesh, five);
     }
+  }
+}
+
+TEST(HexahedraToTetrahedra, HexahedraAsPolyhedraGiveTheHexahedronSplit)
+{
+  for (int distortion : { vtkAnalyticMeshSource::NO_DISTORTION, vtkAnalyticMeshSource::ROTATE_45 })
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> hexes = Analytic(3, distortion, vtkAnalyticMeshSource::HEXAHEDRA);
+    vtkNew<vtkIntArray> label;
+    label->SetName("cellLabel");
+    for (vtkIdType c = 0; c < hexes->GetNumberOfCells(); ++c)
+    {
+      label->InsertNextValue(static_cast<int>(5 * c));
+    }
+    hexes->GetCellData()->AddArray(label);
+    for (bool flip : { false, true })
+    {
+      vtkSmartPointer<vtkUnstructuredGrid> polyhedra =
+        AsPolyhedra(hexes, [](vtkIdType) { return true; }, flip);
+      ASSERT_EQ(polyhedra->GetCellType(0), VTK_POLYHEDRON);
+      uvtest::EventCounter* events = nullptr;
+      vtkSmartPointer<vtkUnstructuredGrid> tets = Split(polyhedra, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
+      EXPECT_EQ(events->Errors + events->Warnings, 0) << events->LastMessage;
+      ExpectSameTets(Split(hexes), tets);
+      ExpectValidSplit(polyhedra, tets, FaceVolume(hexes));
+      EXPECT_NEAR(FaceVolume(hexes), 8.0, 1e-12);
+      auto original = tets->GetCellData()->GetArray("vtkOriginalCellIds");
+      auto labels = tets->GetCellData()->GetArray("cellLabel");
+      for (vtkIdType t = 0; t < tets->GetNumberOfCells(); ++t)
+      {
+        ASSERT_EQ(labels->GetTuple1(t), 5 * original->GetTuple1(t));
+      }
+    }
+  }
+}
+
+TEST(HexahedraToTetrahedra, PrismColumnsConformAcrossCellTypes)
+{
+  for (int n : { 5, 6 })
+  {
+    for (unsigned seed = 1; seed <= 20; ++seed)
+    {
+      SCOPED_TRACE(n);
+      vtkSmartPointer<vtkUnstructuredGrid> prisms = PrismColumn(n, 4, seed);
+      const double volume = 4.0 * RegularPolygonArea(n);
+      vtkSmartPointer<vtkUnstructuredGrid> tets = Split(prisms);
+      EXPECT_EQ(tets->GetNumberOfCells(), (n == 5 ? 9 : 12) * 4);
+      ExpectValidSplit(prisms, tets, volume);
+      EXPECT_NEAR(FaceVolume(prisms), volume, 1e-12);
+      // Odd levels as polyhedra: the shared n-gons must still be cut alike, and the tets unchanged.
+      vtkSmartPointer<vtkUnstructuredGrid> mixed = AsPolyhedra(prisms, [](vtkIdType c) { return c % 2 == 1; });
+      vtkSmartPointer<vtkUnstructuredGrid> mixedTets = Split(mixed);
+      ExpectValidSplit(mixed, mixedTets, volume);
+      ExpectSameTets(tets, mixedTets);
+    }
+  }
+}
+
+TEST(HexahedraToTetrahedra, NonConvexPolyhedronGetsACentrePoint)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = LShapeAndHexahedron(2.0);
+  uvtest::EventCounter* events = nullptr;
+  vtkSmartPointer<vtkUnstructuredGrid> tets = Split(mesh, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
+  EXPECT_EQ(events->Errors + events->Warnings, 0) << events->LastMessage;
+  EXPECT_EQ(tets->GetNumberOfCells(), 20 + 6);
+  ExpectValidSplit(mesh, tets, 8.0 + 2.0);
+  EXPECT_NEAR(FaceVolume(mesh), 10.0, 1e-12);
+  // One new point after the input's: the mean of the L's 12 vertices, its data the mean too.
+  ASSERT_EQ(tets->GetNumberOfPoints(), mesh->GetNumberOfPoints() + 1);
+  const vtkIdType centre = mesh->GetNumberOfPoints();
+  double p[3];
+  tets->GetPoint(centre, p);
+  EXPECT_NEAR(p[0], 10.0 / 6.0, 1e-14);
+  EXPECT_NEAR(p[1], 10.0 / 6.0, 1e-14);
+  EXPECT_NEAR(p[2], 0.5, 1e-14);
+  EXPECT_NEAR(tets->GetPointData()->GetScalars()->GetTuple1(centre), p[0] + 10.0 * p[1] + 100.0 * p[2], 1e-12);
+  EXPECT_EQ(tets->GetPointData()->GetScalars()->GetName(), std::string("values"));
+  EXPECT_EQ(tets->GetPointData()->GetArray("pointLabel")->GetTuple1(centre), 6.0); // mean of 0..11, 5.5, rounded
+  for (vtkIdType i = 0; i < centre; ++i)
+  {
+    ASSERT_EQ(tets->GetPointData()->GetArray("pointLabel")->GetTuple1(i), i);
+  }
+  // The centre is used by the L's tets only, and cell data follows the input cell.
+  auto original = tets->GetCellData()->GetArray("vtkOriginalCellIds");
+  auto label = tets->GetCellData()->GetArray("cellLabel");
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType t = 0; t < tets->GetNumberOfCells(); ++t)
+  {
+    tets->GetCellPoints(t, ids);
+    EXPECT_EQ(ids->IsId(centre) >= 0, original->GetTuple1(t) == 0);
+    EXPECT_EQ(label->GetTuple1(t), 70 + original->GetTuple1(t));
+  }
+}
+
+TEST(HexahedraToTetrahedra, BadPolyhedraAreSkippedWithOneError)
+{
+  vtkNew<vtkUnstructuredGrid> hexes; // one unit cube
+  vtkNew<vtkPoints> corners;
+  const double unit[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 },
+    { 1, 1, 1 }, { 0, 1, 1 } };
+  for (const auto& p : unit)
+  {
+    corners->InsertNextPoint(p);
+  }
+  hexes->SetPoints(corners);
+  const vtkIdType hexahedron[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  hexes->InsertNextCell(VTK_HEXAHEDRON, 8, hexahedron);
+  vtkSmartPointer<vtkUnstructuredGrid> cube = AsPolyhedra(hexes, [](vtkIdType) { return true; });
+  // Cell 0: the good cube. Cell 1: the cube with a face missing. Cell 2: a face with a repeated
+  // point. Cell 3: a face of two points.
+  vtkIdType numFaces;
+  const vtkIdType* faces;
+  cube->GetFaceStream(0, numFaces, faces);
+  std::vector<vtkIdType> good(faces, faces + 5 * numFaces);
+  auto insert = [&](std::vector<vtkIdType> faceStream, vtkIdType count) {
+    faceStream.insert(faceStream.begin(), count);
+    vtkNew<vtkIdList> stream;
+    for (vtkIdType id : faceStream)
+    {
+      stream->InsertNextId(id);
+    }
+    cube->InsertNextCell(VTK_POLYHEDRON, stream);
+  };
+  insert(std::vector<vtkIdType>(good.begin(), good.end() - 5), numFaces - 1);
+  std::vector<vtkIdType> repeated = good;
+  repeated[2] = repeated[1];
+  insert(repeated, numFaces);
+  std::vector<vtkIdType> twoPoints = { 2, good[1], good[2] };
+  twoPoints.insert(twoPoints.end(), good.begin() + 5, good.end());
+  insert(twoPoints, numFaces);
+  uvtest::EventCounter* events = nullptr;
+  vtkSmartPointer<vtkUnstructuredGrid> tets = Split(cube, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
+  EXPECT_EQ(events->Errors, 1);
+  EXPECT_EQ(events->Warnings, 0);
+  EXPECT_NE(events->LastMessage.find("Skipped 3 polyhedra"), std::string::npos) << events->LastMessage;
+  EXPECT_NE(events->LastMessage.find("cell 1: "), std::string::npos) << events->LastMessage;
+  EXPECT_NE(events->LastMessage.find("do not close"), std::string::npos) << events->LastMessage;
+  EXPECT_EQ(tets->GetNumberOfCells(), 6);
+  EXPECT_EQ(tets->GetNumberOfPoints(), cube->GetNumberOfPoints());
+
+  // A non-planar face, then a polyhedron that is not star-shaped from its centre: each named.
+  vtkSmartPointer<vtkUnstructuredGrid> bent = AsPolyhedra(hexes, [](vtkIdType) { return true; });
+  vtkNew<vtkPoints> moved;
+  moved->DeepCopy(bent->GetPoints());
+  double corner[3];
+  moved->GetPoint(7, corner);
+  moved->SetPoint(7, corner[0] + 0.3, corner[1] + 0.2, corner[2] + 0.1);
+  bent->SetPoints(moved);
+  tets = Split(bent, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
+  EXPECT_EQ(events->Errors, 1);
+  EXPECT_NE(events->LastMessage.find("cell 0: face"), std::string::npos) << events->LastMessage;
+  EXPECT_NE(events->LastMessage.find("is not planar"), std::string::npos) << events->LastMessage;
+  EXPECT_EQ(tets->GetNumberOfCells(), 0);
+
+  vtkSmartPointer<vtkUnstructuredGrid> thin = LShapeAndHexahedron(1.0);
+  tets = Split(thin, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
+  EXPECT_EQ(events->Errors, 1);
+  EXPECT_NE(events->LastMessage.find("cell 0: the polyhedron is not convex and not star-shaped"),
+    std::string::npos)
+    << events->LastMessage;
+  EXPECT_EQ(tets->GetNumberOfCells(), 6); // the hexahedron only, no centre point
+  EXPECT_EQ(tets->GetNumberOfPoints(), thin->GetNumberOfPoints());
+}
+
+TEST(HexahedraToTetrahedra, SharedPrismFiles)
+{
+  int found = 0;
+  for (const char* file : { "cells/PentagonalPrism.vtu", "cells/HexagonalPrism.vtu" })
+  {
+    const std::string path = uvtest::SharedData(file);
+    if (path.empty())
+    {
+      continue;
+    }
+    ++found;
+    SCOPED_TRACE(file);
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkUnstructuredGrid* prism = reader->GetOutput();
+    ASSERT_EQ(prism->GetNumberOfCells(), 1);
+    const bool pentagonal = prism->GetCellType(0) == VTK_PENTAGONAL_PRISM;
+    ASSERT_TRUE(pentagonal || prism->GetCellType(0) == VTK_HEXAGONAL_PRISM);
+    uvtest::EventCounter* events = nullptr;
+    vtkSmartPointer<vtkUnstructuredGrid> tets = Split(prism, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
+    EXPECT_EQ(events->Errors + events->Warnings, 0) << events->LastMessage;
+    EXPECT_EQ(tets->GetNumberOfCells(), pentagonal ? 9 : 12);
+    const double volume = FaceVolume(prism);
+    EXPECT_GT(volume, 0.5);
+    ExpectValidSplit(prism, tets, volume);
+    vtkSmartPointer<vtkUnstructuredGrid> polyhedron = AsPolyhedra(prism, [](vtkIdType) { return true; }, true);
+    ExpectSameTets(tets, Split(polyhedron));
+  }
+  if (found == 0)
+  {
+    GTEST_SKIP() << "../shared/data is absent";
   }
 }

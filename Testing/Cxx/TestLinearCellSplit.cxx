@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -20,6 +22,26 @@ const std::array<Point, 6> UnitWedge = { { { 0, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 }
   { 0, 1, 1 }, { 1, 0, 1 } } };
 const std::array<Point, 5> UnitPyramid = { { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
   { 0.5, 0.5, 1 } } };
+
+/// A regular n-gonal prism of unit circumradius and height, numbered as VTK's prisms.
+template <std::size_t N>
+std::array<Point, 2 * N> RegularPrism()
+{
+  std::array<Point, 2 * N> points;
+  for (std::size_t i = 0; i < N; ++i)
+  {
+    const double angle = 2.0 * std::acos(-1.0) * i / N;
+    points[i] = { std::cos(angle), std::sin(angle), 0.0 };
+    points[N + i] = { std::cos(angle), std::sin(angle), 1.0 };
+  }
+  return points;
+}
+
+template <std::size_t N>
+double RegularPrismVolume()
+{
+  return 0.5 * N * std::sin(2.0 * std::acos(-1.0) / N);
+}
 
 /// A sheared, scaled, rotated copy: splits must stay positive under any affine map of positive
 /// determinant.
@@ -45,9 +67,10 @@ double Determinant()
     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
-/// Every face triangle of the tets lying in a quad face must use the quad's min-id diagonal.
+/// Every polygonal face must appear in the tets as its fan from its smallest id, and no other
+/// triangle of its vertices may appear (a quad cut along the other diagonal, say).
 template <std::size_t NumFaces>
-void ExpectQuadsCutThroughMinimum(const std::array<uv::LocalFace, NumFaces>& faces, const int* ids,
+void ExpectFacesFannedFromMinimum(const std::array<uv::LocalFace, NumFaces>& faces, const int* ids,
   const int tets[][4], int count)
 {
   std::set<std::set<int>> triangles;
@@ -68,21 +91,29 @@ void ExpectQuadsCutThroughMinimum(const std::array<uv::LocalFace, NumFaces>& fac
   }
   for (const uv::LocalFace& face : faces)
   {
-    if (face.Size != 4)
+    if (face.Size < 4)
     {
       continue;
     }
     const auto& f = face.Vertices;
     int lowest = 0;
-    for (int i = 1; i < 4; ++i)
+    for (int i = 1; i < face.Size; ++i)
     {
       lowest = ids[f[i]] < ids[f[lowest]] ? i : lowest;
     }
-    const int a = f[lowest], b = f[(lowest + 1) % 4], c = f[(lowest + 2) % 4], d = f[(lowest + 3) % 4];
-    EXPECT_TRUE(triangles.count({ a, b, c }) == 1 && triangles.count({ a, c, d }) == 1)
-      << "quad face not cut along the diagonal through its smallest id";
-    EXPECT_EQ(triangles.count({ b, c, d }) + triangles.count({ a, b, d }), 0u)
-      << "quad face cut along the other diagonal too";
+    const std::set<int> vertices(f.begin(), f.begin() + face.Size);
+    std::size_t fanned = 0, inFace = 0;
+    for (int i = 1; i + 1 < face.Size; ++i)
+    {
+      fanned += triangles.count(
+        { f[lowest], f[(lowest + i) % face.Size], f[(lowest + i + 1) % face.Size] });
+    }
+    for (const std::set<int>& triangle : triangles)
+    {
+      inFace += std::includes(vertices.begin(), vertices.end(), triangle.begin(), triangle.end()) ? 1 : 0;
+    }
+    EXPECT_EQ(fanned, static_cast<std::size_t>(face.Size - 2)) << "face not fanned from its smallest id";
+    EXPECT_EQ(inFace, fanned) << "face cut by other triangles too";
   }
 }
 
@@ -93,9 +124,16 @@ void CheckAllOrderings(const std::array<Point, N>& reference, double referenceVo
   const std::array<Point, N> sheared = Affine(reference);
   std::array<int, N> ids;
   std::iota(ids.begin(), ids.end(), 0);
+  // Every ordering up to 8 vertices; a fixed random sample of the 10! or 12! orderings of the prisms.
+  const bool every = N <= 8;
+  std::mt19937 random(N);
   int orderings = 0;
   do
   {
+    if (!every)
+    {
+      std::shuffle(ids.begin(), ids.end(), random);
+    }
     // Global ids are a permutation scaled and offset, as real meshes have.
     std::array<long long, N> globalIds;
     for (std::size_t i = 0; i < N; ++i)
@@ -119,9 +157,9 @@ void CheckAllOrderings(const std::array<Point, N>& reference, double referenceVo
     }
     EXPECT_NEAR(volume, referenceVolume, 1e-14);
     EXPECT_NEAR(shearedVolume, referenceVolume * Determinant(), 1e-12);
-    ExpectQuadsCutThroughMinimum(faces, ids.data(), tets, count);
+    ExpectFacesFannedFromMinimum(faces, ids.data(), tets, count);
     ++orderings;
-  } while (std::next_permutation(ids.begin(), ids.end()));
+  } while (every ? std::next_permutation(ids.begin(), ids.end()) : orderings < 3000);
   EXPECT_GT(orderings, 1);
 }
 } // namespace
@@ -142,6 +180,18 @@ TEST(LinearCellSplit, PyramidEveryOrdering)
 {
   CheckAllOrderings(UnitPyramid, 1.0 / 3.0, uv::PyramidFaces, 2,
     [](const long long* ids, int tets[][4]) { return uv::SplitPyramid(ids, tets); });
+}
+
+TEST(LinearCellSplit, PentagonalPrismSampledOrderings)
+{
+  CheckAllOrderings(RegularPrism<5>(), RegularPrismVolume<5>(), uv::PentagonalPrismFaces, 9,
+    [](const long long* ids, int tets[][4]) { return uv::SplitPentagonalPrism(ids, tets); });
+}
+
+TEST(LinearCellSplit, HexagonalPrismSampledOrderings)
+{
+  CheckAllOrderings(RegularPrism<6>(), RegularPrismVolume<6>(), uv::HexagonalPrismFaces, 12,
+    [](const long long* ids, int tets[][4]) { return uv::SplitHexagonalPrism(ids, tets); });
 }
 
 TEST(LinearCellSplit, FacesAreOutward)
@@ -168,6 +218,8 @@ TEST(LinearCellSplit, FacesAreOutward)
   check(UnitHexahedron, uv::HexahedronFaces);
   check(UnitWedge, uv::WedgeFaces);
   check(UnitPyramid, uv::PyramidFaces);
+  check(RegularPrism<5>(), uv::PentagonalPrismFaces);
+  check(RegularPrism<6>(), uv::HexagonalPrismFaces);
 }
 
 TEST(LinearCellSplit, FiveTetrahedraBothParities)

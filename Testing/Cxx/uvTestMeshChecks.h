@@ -78,7 +78,7 @@ inline FaceCensus CountFaces(vtkDataSet* mesh)
   return census;
 }
 
-/// Boundary triangles a conforming tet split of `mesh` must have: 2 per boundary quad, 1 per triangle.
+/// Boundary triangles a conforming tet split of `mesh` must have: n - 2 per boundary polygon of n points.
 inline long long ExpectedBoundaryTriangles(vtkDataSet* mesh)
 {
   long long triangles = 0;
@@ -86,7 +86,7 @@ inline long long ExpectedBoundaryTriangles(vtkDataSet* mesh)
   {
     if (face.second == 1)
     {
-      triangles += face.first.size() == 4 ? 2 : 1;
+      triangles += static_cast<long long>(face.first.size()) - 2; // a fan of each polygon
     }
   }
   return triangles;

@@ -5,13 +5,65 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import shared_data  # noqa: E402
 import uvrender  # noqa: E402
 from fixtures import OUTPUT, Events, assert_matches_baseline  # noqa: E402
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,  # noqa: E402
                                 vtkVertexGradientFilter)
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
+from vtkmodules.vtkCommonDataModel import (VTK_POLYHEDRON, vtkGenericCell, vtkImageData,  # noqa: E402
+                                           vtkUnstructuredGrid)
+from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
+
+
+def split(mesh):
+    """vtkHexahedraToTetrahedra's output and its error count."""
+    splitter = vtkHexahedraToTetrahedra()
+    events = Events(splitter)
+    splitter.SetInputData(mesh)
+    splitter.Update()
+    return splitter.GetOutput(), events.errors
+
+
+def as_polyhedra(mesh):
+    """Every cell of an unstructured grid rewritten as a VTK_POLYHEDRON of its own faces."""
+    out = vtkUnstructuredGrid()
+    out.SetPoints(mesh.GetPoints())
+    cell = vtkGenericCell()
+    for c in range(mesh.GetNumberOfCells()):
+        mesh.GetCell(c, cell)
+        stream = vtkIdList()
+        stream.InsertNextId(cell.GetNumberOfFaces())
+        for f in range(cell.GetNumberOfFaces()):
+            ids = cell.GetFace(f).GetPointIds()
+            stream.InsertNextId(ids.GetNumberOfIds())
+            for i in range(ids.GetNumberOfIds()):
+                stream.InsertNextId(ids.GetId(i))
+        out.InsertNextCell(VTK_POLYHEDRON, stream)
+    out.GetPointData().ShallowCopy(mesh.GetPointData())
+    return out
+
+
+def tet_set(tets):
+    """The tets as sorted point-id tuples."""
+    ids = vtkIdList()
+    found = set()
+    for t in range(tets.GetNumberOfCells()):
+        tets.GetCellPoints(t, ids)
+        found.add(tuple(sorted(ids.GetId(v) for v in range(4))))
+    return found
+
+
+def total_volume(mesh):
+    """Sum of vtkCellSizeFilter's cell volumes (VTK's own measure, independent of the split)."""
+    sizes = vtkCellSizeFilter()
+    sizes.SetInputData(mesh)
+    sizes.ComputeVolumeOn()
+    sizes.Update()
+    volume = sizes.GetOutput().GetCellData().GetArray("Volume")
+    return sum(volume.GetValue(i) for i in range(volume.GetNumberOfTuples()))
 
 
 class FilterTests(unittest.TestCase):
@@ -55,6 +107,58 @@ class FilterTests(unittest.TestCase):
         gradient.Update()
         self.assertEqual(events.errors, 1)
         self.assertIsNone(gradient.GetOutput().GetPointData().GetArray("Gradients"))
+
+    def test_hexahedra_as_polyhedra_give_the_hexahedron_split(self):
+        source = vtkAnalyticMeshSource()
+        source.SetResolution(3, 2, 2)
+        source.SetDistortion(vtkAnalyticMeshSource.ROTATE_45)
+        source.Update()
+        hexes = source.GetOutput()
+        expected, errors = split(hexes)
+        self.assertEqual(errors, 0)
+        tets, errors = split(as_polyhedra(hexes))
+        self.assertEqual(errors, 0)
+        self.assertEqual(tets.GetNumberOfPoints(), hexes.GetNumberOfPoints())
+        self.assertEqual(tet_set(tets), tet_set(expected))
+        self.assertAlmostEqual(total_volume(tets), total_volume(hexes), places=12)
+
+    def test_shared_prism_files_split_to_their_volume(self):
+        for name, count in (("PentagonalPrism.vtu", 9), ("HexagonalPrism.vtu", 12)):
+            with self.subTest(name):
+                try:
+                    path = shared_data.path("cells", name)
+                except FileNotFoundError:
+                    self.skipTest("../shared/data is absent")
+                reader = vtkXMLUnstructuredGridReader()
+                reader.SetFileName(path)
+                reader.Update()
+                prism = reader.GetOutput()
+                tets, errors = split(prism)
+                self.assertEqual(errors, 0)
+                self.assertEqual(tets.GetNumberOfCells(), count)
+                volumes = vtkCellSizeFilter()
+                volumes.SetInputData(tets)
+                volumes.Update()
+                volume = volumes.GetOutput().GetCellData().GetArray("Volume")
+                self.assertGreater(min(volume.GetValue(i) for i in range(count)), 0.0)
+                self.assertAlmostEqual(total_volume(tets), total_volume(prism), places=6)
+                polyhedral, errors = split(as_polyhedra(prism))
+                self.assertEqual(errors, 0)
+                self.assertEqual(tet_set(polyhedral), tet_set(tets))
+
+    def test_open_polyhedron_is_an_error_not_a_crash(self):
+        source = vtkAnalyticMeshSource()
+        source.SetResolution(1, 1, 1)
+        source.Update()
+        cube = as_polyhedra(source.GetOutput())
+        stream = vtkIdList()
+        cube.GetFaceStream(0, stream)
+        stream.SetId(0, stream.GetId(0) - 1)  # drop the last face
+        stream.SetNumberOfIds(stream.GetNumberOfIds() - 5)
+        cube.InsertNextCell(VTK_POLYHEDRON, stream)
+        tets, errors = split(cube)
+        self.assertEqual(errors, 1)
+        self.assertEqual(tets.GetNumberOfCells(), 6)  # the closed cube only
 
     def test_default_dataset_render_matches_baseline(self):
         reader = vtkXMLUnstructuredGridReader()
