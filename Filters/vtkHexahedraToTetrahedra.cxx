@@ -571,6 +571,78 @@ vtkSmartPointer<vtkCellArray> BuildCells(
   cells->SetData(offsets, connectivity);
   return cells;
 }
+/// Unstructured input: each cell's first tet (a prefix sum over the tets per cell, firstTet[numCells]
+/// the total), the polyhedra's splits, and the messages owed: false with `error` when a 3D cell type
+/// cannot be split; otherwise `error` names skipped polyhedra and `warning` dropped non-3D cells.
+bool CountUnstructuredTets(vtkDataSet* input, int splitMode, std::vector<vtkIdType>& firstTet,
+  PolyhedraSplits& polyhedra, vtkIdType& numTets, std::string& error, std::string& warning)
+{
+  const vtkIdType numCells = input->GetNumberOfCells();
+  std::vector<int> unsupported;
+  const std::array<int, 256> tetsPerType = ClassifyCellTypes(input, splitMode, unsupported);
+  if (!unsupported.empty())
+  {
+    error = std::string("Input has 3D cells that cannot be split (first type: ") +
+      vtkCellTypes::GetClassNameFromTypeId(unsupported.front()) +
+      "). Only linear tetrahedra, hexahedra, voxels, wedges, pyramids, pentagonal and hexagonal prisms "
+      "and polyhedra are supported; linearize higher-order cells first (e.g. with vtkTessellatorFilter).";
+    return false;
+  }
+  firstTet.resize(numCells + 1);
+  input->GetCellType(0); // the first call must come from one thread
+  vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      firstTet[cell] = tetsPerType[input->GetCellType(cell)];
+    }
+  });
+  if (tetsPerType[VTK_POLYHEDRON] == VariableCell)
+  {
+    polyhedra = SplitPolyhedra(input, CellsOfCount(firstTet, VariableCell));
+    error = PolyhedraError(polyhedra);
+    for (std::size_t i = 0; i < polyhedra.Cells.size(); ++i)
+    {
+      firstTet[polyhedra.Cells[i]] = static_cast<vtkIdType>(polyhedra.Splits[i].Tets.size());
+    }
+  }
+  vtkIdType dropped = 0;
+  numTets = 0;
+  for (vtkIdType cell = 0; cell < numCells; ++cell)
+  {
+    const vtkIdType count = firstTet[cell];
+    dropped += count == 0 && tetsPerType[input->GetCellType(cell)] == DroppedCell ? 1 : 0;
+    firstTet[cell] = numTets;
+    numTets += count;
+  }
+  firstTet[numCells] = numTets;
+  if (dropped > 0)
+  {
+    warning = "Dropped " + std::to_string(dropped) + " cells that are not 3D (vertices, lines, polygons or "
+      "empty cells).";
+  }
+  return true;
+}
+
+/// Every input cell array copied to the cell's tets (`originalIds`: each tet's input cell).
+void PassCellData(vtkCellData* inCellData, vtkCellData* outCellData, const vtkIdType* originalIds, vtkIdType numTets)
+{
+  if (inCellData->GetNumberOfArrays() == 0 || numTets == 0)
+  {
+    return;
+  }
+  outCellData->CopyAllocate(inCellData, numTets);
+  vtkNew<vtkIdList> fromIds;
+  vtkNew<vtkIdList> toIds;
+  fromIds->SetNumberOfIds(numTets);
+  toIds->SetNumberOfIds(numTets);
+  vtkIdType* fromIdData = fromIds->GetPointer(0);
+  vtkIdType* toIdData = toIds->GetPointer(0);
+  vtkSMPTools::For(0, numTets, [&](vtkIdType begin, vtkIdType end) {
+    std::copy(originalIds + begin, originalIds + end, fromIdData + begin);
+    std::iota(toIdData + begin, toIdData + end, begin);
+  });
+  outCellData->CopyData(inCellData, fromIds, toIds);
+}
 } // namespace
 
 vtkHexahedraToTetrahedra::vtkHexahedraToTetrahedra() = default;
@@ -617,51 +689,19 @@ int vtkHexahedraToTetrahedra::RequestData(
   }
   else
   {
-    std::vector<int> unsupported;
-    const std::array<int, 256> tetsPerType = ClassifyCellTypes(input, splitMode, unsupported);
-    if (!unsupported.empty())
+    std::string error, warning;
+    if (!CountUnstructuredTets(input, splitMode, firstTet, polyhedra, numTets, error, warning))
     {
-      vtkErrorMacro("Input has 3D cells that cannot be split (first type: "
-        << vtkCellTypes::GetClassNameFromTypeId(unsupported.front())
-        << "). Only linear tetrahedra, hexahedra, voxels, wedges, pyramids, pentagonal and "
-           "hexagonal prisms and polyhedra are supported; "
-           "linearize higher-order cells first (e.g. with vtkTessellatorFilter).");
+      vtkErrorMacro(<< error);
       return 0;
     }
-    firstTet.resize(numCells + 1);
-    input->GetCellType(0); // the first call must come from one thread
-    vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType cell = begin; cell < end; ++cell)
-      {
-        firstTet[cell] = tetsPerType[input->GetCellType(cell)];
-      }
-    });
-    if (tetsPerType[VTK_POLYHEDRON] == VariableCell)
+    if (!error.empty())
     {
-      polyhedra = SplitPolyhedra(input, CellsOfCount(firstTet, VariableCell));
-      const std::string error = PolyhedraError(polyhedra);
-      if (!error.empty())
-      {
-        vtkErrorMacro(<< error);
-      }
-      for (std::size_t i = 0; i < polyhedra.Cells.size(); ++i)
-      {
-        firstTet[polyhedra.Cells[i]] = static_cast<vtkIdType>(polyhedra.Splits[i].Tets.size());
-      }
+      vtkErrorMacro(<< error);
     }
-    vtkIdType dropped = 0;
-    for (vtkIdType cell = 0; cell < numCells; ++cell)
+    if (!warning.empty())
     {
-      const vtkIdType count = firstTet[cell];
-      dropped += count == 0 && tetsPerType[input->GetCellType(cell)] == DroppedCell ? 1 : 0;
-      firstTet[cell] = numTets;
-      numTets += count;
-    }
-    firstTet[numCells] = numTets;
-    if (dropped > 0)
-    {
-      vtkWarningMacro("Dropped " << dropped << " cells that are not 3D (vertices, lines, "
-                                 << "polygons or empty cells).");
+      vtkWarningMacro(<< warning);
     }
   }
   this->UpdateProgress(0.2);
@@ -699,24 +739,8 @@ int vtkHexahedraToTetrahedra::RequestData(
   output->SetCells(VTK_TETRA, cells);
   PassPointData(input->GetPointData(), output->GetPointData(), polyhedra);
   output->GetFieldData()->PassData(input->GetFieldData());
-  vtkCellData* inCellData = input->GetCellData();
-  vtkCellData* outCellData = output->GetCellData();
-  if (inCellData->GetNumberOfArrays() > 0 && numTets > 0)
-  {
-    outCellData->CopyAllocate(inCellData, numTets);
-    vtkNew<vtkIdList> fromIds;
-    vtkNew<vtkIdList> toIds;
-    fromIds->SetNumberOfIds(numTets);
-    toIds->SetNumberOfIds(numTets);
-    vtkIdType* fromIdData = fromIds->GetPointer(0);
-    vtkIdType* toIdData = toIds->GetPointer(0);
-    vtkSMPTools::For(0, numTets, [&](vtkIdType begin, vtkIdType end) {
-      std::copy(originalIdData + begin, originalIdData + end, fromIdData + begin);
-      std::iota(toIdData + begin, toIdData + end, begin);
-    });
-    outCellData->CopyData(inCellData, fromIds, toIds);
-  }
-  outCellData->AddArray(originalIds);
+  PassCellData(input->GetCellData(), output->GetCellData(), originalIdData, numTets);
+  output->GetCellData()->AddArray(originalIds);
   this->UpdateProgress(1.0);
   return 1;
 }
