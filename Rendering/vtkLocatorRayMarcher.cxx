@@ -11,11 +11,14 @@
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolygon.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
@@ -198,9 +201,38 @@ bool BuildOpticalModel(vtkVolumeProperty* property, OpticalModel& model, std::st
   return true;
 }
 
+/// For cells with polygonal faces (prisms of 5 and 6 sides, polyhedra) VTK's parametric
+/// coordinates span the cell's bounding box, so EvaluatePosition cannot tell what is inside: x must
+/// be behind every face's plane (the face's normal oriented away from the mean of the cell's
+/// points). Exact for convex cells, which is what this check is meant for.
+bool InsideConvexFaces(vtkCell* cell, const double x[3])
+{
+  double centre[3] = { 0, 0, 0 }, p[3];
+  vtkPoints* points = cell->GetPoints();
+  const vtkIdType n = points->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, p);
+    for (int d = 0; d < 3; ++d)
+      centre[d] += p[d] / n;
+  }
+  for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+  {
+    vtkCell* face = cell->GetFace(f);
+    double normal[3], origin[3];
+    vtkPolygon::ComputeNormal(face->GetPoints(), normal);
+    face->GetPoints()->GetPoint(0, origin);
+    const double side = vtkMath::Dot(normal, centre) - vtkMath::Dot(normal, origin);
+    const double at = vtkMath::Dot(normal, x) - vtkMath::Dot(normal, origin);
+    if (at * side < 0.0 || at == 0.0)
+      return false;
+  }
+  return true;
+}
+
 /// Strict containment: pcoords inside the cell's parametric domain (VTK's EvaluatePosition
 /// accepts a tolerance of 1e-3 around it, under which neighbouring cells would overlap).
-bool StrictlyInside(vtkCell* cell, const double pcoords[3])
+bool StrictlyInside(vtkCell* cell, const double pcoords[3], const double x[3])
 {
   if (cell->GetParametricDistance(pcoords) > 0.0)
   {
@@ -217,6 +249,10 @@ bool StrictlyInside(vtkCell* cell, const double pcoords[3])
     case VTK_QUADRATIC_TETRA:
       // vtkTetra's parametric distance looks at r, s, t only, not at 1 - r - s - t.
       return pcoords[0] + pcoords[1] + pcoords[2] <= 1.0;
+    case VTK_PENTAGONAL_PRISM:
+    case VTK_HEXAGONAL_PRISM:
+    case VTK_POLYHEDRON:
+      return InsideConvexFaces(cell, x);
     default:
       return true;
   }
@@ -349,7 +385,7 @@ struct MarchPixelsWorker
       double closest[3], pcoords[3], dist2;
       int subId = 0;
       if (cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) != 1 ||
-        !StrictlyInside(cell, pcoords))
+        !StrictlyInside(cell, pcoords, x))
       {
         continue;
       }

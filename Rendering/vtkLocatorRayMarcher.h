@@ -23,9 +23,12 @@
  * functions are accepted: RGB colour space, linear scale, no discretisation, every node with
  * midpoint 0.5 and sharpness 0, 1D transfer-function mode.
  *
+ * Pentagonal and hexagonal prisms and polyhedra, whose parametric coordinates VTK spans over the
+ * cell's bounding box, count a sample as inside when it is behind every face's plane (so they must
+ * be convex); their weights are VTK's (mean value coordinates for polyhedra).
+ *
  * Cells that are not 3D, or that have a point (for a cell scalar: a value) with a non-finite scalar,
- * are ignored. The locator
- * is built once per input (rebuilt when the input's MTime changes). Pixels run in parallel
+ * are ignored. The locator is built once per input (rebuilt when the input's MTime changes). Pixels run in parallel
  * (vtkSMPTools). Gradient opacity and shading are ignored.
  */
 #ifndef vtkLocatorRayMarcher_h

@@ -13,6 +13,7 @@
 #include "vtkGenericCell.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkHexahedraToTetrahedra.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
@@ -20,7 +21,10 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPNGWriter.h"
+#include "vtkCellData.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -58,6 +62,69 @@ const uv::IsoparametricShape* ShapeOf(int type)
     default:
       return nullptr;
   }
+}
+
+bool IsPolygonalCell(int type)
+{
+  return type == VTK_PENTAGONAL_PRISM || type == VTK_HEXAGONAL_PRISM || type == VTK_POLYHEDRON;
+}
+
+/// `input` with its prisms and polyhedra replaced by vtkHexahedraToTetrahedra's tetrahedra (the
+/// other cells unchanged, the data passed, polyhedra's centre points appended after the input's
+/// points); `input` itself when it has none.
+vtkSmartPointer<vtkDataSet> PolygonalCellsAsTetrahedra(vtkDataSet* input)
+{
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(input); // the only type that holds such cells
+  std::vector<vtkIdType> others;
+  vtkNew<vtkUnstructuredGrid> polygonal; // those cells over all the input's points
+  polygonal->SetPoints(grid ? grid->GetPoints() : nullptr);
+  polygonal->GetPointData()->ShallowCopy(input->GetPointData());
+  polygonal->GetCellData()->CopyAllocate(input->GetCellData());
+  vtkNew<vtkIdList> faces;
+  for (vtkIdType c = 0; grid && c < grid->GetNumberOfCells(); ++c)
+  {
+    if (!IsPolygonalCell(grid->GetCellType(c)))
+    {
+      others.push_back(c);
+      continue;
+    }
+    vtkIdType cell;
+    if (grid->GetCellType(c) == VTK_POLYHEDRON)
+    {
+      grid->GetFaceStream(c, faces);
+      cell = polygonal->InsertNextCell(VTK_POLYHEDRON, faces);
+    }
+    else
+    {
+      vtkNew<vtkIdList> ids;
+      grid->GetCellPoints(c, ids);
+      cell = polygonal->InsertNextCell(grid->GetCellType(c), ids);
+    }
+    polygonal->GetCellData()->CopyData(input->GetCellData(), c, cell);
+  }
+  if (!grid || polygonal->GetNumberOfCells() == 0)
+    return input;
+  vtkNew<vtkHexahedraToTetrahedra> split;
+  split->SetInputData(polygonal);
+  split->Update();
+  vtkUnstructuredGrid* tets = split->GetOutput();
+  auto result = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  result->SetPoints(tets->GetPoints());
+  result->GetPointData()->ShallowCopy(tets->GetPointData());
+  result->Allocate(static_cast<vtkIdType>(others.size()) + tets->GetNumberOfCells());
+  result->GetCellData()->CopyAllocate(input->GetCellData());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c : others)
+  {
+    grid->GetCellPoints(c, ids);
+    result->GetCellData()->CopyData(input->GetCellData(), c, result->InsertNextCell(grid->GetCellType(c), ids));
+  }
+  for (vtkIdType t = 0; t < tets->GetNumberOfCells(); ++t)
+  {
+    tets->GetCellPoints(t, ids);
+    result->GetCellData()->CopyData(tets->GetCellData(), t, result->InsertNextCell(VTK_TETRA, ids));
+  }
+  return result;
 }
 
 /// The input in double precision, recentred on its bounds' centre: every intersection and inverse
@@ -422,14 +489,14 @@ void vtkUnstructuredVolumeReferenceRenderer::SetInputData(vtkDataSet* input)
   vtkSetObjectBodyMacro(Input, vtkDataSet, input);
 }
 
-uvvtk::RenderedScalar vtkUnstructuredVolumeReferenceRenderer::FindScalar()
+uvvtk::RenderedScalar vtkUnstructuredVolumeReferenceRenderer::FindScalar(vtkDataSet* input)
 {
   const char* name = this->ScalarArrayName;
   int mode = this->ScalarMode;
   if (mode == VTK_SCALAR_MODE_DEFAULT && name)
   {
     // A name alone: the point array of that name, else the cell array.
-    mode = this->Input->GetPointData()->GetArray(name) ? VTK_SCALAR_MODE_USE_POINT_FIELD_DATA
+    mode = input->GetPointData()->GetArray(name) ? VTK_SCALAR_MODE_USE_POINT_FIELD_DATA
                                                        : VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
   }
   if (!name && mode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA)
@@ -437,7 +504,7 @@ uvvtk::RenderedScalar vtkUnstructuredVolumeReferenceRenderer::FindScalar()
   if (!name && mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
     mode = VTK_SCALAR_MODE_USE_CELL_DATA;
   return uvvtk::FindRenderedScalar(
-    this->Input, mode, VTK_GET_ARRAY_BY_NAME, -1, name ? name : "", this->VolumeProperty);
+    input, mode, VTK_GET_ARRAY_BY_NAME, -1, name ? name : "", this->VolumeProperty);
 }
 
 bool vtkUnstructuredVolumeReferenceRenderer::Render()
@@ -466,7 +533,10 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     return true; // nothing to render: a transparent image
   }
 
-  const uvvtk::RenderedScalar scalar = this->FindScalar();
+  // Prisms and polyhedra as the project's conforming split defines their field (every mapper draws
+  // that split too); the other cells as they are.
+  const vtkSmartPointer<vtkDataSet> input = PolygonalCellsAsTetrahedra(this->Input);
+  const uvvtk::RenderedScalar scalar = this->FindScalar(input);
   if (!scalar)
   {
     vtkErrorMacro("No " << (this->ScalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA ? "cell" : "point or cell")
@@ -487,13 +557,12 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   }
 
   Mesh mesh;
-  mesh.LoadPoints(this->Input, scalar);
-  if (!mesh.LoadCells(this->Input))
+  mesh.LoadPoints(input, scalar);
+  if (!mesh.LoadCells(input))
   {
-    vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges and "
-                  "pyramids; cell "
-      << mesh.Unsupported << " is a "
-      << vtkCellTypes::GetClassNameFromTypeId(this->Input->GetCellType(mesh.Unsupported)) << ".");
+    vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges, pyramids, "
+                  "pentagonal and hexagonal prisms and polyhedra; a cell is a "
+      << vtkCellTypes::GetClassNameFromTypeId(input->GetCellType(mesh.Unsupported)) << ".");
     return false;
   }
   if (mesh.NotThreeDimensional > 0)

@@ -22,7 +22,9 @@
  * is a float RGBA vtkImageData (array "RGBA", premultiplied, over a transparent background), row 0
  * at the bottom like VTK's windows. Multithreaded over pixels with vtkSMPTools.
  *
- * Other 3D cells (quadratic, polyhedra) are an error; 2D and 1D cells are ignored with a warning.
+ * Pentagonal and hexagonal prisms and polyhedra are rendered as vtkHexahedraToTetrahedra splits them
+ * (the field every mapper draws for them). Other 3D cells (quadratic) are an error; 2D and 1D
+ * cells are ignored with a warning.
  * Cells touching a non-finite scalar are left out (transparent) with a warning.
  */
 #ifndef vtkUnstructuredVolumeReferenceRenderer_h
@@ -107,7 +109,7 @@ protected:
   vtkImageData* Output = nullptr;
 
 private:
-  uvvtk::RenderedScalar FindScalar();
+  uvvtk::RenderedScalar FindScalar(vtkDataSet* input);
 
   vtkUnstructuredVolumeReferenceRenderer(const vtkUnstructuredVolumeReferenceRenderer&) = delete;
   void operator=(const vtkUnstructuredVolumeReferenceRenderer&) = delete;

@@ -15,9 +15,9 @@ import uvrender
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
                                 vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import (VTK_QUADRATIC_TETRA, vtkImageData, vtkPiecewiseFunction,
-                                           vtkUnstructuredGrid)
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIdList, vtkPoints
+from vtkmodules.vtkCommonDataModel import (VTK_POLYHEDRON, VTK_QUADRATIC_TETRA, vtkGenericCell, vtkImageData,
+                                           vtkPiecewiseFunction, vtkUnstructuredGrid)
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
                                          vtkVolumeProperty)
@@ -57,6 +57,25 @@ def analytic(resolution, field=ML, distortion=0, cells=vtkAnalyticMeshSource.SIX
 
 def analytic_hexahedra(resolution, field=ML, distortion=0):
     return analytic(resolution, field, distortion, vtkAnalyticMeshSource.HEXAHEDRA)
+
+
+def as_polyhedra(mesh):
+    """Every cell of an unstructured grid rewritten as a VTK_POLYHEDRON of its own faces."""
+    out = vtkUnstructuredGrid()
+    out.SetPoints(mesh.GetPoints())
+    cell = vtkGenericCell()
+    for c in range(mesh.GetNumberOfCells()):
+        mesh.GetCell(c, cell)
+        stream = vtkIdList()
+        stream.InsertNextId(cell.GetNumberOfFaces())
+        for f in range(cell.GetNumberOfFaces()):
+            ids = cell.GetFace(f).GetPointIds()
+            stream.InsertNextId(ids.GetNumberOfIds())
+            for i in range(ids.GetNumberOfIds()):
+                stream.InsertNextId(ids.GetId(i))
+        out.InsertNextCell(VTK_POLYHEDRON, stream)
+    out.GetPointData().ShallowCopy(mesh.GetPointData())
+    return out
 
 
 def load_shared(test, loader):

@@ -7,13 +7,12 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
-from fixtures import OUTPUT, Events, assert_matches_baseline  # noqa: E402
+from fixtures import OUTPUT, Events, as_polyhedra, assert_matches_baseline  # noqa: E402
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,  # noqa: E402
                                 vtkVertexGradientFilter)
 from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
-from vtkmodules.vtkCommonDataModel import (VTK_POLYHEDRON, vtkGenericCell, vtkImageData,  # noqa: E402
-                                           vtkUnstructuredGrid)
+from vtkmodules.vtkCommonDataModel import VTK_POLYHEDRON, vtkImageData, vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
 
@@ -25,25 +24,6 @@ def split(mesh):
     splitter.SetInputData(mesh)
     splitter.Update()
     return splitter.GetOutput(), events.errors
-
-
-def as_polyhedra(mesh):
-    """Every cell of an unstructured grid rewritten as a VTK_POLYHEDRON of its own faces."""
-    out = vtkUnstructuredGrid()
-    out.SetPoints(mesh.GetPoints())
-    cell = vtkGenericCell()
-    for c in range(mesh.GetNumberOfCells()):
-        mesh.GetCell(c, cell)
-        stream = vtkIdList()
-        stream.InsertNextId(cell.GetNumberOfFaces())
-        for f in range(cell.GetNumberOfFaces()):
-            ids = cell.GetFace(f).GetPointIds()
-            stream.InsertNextId(ids.GetNumberOfIds())
-            for i in range(ids.GetNumberOfIds()):
-                stream.InsertNextId(ids.GetId(i))
-        out.InsertNextCell(VTK_POLYHEDRON, stream)
-    out.GetPointData().ShallowCopy(mesh.GetPointData())
-    return out
 
 
 def tet_set(tets):
