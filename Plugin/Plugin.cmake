@@ -157,14 +157,22 @@ function (uv_visible_while out_var entries)
 endfunction ()
 
 # Each entry's subproxy: it exposes the properties it owns, in one panel section per set of entries
-# sharing them (the shared sections first, so every entry's panel has the same order), and takes
-# copies of those another entry owns. SELECT_MAPPER_EXCEPTION is filled in per data representation.
+# sharing them (the shared sections first, so every entry's panel has the same order), and shares
+# the property objects of those another entry owns (ShareProperties from that entry's subproxy, all
+# its other properties excepted). Shared objects, not linked copies: a link does not carry a list
+# cleared to no values, so a cleared isovalue list would stay drawn in the other entries.
+# SELECT_MAPPER_EXCEPTION is filled in per data representation.
 foreach (uv_entry IN LISTS uv_entries)
-  set(uv_links "")
+  set(uv_owners "")
   set(uv_sections "")
   foreach (uv_property uv_panel_name IN ZIP_LISTS uv_entry_${uv_entry}_properties uv_entry_${uv_entry}_panel_names)
     if (NOT uv_owner_${uv_panel_name} STREQUAL uv_entry)
-      string(APPEND uv_links "          <Property name=\"${uv_property}\" with_property=\"${uv_panel_name}\" />\n")
+      set(uv_owner "${uv_owner_${uv_panel_name}}")
+      if (NOT uv_owner IN_LIST uv_owners)
+        list(APPEND uv_owners "${uv_owner}")
+        set(uv_taken_${uv_owner} "")
+      endif ()
+      list(APPEND uv_taken_${uv_owner} "${uv_property}")
       continue ()
     endif ()
     string(REPLACE ";" "," uv_section "${uv_sharers_${uv_panel_name}}")
@@ -194,9 +202,17 @@ foreach (uv_entry IN LISTS uv_entries)
       "            <Hints>\n${uv_hint}            </Hints>\n          </PropertyGroup>\n")
     unset(uv_section_${uv_section})
   endforeach ()
-  if (uv_links)
-    set(uv_links "        <LinkProperties>\n${uv_links}        </LinkProperties>\n")
-  endif ()
+  set(uv_links "")
+  foreach (uv_owner IN LISTS uv_owners)
+    string(APPEND uv_links "        <ShareProperties subproxy=\"${uv_owner}\">\n")
+    foreach (uv_kept IN ITEMS Input Visibility SelectMapper LISTS uv_entry_${uv_owner}_properties)
+      if (NOT uv_kept IN_LIST uv_taken_${uv_owner})
+        string(APPEND uv_links "          <Exception name=\"${uv_kept}\" />\n")
+      endif ()
+    endforeach ()
+    string(APPEND uv_links "        </ShareProperties>\n")
+    unset(uv_taken_${uv_owner})
+  endforeach ()
   set(uv_subproxy_${uv_entry}
 "      <RepresentationType subproxy=\"${uv_entry}\" text=\"${uv_entry_${uv_entry}_menu}\" />
       <SubProxy>
