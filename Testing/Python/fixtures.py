@@ -13,9 +13,10 @@ import unittest
 import shared_data
 import uvrender
 
-from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
-                                vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIdList, vtkPoints
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedralRayCastMapper, vtkLocatorRayMarcher,
+                                vtkPreIntegratedTetrahedraMapper, vtkUnstructuredVolumeReferenceRenderer,
+                                vtkVolumeImageErrorMetrics)
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkFloatArray, vtkIdList, vtkIdTypeArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import (VTK_POLYHEDRON, VTK_QUADRATIC_TETRA, vtkGenericCell, vtkImageData,
                                            vtkPiecewiseFunction, vtkUnstructuredGrid)
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
@@ -276,6 +277,31 @@ def reference(mesh, prop, camera, size):
     renderer.SetImageSize(size, size)
     assert renderer.Render()
     return renderer.GetOutput()
+
+
+def march(mesh, prop, camera, size, pixels, steps, array=None, cells=False, component=0):
+    """vtkLocatorRayMarcher's premultiplied RGBA at `pixels` of a size x size image: the point (or,
+    with `cells`, the cell) array `array` (else the active scalars), its `component` (-1: magnitude)."""
+    marcher = vtkLocatorRayMarcher()
+    marcher.SetInputData(mesh)
+    marcher.SetScalarArrayName(array)
+    marcher.SetCellScalars(cells)
+    marcher.SetScalarComponent(component)
+    marcher.SetVolumeProperty(prop)
+    marcher.SetCamera(camera)
+    marcher.SetImageSize(size, size)
+    marcher.SetNumberOfSteps(steps)
+    ids = vtkIdTypeArray()
+    for p in pixels:
+        ids.InsertNextValue(p)
+    rgba = vtkFloatArray()
+    assert marcher.MarchPixels(ids, rgba)
+    return [rgba.GetTuple4(i) for i in range(len(pixels))]
+
+
+def largest_difference(a, b):
+    """The largest difference of any channel between two lists of RGBA tuples."""
+    return max(max(abs(x - y) for x, y in zip(p, q)) for p, q in zip(a, b))
 
 
 def rmse(candidate, expected):

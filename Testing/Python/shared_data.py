@@ -101,12 +101,10 @@ def sample_struct_grid():
     return legacy("sample_struct_grid", "SampleStructGrid.vtk")
 
 
-def openfoam_cavity_points():
-    """The OpenFOAM cavity's internal mesh (400 hexahedra) at its last time step, its cell data
-    averaged to the points by the reader; "p"."""
+def _openfoam_cavity(cell_to_point):
     reader = vtkOpenFOAMReader()
     reader.SetFileName(path("openfoam_cavity", "cavity", "case.foam"))
-    reader.CreateCellToPointOn()
+    reader.SetCreateCellToPoint(cell_to_point)
     reader.UpdateInformation()
     steps = reader.GetTimeValues()
     reader.UpdateTimeStep(steps.GetValue(steps.GetNumberOfTuples() - 1))
@@ -114,17 +112,16 @@ def openfoam_cavity_points():
     return reader.GetOutput().GetBlock(0)  # the internal mesh, an unstructured grid
 
 
+def openfoam_cavity_points():
+    """The OpenFOAM cavity's internal mesh (400 hexahedra) at its last time step, its cell data
+    averaged to the points by the reader; "p"."""
+    return _openfoam_cavity(1)
+
+
 def openfoam_cavity_cells():
     """The OpenFOAM cavity's internal mesh (400 hexahedra) at its last time step with its data as
     OpenFOAM writes it, per cell; "p" (scalar) and "U" (vector)."""
-    reader = vtkOpenFOAMReader()
-    reader.SetFileName(path("openfoam_cavity", "cavity", "case.foam"))
-    reader.CreateCellToPointOff()
-    reader.UpdateInformation()
-    steps = reader.GetTimeValues()
-    reader.UpdateTimeStep(steps.GetValue(steps.GetNumberOfTuples() - 1))
-    reader.Update()
-    return reader.GetOutput().GetBlock(0)
+    return _openfoam_cavity(0)
 
 
 def bucky():

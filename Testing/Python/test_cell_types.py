@@ -20,12 +20,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
 from fixtures import (HexScene, Scene, SceneTestCase, analytic_hexahedra, as_polyhedra, camera_for,  # noqa: E402
-                      copy_image, load_shared, rmse)
+                      largest_difference, load_shared, march, reference, rmse)
 
-from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
-                                vtkHexahedraToTetrahedra, vtkLocatorRayMarcher,
-                                vtkUnstructuredVolumeReferenceRenderer)
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkIdTypeArray  # noqa: E402
+from unstructuredvolume import vtkAnalyticMeshSource, vtkBarycentricShellMapper, vtkHexahedraToTetrahedra  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkDoubleArray  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
 
 SIZE = 64
@@ -70,6 +68,10 @@ def split(mesh):
     return tetrahedra.GetOutput()
 
 
+def on_cells(mesh):
+    return mesh.GetPointData().GetScalars() is None
+
+
 def scene_of(mesh):
     scalars = mesh.GetPointData().GetScalars() or mesh.GetCellData().GetScalars()
     low, high = scalars.GetRange()
@@ -78,53 +80,23 @@ def scene_of(mesh):
     return prop, camera_for(mesh, 30, 25, distance=1.6)
 
 
-def reference(mesh, prop, camera):
-    renderer = vtkUnstructuredVolumeReferenceRenderer()
-    renderer.SetInputData(mesh)
-    renderer.SetVolumeProperty(prop)
-    renderer.SetCamera(camera)
-    renderer.SetImageSize(SIZE, SIZE)
-    assert renderer.Render()
-    return copy_image(renderer.GetOutput())
-
-
-def march(mesh, prop, camera, pixels, steps):
-    marcher = vtkLocatorRayMarcher()
-    marcher.SetInputData(mesh)
-    marcher.SetCellScalars(mesh.GetPointData().GetScalars() is None)
-    marcher.SetVolumeProperty(prop)
-    marcher.SetCamera(camera)
-    marcher.SetImageSize(SIZE, SIZE)
-    marcher.SetNumberOfSteps(steps)
-    ids = vtkIdTypeArray()
-    for p in pixels:
-        ids.InsertNextValue(p)
-    rgba = vtkFloatArray()
-    assert marcher.MarchPixels(ids, rgba)
-    return [rgba.GetTuple4(i) for i in range(len(pixels))]
-
-
-def largest(a, b):
-    return max(max(abs(x - y) for x, y in zip(p, q)) for p, q in zip(a, b))
-
-
 class ReferenceOnPolygonalCells(unittest.TestCase):
     def test_hexahedra_as_polyhedra_render_as_their_split(self):
         mesh = polyhedral_grid()
         prop, camera = scene_of(mesh)
-        error, worst = rmse(reference(mesh, prop, camera), reference(split(mesh), prop, camera))
+        error, worst = rmse(reference(mesh, prop, camera, SIZE), reference(split(mesh), prop, camera, SIZE))
         self.assertLess(worst, 1e-6)
 
     def check_against_marcher(self, mesh, steps=1000):
         prop, camera = scene_of(mesh)
-        image = reference(mesh, prop, camera).GetPointData().GetScalars()
+        image = reference(mesh, prop, camera, SIZE).GetPointData().GetScalars()
         chooser = random.Random(zlib.crc32(f"{mesh.GetNumberOfCells()} {mesh.GetLength():.9g}".encode()))
         pixels = chooser.sample(range(SIZE * SIZE), PIXELS)
-        fine = march(mesh, prop, camera, pixels, steps)
-        coarse = march(mesh, prop, camera, pixels, steps // 2)
+        fine = march(mesh, prop, camera, SIZE, pixels, steps, cells=on_cells(mesh))
+        coarse = march(mesh, prop, camera, SIZE, pixels, steps // 2, cells=on_cells(mesh))
         truth = [image.GetTuple4(p) for p in pixels]
         covered = sum(1 for r in truth if r[3] > 1e-3)
-        difference, marcher_error = largest(truth, fine), largest(fine, coarse) / 3.0
+        difference, marcher_error = largest_difference(truth, fine), largest_difference(fine, coarse) / 3.0
         print(f"\n  {covered} of {PIXELS} pixels covered; largest difference {difference:.3g} (bound {BOUND}), "
               f"marcher's own error {marcher_error:.2g}", end="")
         self.assertGreater(covered, 30)
@@ -156,7 +128,7 @@ class MappersOnPolyhedra(SceneTestCase):
     def test_tetrahedral_mappers_against_the_reference(self):
         mesh = polyhedral_grid()
         prop, camera = scene_of(mesh)
-        expected = reference(mesh, prop, camera)
+        expected = reference(mesh, prop, camera, SIZE)
         for kind, settings in (("preintegrated", {}),
                                ("shells", {"mapper_class": vtkBarycentricShellMapper}),
                                ("cell projection", {"mapper_class": vtkBarycentricShellMapper,

@@ -18,11 +18,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
 from fixtures import (HexScene, Scene, SceneTestCase, analytic, analytic_hexahedra, camera_for,  # noqa: E402
-                      load_shared, reference)
+                      largest_difference, load_shared, march, reference)
 
-from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
-                                vtkHexahedraToTetrahedra, vtkLocatorRayMarcher)
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdTypeArray  # noqa: E402
+from unstructuredvolume import vtkAnalyticMeshSource, vtkBarycentricShellMapper, vtkHexahedraToTetrahedra  # noqa: E402
 from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_TETRA, VTK_VOXEL, vtkUnstructuredGrid  # noqa: E402
 
 SIZE = 96
@@ -38,26 +36,6 @@ def scene(mesh, scalar):
     return prop, camera_for(mesh, 30, 25, distance=1.6)
 
 
-def march(mesh, scalar, prop, camera, pixels, steps):
-    marcher = vtkLocatorRayMarcher()
-    marcher.SetInputData(mesh)
-    marcher.SetScalarArrayName(scalar)
-    marcher.SetVolumeProperty(prop)
-    marcher.SetCamera(camera)
-    marcher.SetImageSize(SIZE, SIZE)
-    marcher.SetNumberOfSteps(steps)
-    ids = vtkIdTypeArray()
-    for p in pixels:
-        ids.InsertNextValue(p)
-    rgba = vtkFloatArray()
-    assert marcher.MarchPixels(ids, rgba)
-    return [rgba.GetTuple4(i) for i in range(len(pixels))]
-
-
-def largest(a, b):
-    return max(max(abs(x - y) for x, y in zip(p, q)) for p, q in zip(a, b))
-
-
 def compare(mesh, scalar, steps=STEPS):
     """Reference and marcher at PIXELS seeded random pixels: (difference, marcher error, wrong share
     of covered pixels, covered)."""
@@ -65,12 +43,13 @@ def compare(mesh, scalar, steps=STEPS):
     image = reference(mesh, prop, camera, SIZE).GetPointData().GetScalars()
     chooser = random.Random(zlib.crc32(f"{mesh.GetNumberOfCells()} {mesh.GetLength():.9g}".encode()))
     pixels = chooser.sample(range(SIZE * SIZE), PIXELS)
-    fine = march(mesh, scalar, prop, camera, pixels, steps)
-    coarse = march(mesh, scalar, prop, camera, pixels, steps // 2)
+    fine = march(mesh, prop, camera, SIZE, pixels, steps, scalar)
+    coarse = march(mesh, prop, camera, SIZE, pixels, steps // 2, scalar)
     truth = [image.GetTuple4(p) for p in pixels]
     covered = [i for i, (r, m) in enumerate(zip(truth, fine)) if max(r[3], m[3]) > 1e-3]
     wrong = sum(1 for i in covered if max(abs(x - y) for x, y in zip(truth[i], fine[i])) > 0.02)
-    return largest(truth, fine), largest(fine, coarse) / 3.0, wrong / max(len(covered), 1), len(covered)
+    difference, marcher_error = largest_difference(truth, fine), largest_difference(fine, coarse) / 3.0
+    return difference, marcher_error, wrong / max(len(covered), 1), len(covered)
 
 
 def collapsed_layers():
@@ -188,7 +167,7 @@ class MappersAgainstMarcher(SceneTestCase):
             known = marched.setdefault(id(grid), {})
             missing = [p for p in pixels if p not in known]
             if missing:
-                known.update(zip(missing, march(grid, scalar, prop, camera, missing, STEPS)))
+                known.update(zip(missing, march(grid, prop, camera, SIZE, missing, STEPS, scalar)))
             squares = [sum((a - b) ** 2 for a, b in zip(image[p], known[p])) / 4.0 for p in pixels]
             error = (sum(squares) / len(squares)) ** 0.5
             largest_pixel = max(max(abs(a - b) for a, b in zip(image[p], known[p])) for p in pixels)

@@ -21,11 +21,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
 from fixtures import (HexScene, Scene, SceneTestCase, analytic, analytic_hexahedra, camera_for,  # noqa: E402
-                      copy_image, load_shared, rmse)
+                      copy_image, largest_difference, load_shared, march, rmse)
 
-from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper, vtkLocatorRayMarcher,  # noqa: E402
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
                                 vtkPreIntegratedTetrahedraMapper, vtkUnstructuredVolumeReferenceRenderer)
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkIdTypeArray  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkDoubleArray  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkPointDataToCellData, vtkThreshold  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkMeshQuality  # noqa: E402
@@ -73,28 +73,6 @@ def cell_reference(mesh, array, prop, camera):
     return copy_image(renderer.GetOutput())
 
 
-def march(mesh, array, prop, camera, pixels, steps, cells=True, component=0):
-    marcher = vtkLocatorRayMarcher()
-    marcher.SetInputData(mesh)
-    marcher.SetScalarArrayName(array)
-    marcher.SetCellScalars(cells)
-    marcher.SetScalarComponent(component)
-    marcher.SetVolumeProperty(prop)
-    marcher.SetCamera(camera)
-    marcher.SetImageSize(SIZE, SIZE)
-    marcher.SetNumberOfSteps(steps)
-    ids = vtkIdTypeArray()
-    for p in pixels:
-        ids.InsertNextValue(p)
-    rgba = vtkFloatArray()
-    assert marcher.MarchPixels(ids, rgba)
-    return [rgba.GetTuple4(i) for i in range(len(pixels))]
-
-
-def largest(a, b):
-    return max(max(abs(x - y) for x, y in zip(p, q)) for p, q in zip(a, b))
-
-
 def sampled_pixels(mesh):
     chooser = random.Random(zlib.crc32(f"{mesh.GetNumberOfCells()} {mesh.GetLength():.9g}".encode()))
     return chooser.sample(range(SIZE * SIZE), PIXELS)
@@ -110,11 +88,11 @@ class CellDataReferenceAgainstMarcher(unittest.TestCase):
         prop, camera = cell_scene(mesh, array)
         image = cell_reference(mesh, array, prop, camera).GetPointData().GetScalars()
         pixels = sampled_pixels(mesh)
-        fine = march(mesh, array, prop, camera, pixels, steps)
-        coarse = march(mesh, array, prop, camera, pixels, steps // 2)
+        fine = march(mesh, prop, camera, SIZE, pixels, steps, array, cells=True)
+        coarse = march(mesh, prop, camera, SIZE, pixels, steps // 2, array, cells=True)
         truth = [image.GetTuple4(p) for p in pixels]
         covered = sum(1 for r in truth if r[3] > 1e-3)
-        difference, marcher_error = largest(truth, fine), largest(fine, coarse)
+        difference, marcher_error = largest_difference(truth, fine), largest_difference(fine, coarse)
         print(f"\n  {covered} of {PIXELS} pixels covered; largest difference {difference:.3g} "
               f"(bound {REFERENCE_BOUND}), marcher's own error {marcher_error:.2g}", end="")
         self.assertGreater(covered, 30)
@@ -333,8 +311,8 @@ class MultiComponentArrays(SceneTestCase):
         self.assertTrue(renderer.Render())
         image = renderer.GetOutput().GetPointData().GetScalars()
         pixels = sampled_pixels(self.mesh)
-        marched = march(self.mesh, "vector", prop, self.camera, pixels, 2000, cells=False, component=-1)
-        self.assertLess(largest([image.GetTuple4(p) for p in pixels], marched), REFERENCE_BOUND)
+        marched = march(self.mesh, prop, self.camera, SIZE, pixels, 2000, "vector", component=-1)
+        self.assertLess(largest_difference([image.GetTuple4(p) for p in pixels], marched), REFERENCE_BOUND)
 
     def test_a_real_vector_array_by_its_magnitude(self):
         # The can's displacement: rendering DISPL by magnitude equals rendering |DISPL|.
