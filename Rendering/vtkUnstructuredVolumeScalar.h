@@ -74,11 +74,13 @@ struct RenderedScalar
 };
 
 /// Magnitude or the component the property's colour function selects (VTK's default: component 0).
+/// With dependent components (ParaView's "Use Separate Opacity Array" appends the opacity as the
+/// last one) the first component is the scalar, as ParaView's own volume mappers take it.
 inline int SelectedComponent(vtkVolumeProperty* property, vtkDataArray* array)
 {
   const int components = array->GetNumberOfComponents();
   vtkColorTransferFunction* colors = property ? property->GetRGBTransferFunction(0) : nullptr;
-  if (components == 1 || !colors)
+  if (components == 1 || !colors || !property->GetIndependentComponents())
   {
     return 0;
   }

@@ -36,9 +36,9 @@ from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkVersion
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkTable
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkTable, vtkUnstructuredGrid
 from vtkmodules.vtkImagingCore import vtkImageConstantPad
-from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkFiltersCore import vtkImageAppend, vtkPointDataToCellData
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLImageDataWriter
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
@@ -55,7 +55,7 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
 from fixtures import analytic  # noqa: E402
-from shared_data import SHARED, bluntfin, can, disk_out_ref, legacy  # noqa: E402
+from shared_data import SHARED, bluntfin, can, disk_out_ref, legacy, openfoam_cavity_cells  # noqa: E402
 REFERENCE_VERSION = "2"  # bump when the reference renderer's output changes (2: no lost cells, superposition)
 
 # ---------------------------------------------------------------------------------------------
@@ -144,6 +144,28 @@ def spikes(low, high):
     return opacity, colors
 
 
+def on_cells(scalar):
+    """A scene's scalar "cells:NAME" is the cell array NAME; any other the point array of that name."""
+    return bool(scalar) and scalar.startswith("cells:")
+
+
+def array_name(scalar):
+    return scalar[len("cells:"):] if on_cells(scalar) else scalar
+
+
+def with_cell_data(load):
+    """The mesh's point scalar averaged to its cells, the point data removed: a cell-data scene."""
+    def loaded():
+        average = vtkPointDataToCellData()
+        average.SetInputData(load())
+        average.Update()
+        cells = vtkUnstructuredGrid()
+        cells.CopyStructure(average.GetOutput())
+        cells.GetCellData().ShallowCopy(average.GetOutput().GetCellData())
+        return cells
+    return loaded
+
+
 def scenes(quick):
     """(name, loader, scalar, transfer-function maker, unit distance as a fraction of the diagonal)."""
     ml, steiner = vtkAnalyticMeshSource.MARSCHNER_LOBB, vtkAnalyticMeshSource.STEINER
@@ -159,6 +181,8 @@ def scenes(quick):
     if quick:
         return found[:2]
     found.append(("wavelet_tets", wavelet_tets, "RTData", smooth_ramp, 0.05))
+    found.append(("ml_twisted_hex_cells", with_cell_data(lambda: analytic(resolution, ml, twist, hexahedra)),
+                  "cells:MarschnerLobb", smooth_ramp, 0.05))
     if os.path.isdir(SHARED):
         found += [
             ("bluntfin_hex", bluntfin, "Density", smooth_ramp, 0.03),
@@ -167,12 +191,14 @@ def scenes(quick):
             ("can_hex", can, "DISPL_magnitude", smooth_ramp, 0.05),
             ("spx_tets", lambda: legacy("spx", "spx.vtk"), None, smooth_ramp, 0.05),
             ("lox_post_tets", lambda: legacy("lox_post", "post.vtk"), "Pressure", smooth_ramp, 0.05),
+            ("openfoam_cavity_cells_hex", openfoam_cavity_cells, "cells:p", smooth_ramp, 0.05),
         ]
     return found
 
 
 def volume_property(mesh, scalar, maker, unit_fraction):
-    low, high = (mesh.GetPointData().GetArray(scalar) if scalar else mesh.GetPointData().GetScalars()).GetRange()
+    arrays = mesh.GetCellData() if on_cells(scalar) else mesh.GetPointData()
+    low, high = (arrays.GetArray(array_name(scalar)) if scalar else arrays.GetScalars()).GetRange()
     opacity_nodes, color_nodes = maker(low, high)
     opacity = vtkPiecewiseFunction()
     for s, a in opacity_nodes:
@@ -223,7 +249,9 @@ def reference_image(cache, key_parts, mesh, scalar, prop, camera, size):
     renderer = vtkUnstructuredVolumeReferenceRenderer()
     renderer.SetInputData(mesh)
     if scalar:
-        renderer.SetScalarArrayName(scalar)
+        renderer.SetScalarArrayName(array_name(scalar))
+    if on_cells(scalar):
+        renderer.SetScalarModeToUseCellFieldData()
     renderer.SetVolumeProperty(prop)
     renderer.SetCamera(camera)
     renderer.SetImageSize(size, size)
@@ -278,8 +306,11 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
     if float_image:
         mapper.SetKeepFloatImage(True)
     if scalar:
-        mapper.SetScalarModeToUsePointFieldData()
-        mapper.SelectScalarArray(scalar)
+        if on_cells(scalar):
+            mapper.SetScalarModeToUseCellFieldData()
+        else:
+            mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectScalarArray(array_name(scalar))
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)

@@ -212,8 +212,8 @@ class CellDataMappersAgainstReference(SceneTestCase):
             self.assertLess(rmse(image, expected)[0], MAPPER_BOUNDS[kind], kind)
 
 
-# Multi-component arrays: "vector" = (0.6 s, 0.8 s, 0) over the scalar s, so |vector| = s and its
-# component 1 is 0.8 s.
+# Multi-component arrays: "vector" = (0.6 s, 0.8 s, 0) over the scalar s, so |vector| = s, its
+# component 0 is 0.6 s and its component 1 is 0.8 s.
 def with_vector(mesh):
     scalar = mesh.GetPointData().GetScalars()
     vector = vtkDoubleArray()
@@ -265,6 +265,11 @@ class MultiComponentArrays(SceneTestCase):
         self.camera = camera_for(self.mesh)
         self.selections = {"magnitude": scaled_property(self.prop, 1.0, "magnitude"),
                            "component 1": scaled_property(self.prop, 0.8, "component", 1)}
+        # Dependent components (ParaView's separate opacity array): the first is the scalar, whatever
+        # the vector mode says.
+        dependent = scaled_property(self.prop, 0.6, "magnitude")
+        dependent.IndependentComponentsOff()
+        self.selections["dependent, first component"] = dependent
 
     def renderers(self):
         tetrahedra = split(self.mesh)
