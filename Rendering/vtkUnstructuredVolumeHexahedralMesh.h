@@ -1,7 +1,8 @@
 // The hexahedra of any vtkDataSet as vtkHexahedralRayCastMapper's passes read them: 8 point ids per
 // cell, the recentred points with the normalised point scalar (vtkUnstructuredVolumePointData.h) or
 // one normalised value per cell for cell data, face adjacency and boundary faces (uvHexahedralMesh.h),
-// rebuilt only when the input or its scalar changes. Reads VTK data through the generic cell API, so no input type needs a conversion.
+// rebuilt only when the input or its scalar changes. Reads VTK data through the generic cell API,
+// so no input type needs a conversion.
 #ifndef vtkUnstructuredVolumeHexahedralMesh_h
 #define vtkUnstructuredVolumeHexahedralMesh_h
 

@@ -75,35 +75,31 @@ bool IsPolygonalCell(int type)
 vtkSmartPointer<vtkDataSet> PolygonalCellsAsTetrahedra(vtkDataSet* input)
 {
   auto* grid = vtkUnstructuredGrid::SafeDownCast(input); // the only type that holds such cells
+  bool any = false;
+  for (vtkIdType c = 0; grid && c < grid->GetNumberOfCells() && !any; ++c)
+    any = IsPolygonalCell(grid->GetCellType(c));
+  if (!any)
+    return input; // the common case: nothing copied
   std::vector<vtkIdType> others;
   vtkNew<vtkUnstructuredGrid> polygonal; // those cells over all the input's points
-  polygonal->SetPoints(grid ? grid->GetPoints() : nullptr);
+  polygonal->SetPoints(grid->GetPoints());
   polygonal->GetPointData()->ShallowCopy(input->GetPointData());
   polygonal->GetCellData()->CopyAllocate(input->GetCellData());
-  vtkNew<vtkIdList> faces;
-  for (vtkIdType c = 0; grid && c < grid->GetNumberOfCells(); ++c)
+  vtkNew<vtkIdList> ids; // a cell's points, or a polyhedron's face stream
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
   {
     if (!IsPolygonalCell(grid->GetCellType(c)))
     {
       others.push_back(c);
       continue;
     }
-    vtkIdType cell;
     if (grid->GetCellType(c) == VTK_POLYHEDRON)
-    {
-      grid->GetFaceStream(c, faces);
-      cell = polygonal->InsertNextCell(VTK_POLYHEDRON, faces);
-    }
+      grid->GetFaceStream(c, ids);
     else
-    {
-      vtkNew<vtkIdList> ids;
       grid->GetCellPoints(c, ids);
-      cell = polygonal->InsertNextCell(grid->GetCellType(c), ids);
-    }
-    polygonal->GetCellData()->CopyData(input->GetCellData(), c, cell);
+    polygonal->GetCellData()->CopyData(
+      input->GetCellData(), c, polygonal->InsertNextCell(grid->GetCellType(c), ids));
   }
-  if (!grid || polygonal->GetNumberOfCells() == 0)
-    return input;
   vtkNew<vtkHexahedraToTetrahedra> split;
   split->SetInputData(polygonal);
   split->Update();
@@ -113,7 +109,6 @@ vtkSmartPointer<vtkDataSet> PolygonalCellsAsTetrahedra(vtkDataSet* input)
   result->GetPointData()->ShallowCopy(tets->GetPointData());
   result->Allocate(static_cast<vtkIdType>(others.size()) + tets->GetNumberOfCells());
   result->GetCellData()->CopyAllocate(input->GetCellData());
-  vtkNew<vtkIdList> ids;
   for (vtkIdType c : others)
   {
     grid->GetCellPoints(c, ids);

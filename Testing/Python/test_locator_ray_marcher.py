@@ -2,10 +2,15 @@
 forms: constant media in (curvilinear) cubes, a linear scalar with linear extinction, overlapping
 cells, step halving and bad input. No render window needed."""
 import math
+import os
 import random
+import sys
 import unittest
 
-from unstructuredvolume import vtkHexahedraToTetrahedra, vtkLocatorRayMarcher
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fixtures  # noqa: E402
+
+from unstructuredvolume import vtkHexahedraToTetrahedra, vtkLocatorRayMarcher  # noqa: E402
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkFloatArray, vtkIdTypeArray, vtkPoints
@@ -164,20 +169,9 @@ class Messages:
 
 
 def march(mesh, prop, camera, steps, pixels=None, name="s", size=SIZE):
-    marcher = vtkLocatorRayMarcher()
-    marcher.SetInputData(mesh)
-    if name:
-        marcher.SetScalarArrayName(name)
-    marcher.SetVolumeProperty(prop)
-    marcher.SetCamera(camera)
-    marcher.SetImageSize(size, size)
-    marcher.SetNumberOfSteps(steps)
-    ids = vtkIdTypeArray()
-    for p in (range(size * size) if pixels is None else pixels):
-        ids.InsertNextValue(p)
-    rgba = vtkFloatArray()
-    assert marcher.MarchPixels(ids, rgba)
-    return {ids.GetValue(i): rgba.GetTuple4(i) for i in range(ids.GetNumberOfTuples())}
+    """fixtures.march over `pixels` (default: every pixel) as a dict pixel -> RGBA."""
+    pixels = list(range(size * size) if pixels is None else pixels)
+    return dict(zip(pixels, fixtures.march(mesh, prop, camera, size, pixels, steps, name)))
 
 
 def composite(pieces):
