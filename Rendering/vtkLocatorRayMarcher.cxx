@@ -244,9 +244,13 @@ bool StrictlyInside(vtkCell* cell, const double pcoords[3], const double x[3])
     case VTK_QUADRATIC_WEDGE:
     case VTK_QUADRATIC_LINEAR_WEDGE:
     case VTK_BIQUADRATIC_QUADRATIC_WEDGE:
+    case VTK_LAGRANGE_WEDGE:
+    case VTK_BEZIER_WEDGE:
       return pcoords[0] + pcoords[1] <= 1.0;
     case VTK_TETRA:
     case VTK_QUADRATIC_TETRA:
+    case VTK_LAGRANGE_TETRAHEDRON:
+    case VTK_BEZIER_TETRAHEDRON:
       // vtkTetra's parametric distance looks at r, s, t only, not at 1 - r - s - t.
       return pcoords[0] + pcoords[1] + pcoords[2] <= 1.0;
     case VTK_PENTAGONAL_PRISM:
@@ -256,6 +260,85 @@ bool StrictlyInside(vtkCell* cell, const double pcoords[3], const double x[3])
     default:
       return true;
   }
+}
+
+/// Grows a higher-order cell's bounds (of its points) to its shape sampled densely over its
+/// parametric box, padded by a twentieth of its size; returns how far they grew.
+double ExtendToSampledShape(vtkCell* cell, double bounds[6])
+{
+  const double original[6] = { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] };
+  std::vector<double> weights(static_cast<std::size_t>(cell->GetNumberOfPoints()));
+  constexpr int N = 8;
+  for (int i = 0; i <= N; ++i)
+    for (int j = 0; j <= N; ++j)
+      for (int k = 0; k <= N; ++k)
+      {
+        double pcoords[3] = { double(i) / N, double(j) / N, double(k) / N }, x[3];
+        int subId = 0;
+        cell->EvaluateLocation(subId, pcoords, x, weights.data());
+        if (!StrictlyInside(cell, pcoords, x))
+          continue; // outside a simplex's or a wedge's domain the map extrapolates
+        for (int a = 0; a < 3; ++a)
+        {
+          bounds[2 * a] = std::min(bounds[2 * a], x[a]);
+          bounds[2 * a + 1] = std::max(bounds[2 * a + 1], x[a]);
+        }
+      }
+  const double size = std::sqrt(
+    (bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) + (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  double grown = 0.0;
+  for (int a = 0; a < 6; ++a)
+  {
+    bounds[a] += (a % 2 ? 1.0 : -1.0) * 0.05 * size;
+    grown = std::max(grown, std::abs(bounds[a] - original[a]));
+  }
+  return grown;
+}
+
+/// A higher-order cell's pcoords of x by Newton from `pcoords`, through VTK's shape functions, and
+/// the weights there; false if it does not converge. VTK's own EvaluatePosition stops at a loose
+/// tolerance (seen as field error) and gives up near curved faces (seen as lost matter).
+bool SolveParametricCoordinates(vtkCell* cell, const double x[3], double pcoords[3], double* weights)
+{
+  const int n = cell->GetNumberOfPoints();
+  std::vector<double> derivatives(3 * static_cast<std::size_t>(n));
+  for (int iteration = 0; iteration < 40; ++iteration)
+  {
+    cell->InterpolateFunctions(pcoords, weights);
+    cell->InterpolateDerivs(pcoords, derivatives.data());
+    double residual[3] = { -x[0], -x[1], -x[2] }, columns[3][3] = {};
+    for (int k = 0; k < n; ++k)
+    {
+      double p[3];
+      cell->GetPoints()->GetPoint(k, p);
+      for (int i = 0; i < 3; ++i)
+      {
+        residual[i] += weights[k] * p[i];
+        for (int d = 0; d < 3; ++d)
+          columns[d][i] += derivatives[d * n + k] * p[i];
+      }
+    }
+    double jacobian[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int d = 0; d < 3; ++d)
+        jacobian[i][d] = columns[d][i];
+    double* rows[3] = { jacobian[0], jacobian[1], jacobian[2] };
+    if (vtkMath::SolveLinearSystem(rows, residual, 3) == 0) // residual becomes the step
+      return false;
+    const double longest = std::max({ std::abs(residual[0]), std::abs(residual[1]), std::abs(residual[2]) });
+    const double scale = longest > 0.5 ? 0.5 / longest : 1.0; // a damped start far from x
+    for (int i = 0; i < 3; ++i)
+      pcoords[i] -= scale * residual[i];
+    if (cell->GetParametricDistance(pcoords) > 1.0)
+      return false; // far outside: x is not in the cell
+    if (longest < 1e-13)
+    {
+      cell->InterpolateFunctions(pcoords, weights);
+      return true;
+    }
+  }
+  return false;
 }
 
 /// One component of every tuple, or (component -1) the tuple's Euclidean norm.
@@ -331,6 +414,7 @@ struct MarchPixelsWorker
   double InverseProjection[16];
   double Bounds[6];
   double Pad; // 1e-9 of the bounds' diagonal: query boxes, cell-bounds tests, membership shift
+  double Reach; // how far past a cell's points it may reach (curved cells), at least Pad
   int Width, Height, Steps;
   const vtkIdType* Pixels;
   float* Output;
@@ -369,8 +453,9 @@ struct MarchPixelsWorker
     vtkGenericCell* cell = this->Cells.Local();
     vtkIdList* candidates = this->Candidates.Local();
     std::vector<double>& weights = this->Weights.Local();
-    double box[6] = { x[0] - this->Pad, x[0] + this->Pad, x[1] - this->Pad, x[1] + this->Pad,
-      x[2] - this->Pad, x[2] + this->Pad };
+    // The locator bins cells by their points' bounds, which a curved cell bulges past.
+    double box[6] = { x[0] - this->Reach, x[0] + this->Reach, x[1] - this->Reach, x[1] + this->Reach,
+      x[2] - this->Reach, x[2] + this->Reach };
     this->Locator->FindCellsWithinBounds(box, candidates);
     int found = 0;
     const vtkIdType n = candidates->GetNumberOfIds();
@@ -384,8 +469,17 @@ struct MarchPixelsWorker
       this->Input->GetCell(cellId, cell);
       double closest[3], pcoords[3], dist2;
       int subId = 0;
-      if (cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) != 1 ||
-        !StrictlyInside(cell, pcoords, x))
+      const int status = cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data());
+      bool contains = status == 1;
+      if (!cell->IsLinear())
+      {
+        if (status == 0 && cell->GetParametricDistance(pcoords) > 0.01)
+          continue; // VTK's Newton converged well outside
+        if (status == -1)
+          cell->GetParametricCenter(pcoords); // it gave up (seen near curved faces)
+        contains = SolveParametricCoordinates(cell, x, pcoords, weights.data());
+      }
+      if (!contains || !StrictlyInside(cell, pcoords, x))
       {
         continue;
       }
@@ -665,9 +759,17 @@ void vtkLocatorRayMarcher::UpdateLocator()
   this->Locator->BuildLocator();
   const vtkIdType numberOfCells = this->Input->GetNumberOfCells();
   this->CellBounds.assign(static_cast<std::size_t>(6 * numberOfCells), 0.0);
+  this->CurvedReach = 0.0;
+  vtkNew<vtkGenericCell> cell;
   for (vtkIdType i = 0; i < numberOfCells; ++i)
   {
-    this->Input->GetCellBounds(i, this->CellBounds.data() + 6 * i);
+    double* bounds = this->CellBounds.data() + 6 * i;
+    this->Input->GetCellBounds(i, bounds);
+    this->Input->GetCell(i, cell);
+    if (!cell->IsLinear())
+    {
+      this->CurvedReach = std::max(this->CurvedReach, ExtendToSampledShape(cell, bounds));
+    }
   }
   this->LocatorBuildTime.Modified();
 }
@@ -770,6 +872,11 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
   const double dx = worker.Bounds[1] - worker.Bounds[0], dy = worker.Bounds[3] - worker.Bounds[2],
                dz = worker.Bounds[5] - worker.Bounds[4];
   worker.Pad = 1e-9 * std::sqrt(dx * dx + dy * dy + dz * dz);
+  worker.Reach = std::max(worker.Pad, this->CurvedReach);
+  for (int i = 0; i < 6; ++i)
+  {
+    worker.Bounds[i] += (i % 2 ? 1.0 : -1.0) * this->CurvedReach;
+  }
   worker.Width = width;
   worker.Height = height;
   worker.Steps = this->NumberOfSteps;

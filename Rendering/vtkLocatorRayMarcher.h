@@ -119,7 +119,8 @@ protected:
 
   vtkSmartPointer<vtkStaticCellLocator> Locator; // holds the input it was built for
   vtkTimeStamp LocatorBuildTime;
-  std::vector<double> CellBounds; // 6 per cell, from the locator's input
+  std::vector<double> CellBounds; // 6 per cell, from the locator's input (curved cells: their shape's)
+  double CurvedReach = 0.0;       // how far curved cells reach past their points' bounds
 
 private:
   vtkLocatorRayMarcher(const vtkLocatorRayMarcher&) = delete;

@@ -1,6 +1,7 @@
 #include "vtkUnstructuredVolumeReferenceRenderer.h"
 
 #include "uvChebyshevSeries.h"
+#include "uvCurvedCell.h"
 #include "uvLinearCellSplit.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
@@ -17,13 +18,23 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
+#include "vtkLagrangeInterpolation.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPNGWriter.h"
 #include "vtkCellData.h"
 #include "vtkPointData.h"
+#include "vtkBiQuadraticQuadraticHexahedron.h"
+#include "vtkBiQuadraticQuadraticWedge.h"
+#include "vtkQuadraticHexahedron.h"
+#include "vtkQuadraticLinearWedge.h"
+#include "vtkQuadraticPyramid.h"
+#include "vtkQuadraticTetra.h"
+#include "vtkQuadraticWedge.h"
 #include "vtkSmartPointer.h"
+#include "vtkTriQuadraticHexahedron.h"
+#include "vtkTriQuadraticPyramid.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -33,6 +44,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <vector>
 
 vtkStandardNewMacro(vtkUnstructuredVolumeReferenceRenderer);
@@ -45,7 +57,103 @@ struct Cell
 {
   const uv::IsoparametricShape* Shape; // null for a tetrahedron (linear, clipped by planes)
   std::int64_t Ids[8];
+  std::int32_t Curved = -1; // a higher-order cell: its index in Mesh::Curved (Shape and Ids unused)
   int Corners() const { return this->Shape ? this->Shape->Corners : 4; }
+};
+
+/// The shape functions of VTK's higher-order 3D cells, through VTK's own static functions (no cell
+/// object: the reference calls them from every thread at once).
+struct CurvedShapeFunctions
+{
+  int Type = VTK_EMPTY_CELL;
+  int Nodes = 0;
+  int Order[3] = { 0, 0, 0 }; // Lagrange cells
+
+  explicit operator bool() const { return this->Type != VTK_EMPTY_CELL; }
+
+  void operator()(const glm::dvec3& xi, double* weights, double* derivatives) const
+  {
+    const double p[3] = { xi.x, xi.y, xi.z };
+    switch (this->Type)
+    {
+#define UV_STATIC_SHAPE(TYPE, CLASS)                                                                               \
+  case TYPE:                                                                                                       \
+    CLASS::InterpolationFunctions(p, weights);                                                                     \
+    CLASS::InterpolationDerivs(p, derivatives);                                                                    \
+    return;
+      UV_STATIC_SHAPE(VTK_QUADRATIC_TETRA, vtkQuadraticTetra)
+      UV_STATIC_SHAPE(VTK_QUADRATIC_HEXAHEDRON, vtkQuadraticHexahedron)
+      UV_STATIC_SHAPE(VTK_TRIQUADRATIC_HEXAHEDRON, vtkTriQuadraticHexahedron)
+      UV_STATIC_SHAPE(VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON, vtkBiQuadraticQuadraticHexahedron)
+      UV_STATIC_SHAPE(VTK_QUADRATIC_WEDGE, vtkQuadraticWedge)
+      UV_STATIC_SHAPE(VTK_QUADRATIC_LINEAR_WEDGE, vtkQuadraticLinearWedge)
+      UV_STATIC_SHAPE(VTK_BIQUADRATIC_QUADRATIC_WEDGE, vtkBiQuadraticQuadraticWedge)
+      UV_STATIC_SHAPE(VTK_QUADRATIC_PYRAMID, vtkQuadraticPyramid)
+      UV_STATIC_SHAPE(VTK_TRIQUADRATIC_PYRAMID, vtkTriQuadraticPyramid)
+#undef UV_STATIC_SHAPE
+      case VTK_LAGRANGE_HEXAHEDRON:
+        vtkLagrangeInterpolation::Tensor3ShapeFunctions(this->Order, p, weights);
+        vtkLagrangeInterpolation::Tensor3ShapeDerivatives(this->Order, p, derivatives);
+        return;
+      case VTK_LAGRANGE_WEDGE:
+        vtkLagrangeInterpolation::WedgeShapeFunctions(this->Order, this->Nodes, p, weights);
+        vtkLagrangeInterpolation::WedgeShapeDerivatives(this->Order, this->Nodes, p, derivatives);
+        return;
+      default:
+        return;
+    }
+  }
+};
+
+struct CurvedType
+{
+  int Type, Nodes;
+  uv::CellFamily Family;
+};
+constexpr CurvedType CurvedTypes[] = { { VTK_QUADRATIC_TETRA, 10, uv::CellFamily::Tetrahedron },
+  { VTK_QUADRATIC_HEXAHEDRON, 20, uv::CellFamily::Hexahedron },
+  { VTK_TRIQUADRATIC_HEXAHEDRON, 27, uv::CellFamily::Hexahedron },
+  { VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON, 24, uv::CellFamily::Hexahedron },
+  { VTK_QUADRATIC_WEDGE, 15, uv::CellFamily::Wedge }, { VTK_QUADRATIC_LINEAR_WEDGE, 12, uv::CellFamily::Wedge },
+  { VTK_BIQUADRATIC_QUADRATIC_WEDGE, 18, uv::CellFamily::Wedge },
+  { VTK_QUADRATIC_PYRAMID, 13, uv::CellFamily::Pyramid }, { VTK_TRIQUADRATIC_PYRAMID, 19, uv::CellFamily::Pyramid } };
+
+/// The shape functions of a higher-order cell of `type` with `nodes` points (a Lagrange cell's
+/// order follows from its point count), or an empty one for any other cell.
+CurvedShapeFunctions CurvedShapeFunctionsOf(int type, vtkIdType nodes, uv::CellFamily& family)
+{
+  CurvedShapeFunctions shape;
+  for (const CurvedType& curved : CurvedTypes)
+  {
+    if (curved.Type == type && curved.Nodes == nodes)
+    {
+      shape.Type = type;
+      shape.Nodes = curved.Nodes;
+      family = curved.Family;
+    }
+  }
+  for (int order = 1; order <= 3 && !shape; ++order)
+  {
+    const bool hexahedron = type == VTK_LAGRANGE_HEXAHEDRON && nodes == (order + 1) * (order + 1) * (order + 1);
+    const bool wedge = type == VTK_LAGRANGE_WEDGE && nodes == (order + 1) * (order + 2) / 2 * (order + 1);
+    if (hexahedron || wedge)
+    {
+      shape.Type = type;
+      shape.Nodes = static_cast<int>(nodes);
+      shape.Order[0] = shape.Order[1] = shape.Order[2] = order;
+      family = hexahedron ? uv::CellFamily::Hexahedron : uv::CellFamily::Wedge;
+    }
+  }
+  return shape;
+}
+
+using CurvedCell = uv::CurvedCell<CurvedShapeFunctions>;
+
+struct CurvedCellNodes
+{
+  uv::CellFamily Family;
+  CurvedShapeFunctions Shape;
+  std::size_t First; // in Mesh::CurvedIds
 };
 
 const uv::IsoparametricShape* ShapeOf(int type)
@@ -132,6 +240,8 @@ struct Mesh
   std::vector<double> CellValues; // per input cell (cell scalar), else empty
   std::vector<Cell> Cells;
   std::vector<double> CellScalar; // per entry of Cells, for a cell scalar
+  std::vector<CurvedCellNodes> Curved;
+  std::vector<std::int64_t> CurvedIds;
   std::vector<uv::BoundingVolumeHierarchy::Box> Boxes;
   vtkIdType NotThreeDimensional = 0;
   vtkIdType NonFinite = 0;
@@ -159,6 +269,21 @@ struct Mesh
       this->CellValues[c] = scalar(static_cast<vtkIdType>(c));
   }
 
+  /// A higher-order cell's nodes, values (of a point scalar) and shape functions.
+  CurvedCell MakeCurved(const Cell& cell) const
+  {
+    const CurvedCellNodes& curved = this->Curved[cell.Curved];
+    glm::dvec3 positions[CurvedCell::MaximumNodes];
+    double values[CurvedCell::MaximumNodes];
+    for (int k = 0; k < curved.Shape.Nodes; ++k)
+    {
+      const std::int64_t id = this->CurvedIds[curved.First + k];
+      positions[k] = this->Points[id];
+      values[k] = this->OnCells() ? 0.0 : this->Values[id];
+    }
+    return CurvedCell(curved.Family, curved.Shape, curved.Shape.Nodes, positions, values);
+  }
+
   /// Collects the 3D cells; false at the first cell type it cannot take (Unsupported says which).
   bool LoadCells(vtkDataSet* input)
   {
@@ -167,6 +292,14 @@ struct Mesh
     for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
     {
       const int type = input->GetCellType(c);
+      input->GetCellPoints(c, ids);
+      uv::CellFamily family;
+      const CurvedShapeFunctions curved = CurvedShapeFunctionsOf(type, ids->GetNumberOfIds(), family);
+      if (curved)
+      {
+        this->AddCurved(c, family, curved, ids);
+        continue;
+      }
       if (type != VTK_TETRA && !ShapeOf(type))
       {
         probe->SetCellType(type);
@@ -178,7 +311,6 @@ struct Mesh
         this->Unsupported = c;
         return false;
       }
-      input->GetCellPoints(c, ids);
       Cell cell{ ShapeOf(type), {} };
       uv::BoundingVolumeHierarchy::Box box;
       bool finite = !this->OnCells() || std::isfinite(this->CellValues[c]);
@@ -201,12 +333,56 @@ struct Mesh
     }
     return true;
   }
+
+private:
+  void AddCurved(vtkIdType c, uv::CellFamily family, const CurvedShapeFunctions& shape, vtkIdList* ids)
+  {
+    bool finite = !this->OnCells() || std::isfinite(this->CellValues[c]);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      finite = finite && (this->OnCells() || std::isfinite(this->Values[ids->GetId(k)]));
+    if (!finite)
+    {
+      ++this->NonFinite;
+      return;
+    }
+    Cell cell{ nullptr, {}, static_cast<std::int32_t>(this->Curved.size()) };
+    this->Curved.push_back({ family, shape, this->CurvedIds.size() });
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      this->CurvedIds.push_back(ids->GetId(k));
+    this->Cells.push_back(cell);
+    this->Boxes.push_back(CurvedBox(this->MakeCurved(cell), family));
+    if (this->OnCells())
+      this->CellScalar.push_back(this->CellValues[c]);
+  }
+
+  /// A box holding the curved cell: its map sampled densely over the parametric domain, padded
+  /// (the map may bulge past its nodes, and between the samples).
+  static uv::BoundingVolumeHierarchy::Box CurvedBox(const CurvedCell& cell, uv::CellFamily family)
+  {
+    constexpr int N = 8;
+    uv::BoundingVolumeHierarchy::Box box;
+    for (int i = 0; i <= N; ++i)
+      for (int j = 0; j <= N; ++j)
+        for (int k = 0; k <= N; ++k)
+        {
+          const glm::dvec3 xi(double(i) / N, double(j) / N, double(k) / N);
+          if (uv::InFamilyDomain(family, xi, 0.0))
+          {
+            const glm::dvec3 x = cell.Point(xi);
+            box.Add({ x, x });
+          }
+        }
+    const glm::dvec3 pad(0.02 * cell.Diameter());
+    box.Add({ box.Low - pad, box.High + pad });
+    return box;
+  }
 };
 
 struct Segment
 {
   uv::Interval Span;
   std::int64_t Cell;
+  glm::dvec3 Xi[2]; // a higher-order cell's parametric coordinates at the ends: Newton's start
 };
 
 /// The scalar along one segment of a ray: the cell's value for a cell scalar; linear in a
@@ -226,6 +402,11 @@ public:
       return;
     }
     const Cell& cell = mesh.Cells[segment.Cell];
+    if (cell.Curved >= 0)
+    {
+      this->FitCurved(mesh.MakeCurved(cell), segment);
+      return;
+    }
     for (int k = 0; k < cell.Corners(); ++k)
     {
       this->P[k] = mesh.Points[cell.Ids[k]];
@@ -251,7 +432,7 @@ public:
 
   double operator()(double t) const
   {
-    if (!this->Shape)
+    if (!this->Shape && !this->Curved)
     {
       return this->S0 + (this->S1 - this->S0) * (t - this->T0) / (this->T1 - this->T0);
     }
@@ -264,13 +445,33 @@ private:
   double Exact(double t) const
   {
     glm::dvec3 xi = this->Xi0 + (this->Xi1 - this->Xi0) * ((t - this->T0) / (this->T1 - this->T0));
+    if (this->Curved)
+    {
+      this->Curved->Inverse(this->At(t), xi);
+      return this->Curved->Scalar(xi);
+    }
     uv::InverseIsoparametric(*this->Shape, this->P, this->At(t), xi);
     return uv::IsoparametricScalar(*this->Shape, this->F, xi);
+  }
+
+  /// A higher-order cell's field along the segment, fitted as for the linear isoparametric cells.
+  void FitCurved(const CurvedCell& cell, const Segment& segment)
+  {
+    this->Curved.emplace(cell);
+    this->Xi0 = segment.Xi[0];
+    this->Xi1 = segment.Xi[1];
+    this->Curved->Inverse(this->At(this->T0), this->Xi0);
+    this->Curved->Inverse(this->At(this->T1), this->Xi1);
+    double magnitude = 1.0;
+    for (int k = 0; k < 2; ++k)
+      magnitude = std::max(magnitude, 1.0 + std::abs(this->Curved->Scalar(k ? this->Xi1 : this->Xi0)));
+    this->Fitted = this->Series.Fit([this](double t) { return this->Exact(t); }, this->T0, this->T1, 1e-12 * magnitude);
   }
 
   uv::Ray Ray;
   double T0, T1, S0 = 0.0, S1 = 0.0;
   const uv::IsoparametricShape* Shape = nullptr;
+  std::optional<CurvedCell> Curved;
   glm::dvec3 P[8];
   double F[8] = {};
   glm::dvec3 Xi0{ 0.0 }, Xi1{ 0.0 };
@@ -283,6 +484,8 @@ struct RayScratch
 {
   std::vector<Segment> Segments;
   std::vector<uv::Interval> Parts;
+  std::vector<std::array<glm::dvec3, 2>> PartsXi; // of a higher-order cell's parts
+  std::vector<CurvedCell::Hit> CurvedHits;
   std::vector<double> Hits;
   std::vector<double> Events;
   std::vector<SegmentScalar> Scalars;                              // of a run of overlapping segments
@@ -344,12 +547,19 @@ private:
     scratch.Segments.clear();
     this->Hierarchy.Traverse(ray, [&](std::int64_t index) {
       const Cell& cell = this->TheMesh.Cells[index];
+      scratch.Parts.clear();
+      scratch.PartsXi.clear();
+      if (cell.Curved >= 0)
+      {
+        this->TheMesh.MakeCurved(cell).Intersect(ray, scratch.Parts, scratch.PartsXi, scratch.CurvedHits);
+        this->KeepParts(index, scratch);
+        return;
+      }
       glm::dvec3 p[8];
       for (int k = 0; k < cell.Corners(); ++k)
       {
         p[k] = this->TheMesh.Points[cell.Ids[k]];
       }
-      scratch.Parts.clear();
       if (cell.Shape)
       {
         uv::IntersectIsoparametric(*cell.Shape, ray, p, cell.Ids, scratch.Parts, scratch.Hits);
@@ -362,15 +572,24 @@ private:
           scratch.Parts.push_back(span);
         }
       }
-      for (uv::Interval part : scratch.Parts)
-      {
-        part.Enter = std::max(part.Enter, 0.0);
-        if (part.Exit > part.Enter)
-        {
-          scratch.Segments.push_back({ part, index });
-        }
-      }
+      this->KeepParts(index, scratch);
     });
+  }
+
+  /// The cell's parts at t >= 0 become segments.
+  static void KeepParts(std::int64_t index, RayScratch& scratch)
+  {
+    for (std::size_t i = 0; i < scratch.Parts.size(); ++i)
+    {
+      uv::Interval part = scratch.Parts[i];
+      part.Enter = std::max(part.Enter, 0.0);
+      if (part.Exit > part.Enter)
+      {
+        const bool curved = i < scratch.PartsXi.size();
+        scratch.Segments.push_back({ part, index,
+          { curved ? scratch.PartsXi[i][0] : glm::dvec3(0.0), curved ? scratch.PartsXi[i][1] : glm::dvec3(0.0) } });
+      }
+    }
   }
 
   /// Segments [first, last) overlap: between consecutive end points the cells present superpose.
@@ -556,7 +775,8 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   if (!mesh.LoadCells(input))
   {
     vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges, pyramids, "
-                  "pentagonal and hexagonal prisms and polyhedra; a cell is a "
+                  "pentagonal and hexagonal prisms, polyhedra, quadratic and triquadratic cells, and Lagrange "
+                  "hexahedra and wedges up to order 3; a cell is a "
       << vtkCellTypes::GetClassNameFromTypeId(input->GetCellType(mesh.Unsupported)) << ".");
     return false;
   }
