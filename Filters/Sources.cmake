@@ -13,6 +13,7 @@ endforeach ()
 set(uv_filters_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/uvAnalyticMesh.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvCellGradient.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvIsoparametricLattice.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvLinearCellSplit.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvPolyhedronSplit.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvVertexCellLinks.h")
