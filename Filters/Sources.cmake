@@ -2,6 +2,7 @@
 set(uv_filters_classes
   vtkAnalyticMeshSource
   vtkHexahedraToTetrahedra
+  vtkHigherOrderSubdivision
   vtkVertexGradientFilter)
 set(uv_filters_sources)
 set(uv_filters_headers)
