@@ -2,6 +2,7 @@
 set(uv_filters_classes
   vtkAnalyticMeshSource
   vtkHexahedraToTetrahedra
+  vtkHigherOrderSubdivision
   vtkVertexGradientFilter)
 set(uv_filters_sources)
 set(uv_filters_headers)
@@ -13,6 +14,7 @@ endforeach ()
 set(uv_filters_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/uvAnalyticMesh.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvCellGradient.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvIsoparametricLattice.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvLinearCellSplit.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvPolyhedronSplit.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvVertexCellLinks.h")

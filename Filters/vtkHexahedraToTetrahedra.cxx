@@ -2,11 +2,14 @@
 
 #include "uvLinearCellSplit.h"
 #include "uvPolyhedronSplit.h"
+#include "vtkHigherOrderSubdivision.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkCellTypes.h"
+#include "vtkCommand.h"
 #include "vtkAbstractArray.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
@@ -110,6 +113,11 @@ std::array<int, 256> ClassifyCellTypes(vtkDataSet* input, int splitMode, std::ve
       if (type == VTK_EMPTY_CELL)
       {
         tets = DroppedCell;
+      }
+      else if (type == VTK_LAGRANGE_PYRAMID || type == VTK_BEZIER_PYRAMID ||
+        (type >= VTK_HIGHER_ORDER_TETRAHEDRON && type <= VTK_HIGHER_ORDER_HEXAHEDRON))
+      {
+        unsupported.push_back(type); // 3D, though VTK 9.1's probe would stand an empty cell in
       }
       else
       {
@@ -584,8 +592,9 @@ bool CountUnstructuredTets(vtkDataSet* input, int splitMode, std::vector<vtkIdTy
   {
     error = std::string("Input has 3D cells that cannot be split (first type: ") +
       vtkCellTypes::GetClassNameFromTypeId(unsupported.front()) +
-      "). Only linear tetrahedra, hexahedra, voxels, wedges, pyramids, pentagonal and hexagonal prisms "
-      "and polyhedra are supported; linearize higher-order cells first (e.g. with vtkTessellatorFilter).";
+      "). Linear tetrahedra, hexahedra, voxels, wedges, pyramids, pentagonal and hexagonal prisms "
+      "and polyhedra are split, and the higher-order cells vtkHigherOrderSubdivision takes are subdivided "
+      "first; Lagrange and Bezier pyramids are neither.";
     return false;
   }
   firstTet.resize(numCells + 1);
@@ -643,6 +652,47 @@ void PassCellData(vtkCellData* inCellData, vtkCellData* outCellData, const vtkId
   });
   outCellData->CopyData(inCellData, fromIds, toIds);
 }
+/// True when the input holds a cell that vtkHigherOrderSubdivision must linearize first.
+bool HasHigherOrderCells(vtkDataSet* input)
+{
+  if (!vtkUnstructuredGrid::SafeDownCast(input))
+  {
+    return false; // structured data sets hold linear cells only
+  }
+  const vtkIdType numCells = input->GetNumberOfCells();
+  for (vtkIdType cell = 0; cell < numCells; ++cell)
+  {
+    if (vtkHigherOrderSubdivision::IsSubdividedCellType(input->GetCellType(cell)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Reports an inner filter's error or warning as the outer filter's own (without the inner's prefix).
+void ForwardMessage(vtkObject*, unsigned long event, void* clientData, void* callData)
+{
+  auto* self = static_cast<vtkHexahedraToTetrahedra*>(clientData);
+  std::string text = callData ? static_cast<const char*>(callData) : "";
+  const std::size_t prefix = text.find("): ");
+  if (prefix != std::string::npos)
+  {
+    text = text.substr(prefix + 3);
+  }
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+  {
+    text.pop_back();
+  }
+  if (event == vtkCommand::ErrorEvent)
+  {
+    vtkErrorWithObjectMacro(self, << text);
+  }
+  else
+  {
+    vtkWarningWithObjectMacro(self, << text);
+  }
+}
 } // namespace
 
 vtkHexahedraToTetrahedra::vtkHexahedraToTetrahedra() = default;
@@ -663,6 +713,52 @@ int vtkHexahedraToTetrahedra::RequestData(
     return 0;
   }
   output->Initialize();
+  return HasHigherOrderCells(input) ? this->SubdivideAndSplit(input, output) : this->SplitLinear(input, output);
+}
+
+int vtkHexahedraToTetrahedra::SubdivideAndSplit(vtkDataSet* input, vtkUnstructuredGrid* output)
+{
+  vtkNew<vtkHigherOrderSubdivision> subdivision;
+  subdivision->SetFieldTolerance(this->FieldTolerance);
+  subdivision->SetChordTolerance(this->ChordTolerance);
+  subdivision->SetMaximumLevel(this->MaximumLevel);
+  subdivision->SetLevel(this->Level);
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(this);
+  forward->SetCallback(ForwardMessage);
+  subdivision->AddObserver(vtkCommand::ErrorEvent, forward);
+  subdivision->AddObserver(vtkCommand::WarningEvent, forward);
+  auto copy = vtkSmartPointer<vtkDataSet>::Take(input->NewInstance());
+  copy->ShallowCopy(input); // the filter's own input stays out of the inner pipeline
+  subdivision->SetInputData(copy);
+  subdivision->Update();
+  vtkUnstructuredGrid* linear = subdivision->GetOutput();
+  if (linear->GetNumberOfCells() == 0)
+  {
+    return 1; // nothing 3D, or cells the subdivision refused (it said why)
+  }
+  // The subdivision's ids name the input's cells; the split's name the subdivision's.
+  vtkNew<vtkIdTypeArray> inputIds;
+  inputIds->DeepCopy(linear->GetCellData()->GetArray("vtkOriginalCellIds"));
+  linear->GetCellData()->RemoveArray("vtkOriginalCellIds");
+  if (!this->SplitLinear(linear, output))
+  {
+    return 0;
+  }
+  auto ids = vtkIdTypeArray::SafeDownCast(output->GetCellData()->GetArray("vtkOriginalCellIds"));
+  vtkIdType* idData = ids->GetPointer(0);
+  const vtkIdType* inputIdData = inputIds->GetPointer(0);
+  vtkSMPTools::For(0, ids->GetNumberOfValues(), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType t = begin; t < end; ++t)
+    {
+      idData[t] = inputIdData[idData[t]];
+    }
+  });
+  return 1;
+}
+
+int vtkHexahedraToTetrahedra::SplitLinear(vtkDataSet* input, vtkUnstructuredGrid* output)
+{
   const vtkIdType numCells = input->GetNumberOfCells();
   if (numCells == 0 || input->GetNumberOfPoints() == 0)
   {
@@ -750,4 +846,8 @@ void vtkHexahedraToTetrahedra::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SplitMode: " << (this->SplitMode == FIVE_TETRAHEDRA ? "FiveTetrahedra" : "SixTetrahedra")
      << "\n";
+  os << indent << "FieldTolerance: " << this->FieldTolerance << "\n";
+  os << indent << "ChordTolerance: " << this->ChordTolerance << "\n";
+  os << indent << "MaximumLevel: " << this->MaximumLevel << "\n";
+  os << indent << "Level: " << this->Level << "\n";
 }

@@ -28,9 +28,15 @@
  *
  * Point data and field data pass through unchanged (extended by the centres, if any); cell data is
  * copied to every child tet; the output has a `vtkOriginalCellIds` cell array giving each tet's
- * input cell. 2D, 1D and vertex cells are dropped with one warning giving their count. Non-linear
- * cells (quadratic, Lagrange, Bezier) and other unsupported 3D cells are an error and produce an
- * empty output: linearize them first (e.g. vtkTessellatorFilter).
+ * input cell. 2D, 1D and vertex cells are dropped with one warning giving their count.
+ *
+ * Higher-order 3D cells (quadratic, triquadratic, Lagrange and Bezier tetrahedra, hexahedra and
+ * wedges, quadratic and triquadratic pyramids) are first subdivided into linear cells by
+ * vtkHigherOrderSubdivision, whose settings (FieldTolerance, ChordTolerance, MaximumLevel, Level) are
+ * forwarded from this filter with the same defaults and meaning; the linear cells are then split as
+ * above, and `vtkOriginalCellIds` still names the original input cell. The subdivision's messages are
+ * reported as this filter's. Other 3D cells (Lagrange and Bezier pyramids) are an error and produce
+ * an empty output.
  * Multithreaded with vtkSMPTools.
  */
 #ifndef vtkHexahedraToTetrahedra_h
@@ -38,6 +44,8 @@
 
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 #include "vtkUnstructuredGridAlgorithm.h"
+
+class vtkUnstructuredGrid;
 
 class VTKUNSTRUCTUREDVOLUME_EXPORT vtkHexahedraToTetrahedra : public vtkUnstructuredGridAlgorithm
 {
@@ -62,6 +70,22 @@ public:
   void SetSplitModeToFiveTetrahedra() { this->SetSplitMode(FIVE_TETRAHEDRA); }
   ///@}
 
+  ///@{
+  /**
+   * Settings of the subdivision of higher-order cells (see vtkHigherOrderSubdivision): field and
+   * chord tolerances relative to each component's range and each cell's diameter (default 1e-3), the
+   * highest automatic level (default 8), and a forced level (0, the default: automatic).
+   */
+  vtkSetClampMacro(FieldTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FieldTolerance, double);
+  vtkSetClampMacro(ChordTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ChordTolerance, double);
+  vtkSetClampMacro(MaximumLevel, int, 1, 16);
+  vtkGetMacro(MaximumLevel, int);
+  vtkSetClampMacro(Level, int, 0, 16);
+  vtkGetMacro(Level, int);
+  ///@}
+
 protected:
   vtkHexahedraToTetrahedra();
   ~vtkHexahedraToTetrahedra() override = default;
@@ -69,7 +93,16 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  /// The split of linear cells into `output`; 0 on an error.
+  int SplitLinear(vtkDataSet* input, vtkUnstructuredGrid* output);
+  /// Subdivides the higher-order cells of `input`, then splits the result into `output`.
+  int SubdivideAndSplit(vtkDataSet* input, vtkUnstructuredGrid* output);
+
   int SplitMode = SIX_TETRAHEDRA;
+  double FieldTolerance = 1e-3;
+  double ChordTolerance = 1e-3;
+  int MaximumLevel = 8;
+  int Level = 0;
 
 private:
   vtkHexahedraToTetrahedra(const vtkHexahedraToTetrahedra&) = delete;

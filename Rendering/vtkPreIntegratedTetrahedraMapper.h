@@ -34,8 +34,9 @@
  * there is no isosurface and shading is off.
  *
  * Input: tetrahedra are drawn as they are; other linear 3D cells (hexahedra, voxels, wedges,
- * pyramids) are split once by vtkHexahedraToTetrahedra, with a warning. Quadratic and other cells
- * are an error (nothing drawn). The scalar is selected as the base describes (point or cell array,
+ * pyramids) are split once by vtkHexahedraToTetrahedra, with a warning; higher-order cells are
+ * subdivided first at its default tolerances (vtkHigherOrderSubdivision; subdivide upstream to choose
+ * them), and cells it takes neither way are an error (nothing drawn). The scalar is selected as the base describes (point or cell array,
  * magnitude or component); a cell scalar gives each tetrahedron points of its own, so the segment
  * through it is constant and integrated exactly. Tetrahedra touching a NaN scalar are not drawn (one
  * warning). An empty grid draws nothing.

@@ -196,7 +196,7 @@ private:
       vtkUnstructuredGrid* tets = vtkUnstructuredGrid::SafeDownCast(split->GetOutputDataObject(0));
       if (!tets || tets->GetNumberOfCells() == 0)
       {
-        return "the input's cells cannot be split into tetrahedra (quadratic or other non-linear cells?)";
+        return "the input's cells cannot be split into tetrahedra (no 3D cells, or Lagrange or Bezier pyramids?)";
       }
       grid = tets;
       progress(0.5);

@@ -30,6 +30,7 @@
 #include <map>
 #include <numeric>
 #include <random>
+#include <set>
 
 namespace
 {
@@ -476,11 +477,81 @@ TEST(HexahedraToTetrahedra, EmptyAndUnsupportedInput)
   EXPECT_EQ(out->GetNumberOfCells(), 0);
   EXPECT_EQ(events->Errors + events->Warnings, 0);
 
-  vtkSmartPointer<vtkUnstructuredGrid> quadratic = uvtest::QuadraticTetraMesh();
-  out = Split(quadratic, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
-  EXPECT_EQ(events->Errors, 1);
-  EXPECT_NE(events->LastMessage.find("vtkQuadraticTetra"), std::string::npos) << events->LastMessage;
-  EXPECT_EQ(out->GetNumberOfCells(), 0);
+  // No VTK 9.1 class interpolates a Lagrange pyramid: an error alone, and beside a quadratic tet the
+  // subdivision's error, reported as ours.
+  vtkNew<vtkUnstructuredGrid> lagrange;
+  lagrange->SetPoints(uvtest::MixedMesh()->GetPoints());
+  const vtkIdType pyramid[5] = { 4, 5, 6, 7, 8 };
+  lagrange->InsertNextCell(VTK_LAGRANGE_PYRAMID, 5, pyramid);
+  for (bool withQuadraticTet : { false, true })
+  {
+    if (withQuadraticTet)
+    {
+      const vtkIdType tet[10] = { 0, 1, 3, 4, 1, 2, 3, 5, 6, 7 }; // any nodes: the error comes first
+      lagrange->InsertNextCell(VTK_QUADRATIC_TETRA, 10, tet);
+    }
+    out = Split(lagrange, vtkHexahedraToTetrahedra::SIX_TETRAHEDRA, &events);
+    EXPECT_EQ(events->Errors, 1);
+    EXPECT_NE(events->LastMessage.find("vtkLagrangePyramid"), std::string::npos) << events->LastMessage;
+    EXPECT_EQ(events->LastMessage.find("vtkHigherOrderSubdivision ("), std::string::npos) << events->LastMessage;
+    EXPECT_EQ(out->GetNumberOfCells(), 0);
+  }
+}
+
+TEST(HexahedraToTetrahedra, HigherOrderCellsAreSubdividedFirst)
+{
+  // The mixed mesh made quadratic and curved; its quad and line are dropped with one warning.
+  vtkSmartPointer<vtkUnstructuredGrid> quadratic = uvtest::Elevate(uvtest::MixedMesh(),
+    { { VTK_HEXAHEDRON, VTK_TRIQUADRATIC_HEXAHEDRON }, { VTK_WEDGE, VTK_BIQUADRATIC_QUADRATIC_WEDGE },
+      { VTK_PYRAMID, VTK_TRIQUADRATIC_PYRAMID }, { VTK_TETRA, VTK_QUADRATIC_TETRA } },
+    [](double* x) { x[2] += 0.1 * std::sin(x[0] + x[1]); });
+  for (int level : { 1, 3 })
+  {
+    SCOPED_TRACE(level);
+    vtkNew<vtkHexahedraToTetrahedra> filter;
+    uvtest::EventCounter* events = uvtest::WatchEvents(filter);
+    filter->SetLevel(level);
+    filter->SetInputData(quadratic);
+    filter->Update();
+    vtkUnstructuredGrid* tets = filter->GetOutput();
+    EXPECT_EQ(events->Errors, 0);
+    EXPECT_EQ(events->Warnings, 1);
+    EXPECT_NE(events->LastMessage.find("Dropped 2 cells"), std::string::npos) << events->LastMessage;
+    const uvtest::FaceCensus census = uvtest::CountFaces(tets);
+    EXPECT_EQ(census.Overshared, 0);
+    EXPECT_EQ(census.Boundary, uvtest::ExpectedSubdividedBoundaryTriangles(quadratic, level));
+    const std::vector<double> volumes = uvtest::TetVolumes(tets);
+    EXPECT_GT(*std::min_element(volumes.begin(), volumes.end()), 0.0);
+    // vtkOriginalCellIds names the quadratic input's cells, whose data each tet carries.
+    vtkDataArray* original = tets->GetCellData()->GetArray("vtkOriginalCellIds");
+    vtkDataArray* label = tets->GetCellData()->GetArray("label");
+    ASSERT_TRUE(original && label);
+    std::set<vtkIdType> cells;
+    for (vtkIdType t = 0; t < tets->GetNumberOfCells(); ++t)
+    {
+      cells.insert(static_cast<vtkIdType>(original->GetTuple1(t)));
+      EXPECT_EQ(label->GetTuple1(t), 10 + original->GetTuple1(t));
+    }
+    EXPECT_EQ(cells, (std::set<vtkIdType>{ 0, 1, 2, 3 }));
+    // Hexahedra give 6 tets, wedges 3, and the pyramid's sub-pyramids 2 beside its sub-tets.
+    vtkIdType subPyramids = 0, subTets = 0;
+    for (vtkIdType m = 1; m <= level; ++m)
+    {
+      subPyramids += m * m + (m - 1) * (m - 1);
+      subTets += 2 * m * (m - 1);
+    }
+    const vtkIdType cube = level * level * level;
+    EXPECT_EQ(tets->GetNumberOfCells(), 6 * cube + 3 * cube + cube + 2 * subPyramids + subTets);
+  }
+  // The automatic level at relaxed tolerances: no warning beyond the dropped cells.
+  vtkNew<vtkHexahedraToTetrahedra> relaxed;
+  uvtest::EventCounter* events = uvtest::WatchEvents(relaxed);
+  relaxed->SetFieldTolerance(0.05);
+  relaxed->SetChordTolerance(0.05);
+  relaxed->SetInputData(quadratic);
+  relaxed->Update();
+  EXPECT_EQ(events->Warnings, 1);
+  EXPECT_GT(relaxed->GetOutput()->GetNumberOfCells(), 6 + 3 + 1 + 2);
 }
 
 TEST(HexahedraToTetrahedra, SharedHexahedralMeshes)

@@ -4,6 +4,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCell.h"
+#include "vtkCellType.h"
 #include "vtkCommand.h"
 #include "vtkDataSet.h"
 #include "vtkGenericCell.h"
@@ -18,6 +19,8 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <cmath>
+#include <initializer_list>
 #include <array>
 #include <fstream>
 #include <map>
@@ -190,7 +193,155 @@ inline vtkSmartPointer<vtkUnstructuredGrid> MixedMesh()
   grid->GetCellData()->AddArray(label);
   return grid;
 }
-/// One quadratic tetrahedron (a cell type the project rejects), with a constant point scalar.
+/// Positions of a higher-order cell's nodes in a straight cell with the given corners. VTK 9.1's
+/// vtkTriQuadraticPyramid lists parametric coordinates of its own kind, so its nodes are placed by
+/// their definition (edge midpoints, face and cell centroids) instead.
+inline std::vector<std::array<double, 3>> StraightNodes(int type, vtkCell* linear)
+{
+  std::vector<std::array<double, 3>> nodes;
+  auto corner = [linear](int c) {
+    std::array<double, 3> p;
+    linear->GetPoints()->GetPoint(c, p.data());
+    return p;
+  };
+  auto mean = [&](std::initializer_list<std::array<double, 3>> points) {
+    std::array<double, 3> m = { 0, 0, 0 };
+    for (const auto& p : points)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        m[d] += p[d] / static_cast<double>(points.size());
+      }
+    }
+    return m;
+  };
+  if (type == VTK_TRIQUADRATIC_PYRAMID)
+  {
+    const auto c0 = corner(0), c1 = corner(1), c2 = corner(2), c3 = corner(3), apex = corner(4);
+    const auto base = mean({ c0, c1, c2, c3 });
+    nodes = { c0, c1, c2, c3, apex, mean({ c0, c1 }), mean({ c1, c2 }), mean({ c2, c3 }), mean({ c3, c0 }),
+      mean({ c0, apex }), mean({ c1, apex }), mean({ c2, apex }), mean({ c3, apex }), base,
+      mean({ c0, c1, apex }), mean({ c1, c2, apex }), mean({ c2, c3, apex }), mean({ c3, c0, apex }),
+      mean({ base, base, base, apex }) };
+    return nodes;
+  }
+  vtkNew<vtkGenericCell> target;
+  target->SetCellType(type);
+  const double* pcoords = target->GetParametricCoords();
+  std::vector<double> weights(static_cast<std::size_t>(linear->GetNumberOfPoints()));
+  for (vtkIdType n = 0; n < target->GetNumberOfPoints(); ++n)
+  {
+    double pc[3] = { pcoords[3 * n], pcoords[3 * n + 1], pcoords[3 * n + 2] };
+    std::array<double, 3> x;
+    int subId = 0;
+    linear->EvaluateLocation(subId, pc, x.data(), weights.data());
+    nodes.push_back(x);
+  }
+  return nodes;
+}
+
+/// A higher-order copy of a linear mesh: every cell whose type is a key of `types` becomes the mapped
+/// type with its nodes placed in the straight cell (nodes of neighbours shared), the other cells kept;
+/// then `deform` moves every point, which curves the cells. Point arrays: "f" = x^2 + y z and an
+/// integer "rank" (the point id); cell arrays kept.
+inline vtkSmartPointer<vtkUnstructuredGrid> Elevate(
+  vtkUnstructuredGrid* linear, const std::map<int, int>& types, void (*deform)(double*))
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  std::map<std::array<long long, 3>, vtkIdType> byPosition; // rounded, to share nodes exactly
+  auto idOf = [&](const std::array<double, 3>& x) {
+    const std::array<long long, 3> key = { std::llround(x[0] * 1e9), std::llround(x[1] * 1e9),
+      std::llround(x[2] * 1e9) };
+    auto found = byPosition.emplace(key, points->GetNumberOfPoints());
+    if (found.second)
+    {
+      points->InsertNextPoint(x.data());
+    }
+    return found.first->second;
+  };
+  vtkNew<vtkGenericCell> cell;
+  grid->GetCellData()->CopyAllocate(linear->GetCellData());
+  for (vtkIdType c = 0; c < linear->GetNumberOfCells(); ++c)
+  {
+    linear->GetCell(c, cell);
+    const auto mapped = types.find(cell->GetCellType());
+    const int type = mapped == types.end() ? cell->GetCellType() : mapped->second;
+    std::vector<std::array<double, 3>> nodes;
+    if (mapped == types.end())
+    {
+      for (vtkIdType n = 0; n < cell->GetNumberOfPoints(); ++n)
+      {
+        nodes.push_back({ 0, 0, 0 });
+        cell->GetPoints()->GetPoint(n, nodes.back().data());
+      }
+    }
+    else
+    {
+      nodes = StraightNodes(type, cell);
+    }
+    std::vector<vtkIdType> ids;
+    for (const auto& x : nodes)
+    {
+      ids.push_back(idOf(x));
+    }
+    const vtkIdType added = grid->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
+    grid->GetCellData()->CopyData(linear->GetCellData(), c, added);
+  }
+  vtkNew<vtkDoubleArray> f;
+  f->SetName("f");
+  vtkNew<vtkIntArray> rank;
+  rank->SetName("rank");
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    points->GetPoint(p, x);
+    deform(x);
+    points->SetPoint(p, x);
+    f->InsertNextValue(x[0] * x[0] + x[1] * x[2]);
+    rank->InsertNextValue(static_cast<int>(p));
+  }
+  grid->SetPoints(points);
+  grid->GetPointData()->AddArray(f);
+  grid->GetPointData()->AddArray(rank);
+  return grid;
+}
+
+/// Boundary triangles a conforming tet split of the level-L subdivision of `mesh` must have: L^2 per
+/// boundary triangle and 2 L^2 per boundary quadrilateral. Faces are keyed by their corners (listed
+/// first), so neighbours whose higher-order faces have different nodes still share them.
+inline long long ExpectedSubdividedBoundaryTriangles(vtkDataSet* mesh, int level)
+{
+  std::map<std::vector<vtkIdType>, std::pair<int, int>> faces; // count, edges
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCell(c, cell);
+    if (cell->GetCellDimension() != 3)
+    {
+      continue;
+    }
+    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+    {
+      vtkCell* face = cell->GetFace(f);
+      vtkIdList* ids = face->GetPointIds();
+      std::vector<vtkIdType> key(ids->GetPointer(0), ids->GetPointer(0) + face->GetNumberOfEdges());
+      std::sort(key.begin(), key.end());
+      auto& entry = faces[key];
+      entry.first++;
+      entry.second = face->GetNumberOfEdges();
+    }
+  }
+  long long triangles = 0;
+  for (const auto& face : faces)
+  {
+    triangles += face.second.first == 1 ? static_cast<long long>(face.second.second - 2) * level * level : 0;
+  }
+  return triangles;
+}
+
+/// One quadratic tetrahedron with a constant point scalar (flat corners and wild mid-edge nodes).
 inline vtkSmartPointer<vtkUnstructuredGrid> QuadraticTetraMesh()
 {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
