@@ -51,7 +51,7 @@ void FanFromLowest(int size, Key&& key, Emit&& emit)
 }
 
 // Outward-oriented faces of VTK's linear cells.
-constexpr std::array<LocalFace, 6> HexahedronFaces = { {
+inline constexpr std::array<LocalFace, 6> HexahedronFaces = { {
   { 4, { 0, 3, 2, 1 } },
   { 4, { 4, 5, 6, 7 } },
   { 4, { 0, 1, 5, 4 } },
@@ -59,14 +59,14 @@ constexpr std::array<LocalFace, 6> HexahedronFaces = { {
   { 4, { 2, 3, 7, 6 } },
   { 4, { 3, 0, 4, 7 } },
 } };
-constexpr std::array<LocalFace, 5> WedgeFaces = { {
+inline constexpr std::array<LocalFace, 5> WedgeFaces = { {
   { 3, { 0, 1, 2, -1 } },
   { 3, { 3, 5, 4, -1 } },
   { 4, { 1, 0, 3, 4 } },
   { 4, { 2, 1, 4, 5 } },
   { 4, { 0, 2, 5, 3 } },
 } };
-constexpr std::array<LocalFace, 5> PyramidFaces = { {
+inline constexpr std::array<LocalFace, 5> PyramidFaces = { {
   { 4, { 0, 3, 2, 1 } },
   { 3, { 0, 1, 4, -1 } },
   { 3, { 1, 2, 4, -1 } },
@@ -77,7 +77,7 @@ constexpr std::array<LocalFace, 5> PyramidFaces = { {
 /// Outward faces of an n-gonal prism numbered as VTK's prisms: the bottom polygon 0..n-1 turns
 /// anticlockwise seen from the top polygon n..2n-1, vertex n+i above vertex i (as the hexahedron).
 template <int N>
-constexpr std::array<LocalFace, N + 2> PrismFaces()
+inline constexpr std::array<LocalFace, N + 2> PrismFaces()
 {
   std::array<LocalFace, N + 2> faces{};
   faces[0].Size = N;
@@ -92,11 +92,11 @@ constexpr std::array<LocalFace, N + 2> PrismFaces()
   }
   return faces;
 }
-constexpr std::array<LocalFace, 7> PentagonalPrismFaces = PrismFaces<5>();
-constexpr std::array<LocalFace, 8> HexagonalPrismFaces = PrismFaces<6>();
+inline constexpr std::array<LocalFace, 7> PentagonalPrismFaces = PrismFaces<5>();
+inline constexpr std::array<LocalFace, 8> HexagonalPrismFaces = PrismFaces<6>();
 
 // VTK_VOXEL numbers its corners x-fastest; this maps hexahedron local index -> voxel local index.
-constexpr std::array<int, 8> VoxelToHexahedronOrder = { 0, 1, 3, 2, 4, 5, 7, 6 };
+inline constexpr std::array<int, 8> VoxelToHexahedronOrder = { 0, 1, 3, 2, 4, 5, 7, 6 };
 
 constexpr int MaxTetsPerCell = 12; // the hexagonal prism
 

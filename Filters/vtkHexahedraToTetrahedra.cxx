@@ -697,6 +697,11 @@ void ForwardMessage(vtkObject*, unsigned long event, void* clientData, void* cal
 
 vtkHexahedraToTetrahedra::vtkHexahedraToTetrahedra() = default;
 
+vtkHexahedraToTetrahedra::~vtkHexahedraToTetrahedra()
+{
+  this->SetFieldArrayName(nullptr);
+}
+
 int vtkHexahedraToTetrahedra::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
@@ -723,6 +728,7 @@ int vtkHexahedraToTetrahedra::SubdivideAndSplit(vtkDataSet* input, vtkUnstructur
   subdivision->SetChordTolerance(this->ChordTolerance);
   subdivision->SetMaximumLevel(this->MaximumLevel);
   subdivision->SetLevel(this->Level);
+  subdivision->SetFieldArrayName(this->FieldArrayName);
   vtkNew<vtkCallbackCommand> forward;
   forward->SetClientData(this);
   forward->SetCallback(ForwardMessage);
@@ -849,5 +855,6 @@ void vtkHexahedraToTetrahedra::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FieldTolerance: " << this->FieldTolerance << "\n";
   os << indent << "ChordTolerance: " << this->ChordTolerance << "\n";
   os << indent << "MaximumLevel: " << this->MaximumLevel << "\n";
+  os << indent << "FieldArrayName: " << (this->FieldArrayName ? this->FieldArrayName : "(every array)") << "\n";
   os << indent << "Level: " << this->Level << "\n";
 }

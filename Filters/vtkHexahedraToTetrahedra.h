@@ -32,7 +32,8 @@
  *
  * Higher-order 3D cells (quadratic, triquadratic, Lagrange and Bezier tetrahedra, hexahedra and
  * wedges, quadratic and triquadratic pyramids) are first subdivided into linear cells by
- * vtkHigherOrderSubdivision, whose settings (FieldTolerance, ChordTolerance, MaximumLevel, Level) are
+ * vtkHigherOrderSubdivision, whose settings (FieldTolerance, ChordTolerance, MaximumLevel, Level,
+ * FieldArrayName) are
  * forwarded from this filter with the same defaults and meaning; the linear cells are then split as
  * above, and `vtkOriginalCellIds` still names the original input cell. The subdivision's messages are
  * reported as this filter's. Other 3D cells (Lagrange and Bezier pyramids) are an error and produce
@@ -73,8 +74,9 @@ public:
   ///@{
   /**
    * Settings of the subdivision of higher-order cells (see vtkHigherOrderSubdivision): field and
-   * chord tolerances relative to each component's range and each cell's diameter (default 1e-3), the
-   * highest automatic level (default 8), and a forced level (0, the default: automatic).
+   * chord tolerances relative to each component's range and each cell's diameter (default 1e-2), the
+   * highest automatic level (default 4), a forced level (0, the default: automatic), and the only
+   * point array the field tolerance looks at (default: every numeric one).
    */
   vtkSetClampMacro(FieldTolerance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(FieldTolerance, double);
@@ -84,11 +86,13 @@ public:
   vtkGetMacro(MaximumLevel, int);
   vtkSetClampMacro(Level, int, 0, 16);
   vtkGetMacro(Level, int);
+  vtkSetStringMacro(FieldArrayName);
+  vtkGetStringMacro(FieldArrayName);
   ///@}
 
 protected:
   vtkHexahedraToTetrahedra();
-  ~vtkHexahedraToTetrahedra() override = default;
+  ~vtkHexahedraToTetrahedra() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -99,10 +103,11 @@ protected:
   int SubdivideAndSplit(vtkDataSet* input, vtkUnstructuredGrid* output);
 
   int SplitMode = SIX_TETRAHEDRA;
-  double FieldTolerance = 1e-3;
-  double ChordTolerance = 1e-3;
-  int MaximumLevel = 8;
+  double FieldTolerance = 1e-2;
+  double ChordTolerance = 1e-2;
+  int MaximumLevel = 4;
   int Level = 0;
+  char* FieldArrayName = nullptr;
 
 private:
   vtkHexahedraToTetrahedra(const vtkHexahedraToTetrahedra&) = delete;

@@ -62,19 +62,19 @@ public:
   static bool IsSubdividedCellType(int cellType);
 
   ///@{
-  /// Field error allowed at the chosen level, relative to each component's range. Default 1e-3.
+  /// Field error allowed at the chosen level, relative to each component's range. Default 1e-2.
   vtkSetClampMacro(FieldTolerance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(FieldTolerance, double);
   ///@}
 
   ///@{
-  /// Chord (position) error allowed at the chosen level, relative to each cell's diameter. Default 1e-3.
+  /// Chord (position) error allowed at the chosen level, relative to each cell's diameter. Default 1e-2.
   vtkSetClampMacro(ChordTolerance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(ChordTolerance, double);
   ///@}
 
   ///@{
-  /// Highest level the automatic choice may take. Default 8.
+  /// Highest level the automatic choice may take. Default 4 (64 linear cells per cell).
   vtkSetClampMacro(MaximumLevel, int, 1, MaximumSupportedLevel);
   vtkGetMacro(MaximumLevel, int);
   ///@}
@@ -107,9 +107,9 @@ protected:
   /// Sets ChosenLevel, FieldError and ChordError for the given higher-order cells.
   void ChooseLevel(vtkDataSet* input, const std::vector<vtkIdType>& cells);
 
-  double FieldTolerance = 1e-3;
-  double ChordTolerance = 1e-3;
-  int MaximumLevel = 8;
+  double FieldTolerance = 1e-2;
+  double ChordTolerance = 1e-2;
+  int MaximumLevel = 4;
   int Level = 0;
   char* FieldArrayName = nullptr;
   int ChosenLevel = 0;

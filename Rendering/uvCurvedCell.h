@@ -95,8 +95,8 @@ inline glm::dvec3 FamilyCentre(CellFamily family)
 }
 
 /// A curved cell: its nodes (positions and values) and shape functions. `Basis(xi, weights,
-/// derivatives)` fills Nodes weights and 3 * Nodes derivatives in VTK's layout (all d/dr, then all
-/// d/ds, then all d/dt).
+/// derivatives)` fills Nodes weights and, unless `derivatives` is null, 3 * Nodes derivatives in
+/// VTK's layout (all d/dr, then all d/ds, then all d/dt).
 template <typename Basis>
 class CurvedCell
 {
@@ -126,18 +126,21 @@ public:
   glm::dvec3 Map(const glm::dvec3& xi, glm::dmat3* jacobian) const
   {
     double w[MaximumNodes], d[3 * MaximumNodes];
-    this->TheBasis(xi, w, d);
+    this->TheBasis(xi, w, jacobian ? d : nullptr);
     glm::dvec3 x(0.0);
-    glm::dmat3 j(0.0);
     for (int k = 0; k < this->Nodes; ++k)
-    {
       x += w[k] * this->Positions[k];
-      j[0] += d[k] * this->Positions[k];
-      j[1] += d[this->Nodes + k] * this->Positions[k];
-      j[2] += d[2 * this->Nodes + k] * this->Positions[k];
-    }
     if (jacobian)
+    {
+      glm::dmat3 j(0.0);
+      for (int k = 0; k < this->Nodes; ++k)
+      {
+        j[0] += d[k] * this->Positions[k];
+        j[1] += d[this->Nodes + k] * this->Positions[k];
+        j[2] += d[2 * this->Nodes + k] * this->Positions[k];
+      }
       *jacobian = j;
+    }
     return x;
   }
 
@@ -145,8 +148,8 @@ public:
 
   double Scalar(const glm::dvec3& xi) const
   {
-    double w[MaximumNodes], d[3 * MaximumNodes];
-    this->TheBasis(xi, w, d);
+    double w[MaximumNodes];
+    this->TheBasis(xi, w, nullptr);
     double value = 0.0;
     for (int k = 0; k < this->Nodes; ++k)
       value += w[k] * this->Values[k];
@@ -199,8 +202,9 @@ public:
 
   /// The parts of the ray inside the cell, appended to `parts` (entry and exit parametric
   /// coordinates in `xi`, one pair per part). Every face hit is found by Newton on the curved face
-  /// from the flat face's hit; a cell whose hits do not pair up is searched again from a grid of
-  /// starts on every face.
+  /// from the flat face's hit, or from a grid of starts on the face where that Newton leaves it (it
+  /// may have headed for a second root); a cell whose hits still do not pair up is searched again
+  /// from the grid on every face.
   void Intersect(const Ray& ray, std::vector<Interval>& parts, std::vector<std::array<glm::dvec3, 2>>& xi,
     std::vector<Hit>& hits) const
   {
@@ -286,13 +290,50 @@ private:
       return;
     }
     double u, v;
-    if (this->FlatFaceHit(ray, face, u, v) && this->SolveFaceHit(ray, face, u, v, hit))
+    switch (this->FlatFaceHit(ray, face, u, v))
+    {
+      case FlatHit::Off:
+        return;
+      case FlatHit::Grazing:
+        this->HitFace(ray, face, true, hits); // the plane tells little about where a grazing ray meets
+        return;
+      default:
+        break;
+    }
+    if (!this->SolveFaceHit(ray, face, u, v, hit))
+    {
+      this->HitFace(ray, face, true, hits); // Newton left the face: the hit may lie elsewhere on it
+      return;
+    }
+    hits.push_back(hit);
+    // A curved face may be crossed twice, on either side of where the ray meets its plane: start
+    // again mirrored across the flat hit.
+    const glm::dvec2 first = this->FaceCoordinates(face, hit.Xi);
+    const double mirroredU = 2.0 * u - first.x, mirroredV = 2.0 * v - first.y;
+    if (face.Contains(mirroredU, mirroredV, 1.0) && this->SolveFaceHit(ray, face, mirroredU, mirroredV, hit))
       hits.push_back(hit);
   }
 
+  /// (u, v) of a parametric point on the face.
+  glm::dvec2 FaceCoordinates(const ParametricFace& face, const glm::dvec3& xi) const
+  {
+    const glm::dvec3 p = xi - face.Origin;
+    const double uu = glm::dot(face.U, face.U), uv = glm::dot(face.U, face.V), vv = glm::dot(face.V, face.V);
+    const double det = uu * vv - uv * uv;
+    return { (vv * glm::dot(p, face.U) - uv * glm::dot(p, face.V)) / det,
+      (uu * glm::dot(p, face.V) - uv * glm::dot(p, face.U)) / det };
+  }
+
+  enum class FlatHit
+  {
+    Near,    // (u, v) is where the ray meets the plane through the face's corners, near the face
+    Off,     // that lies far off the face
+    Grazing, // the ray runs nearly along that plane
+  };
+
   /// Where the ray meets the plane through the face's corners, in the face's (u, v) (least squares
-  /// over its first three corners); false when that lies far off the face.
-  bool FlatFaceHit(const Ray& ray, const ParametricFace& face, double& u, double& v) const
+  /// over its first three corners).
+  FlatHit FlatFaceHit(const Ray& ray, const ParametricFace& face, double& u, double& v) const
   {
     const glm::dvec3 origin = ray.Origin - this->Anchor;
     const glm::dvec3 a = this->Map(face.At(0, 0), nullptr);
@@ -300,17 +341,14 @@ private:
     const glm::dvec3 dv = this->Map(face.At(0, 1), nullptr) - a;
     const glm::dvec3 normal = glm::cross(du, dv);
     const double along = glm::dot(normal, ray.Direction);
-    if (!(std::abs(along) > 1e-12 * glm::dot(normal, normal) / this->Size))
-    {
-      u = v = 1.0 / 3.0; // grazing: start from the middle
-      return true;
-    }
+    if (!(std::abs(along) > 0.2 * glm::length(normal)))
+      return FlatHit::Grazing;
     const glm::dvec3 p = origin + (glm::dot(normal, a - origin) / along) * ray.Direction - a;
     const double uu = glm::dot(du, du), uv = glm::dot(du, dv), vv = glm::dot(dv, dv);
     const double det = uu * vv - uv * uv;
     u = (vv * glm::dot(p, du) - uv * glm::dot(p, dv)) / det;
     v = (uu * glm::dot(p, dv) - uv * glm::dot(p, du)) / det;
-    return face.Contains(u, v, 0.75);
+    return face.Contains(u, v, 3.0) ? FlatHit::Near : FlatHit::Off; // a curved face reaches past its plane
   }
 
   /// Hits in ray order, those at the same point (an edge or corner shared by faces) once.

@@ -177,7 +177,7 @@ inline void IntersectBilinearPatch(const Ray& ray, const glm::dvec3& q0, const g
 }
 
 /// Corners of VTK's hexahedron on the unit cube, in VTK order.
-constexpr std::array<std::array<int, 3>, 8> HexahedronCorners = { { { 0, 0, 0 }, { 1, 0, 0 },
+inline constexpr std::array<std::array<int, 3>, 8> HexahedronCorners = { { { 0, 0, 0 }, { 1, 0, 0 },
   { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } } };
 
 /// An isoparametric linear 3D cell: its map from parametric space (with Jacobian), its scalar, its

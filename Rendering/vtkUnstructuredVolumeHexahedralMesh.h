@@ -17,7 +17,10 @@
 #include "vtkDataSet.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkHigherOrderSubdivision.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <array>
 #include <cmath>
@@ -59,8 +62,14 @@ public:
     }
     progress(0.0); // the adjacency can take seconds on large meshes
     this->BuiltFrom = Source();
-    this->Points.Build(input, scalar);
-    const vtkIdType others = this->ReadCells(input);
+    RenderedScalar drawn = scalar;
+    vtkDataSet* linear = this->Linearise(input, drawn);
+    if (!linear)
+    {
+      return "the higher-order cells cannot be subdivided (see the errors above)";
+    }
+    this->Points.Build(linear, drawn);
+    const vtkIdType others = this->ReadCells(linear);
     if (others > 0)
     {
       this->CellPoints.clear();
@@ -89,6 +98,29 @@ public:
   }
 
 private:
+  /// `input` itself, or where it holds higher-order hexahedra, its subdivision into linear ones
+  /// (vtkHigherOrderSubdivision, its field tolerance on the rendered array), with `scalar` moved
+  /// onto it. Null when the subdivision fails.
+  vtkDataSet* Linearise(vtkDataSet* input, RenderedScalar& scalar)
+  {
+    this->Subdivided = nullptr;
+    bool curved = false;
+    for (vtkIdType c = 0; c < input->GetNumberOfCells() && !curved; ++c)
+      curved = vtkHigherOrderSubdivision::IsSubdividedCellType(input->GetCellType(c));
+    if (!curved)
+      return input;
+    vtkNew<vtkHigherOrderSubdivision> subdivision;
+    subdivision->SetInputData(input);
+    if (!scalar.OnCells)
+      subdivision->SetFieldArrayName(scalar.Array->GetName());
+    subdivision->Update();
+    this->Subdivided = subdivision->GetOutput();
+    scalar = scalar.On(this->Subdivided);
+    return this->Subdivided->GetNumberOfCells() > 0 && scalar ? this->Subdivided.Get() : nullptr;
+  }
+
+  vtkSmartPointer<vtkUnstructuredGrid> Subdivided; // the linear hexahedra drawn for higher-order ones
+
   /// What the mesh was built from: it is rebuilt when any of these differ.
   struct Source
   {

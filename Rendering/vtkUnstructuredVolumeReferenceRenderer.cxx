@@ -79,7 +79,8 @@ struct CurvedShapeFunctions
 #define UV_STATIC_SHAPE(TYPE, CLASS)                                                                               \
   case TYPE:                                                                                                       \
     CLASS::InterpolationFunctions(p, weights);                                                                     \
-    CLASS::InterpolationDerivs(p, derivatives);                                                                    \
+    if (derivatives)                                                                                               \
+      CLASS::InterpolationDerivs(p, derivatives);                                                                  \
     return;
       UV_STATIC_SHAPE(VTK_QUADRATIC_TETRA, vtkQuadraticTetra)
       UV_STATIC_SHAPE(VTK_QUADRATIC_HEXAHEDRON, vtkQuadraticHexahedron)
@@ -93,11 +94,13 @@ struct CurvedShapeFunctions
 #undef UV_STATIC_SHAPE
       case VTK_LAGRANGE_HEXAHEDRON:
         vtkLagrangeInterpolation::Tensor3ShapeFunctions(this->Order, p, weights);
-        vtkLagrangeInterpolation::Tensor3ShapeDerivatives(this->Order, p, derivatives);
+        if (derivatives)
+          vtkLagrangeInterpolation::Tensor3ShapeDerivatives(this->Order, p, derivatives);
         return;
       case VTK_LAGRANGE_WEDGE:
         vtkLagrangeInterpolation::WedgeShapeFunctions(this->Order, this->Nodes, p, weights);
-        vtkLagrangeInterpolation::WedgeShapeDerivatives(this->Order, this->Nodes, p, derivatives);
+        if (derivatives)
+          vtkLagrangeInterpolation::WedgeShapeDerivatives(this->Order, this->Nodes, p, derivatives);
         return;
       default:
         return;

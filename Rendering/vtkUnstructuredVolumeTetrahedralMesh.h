@@ -192,6 +192,8 @@ private:
     {
       vtkNew<vtkHexahedraToTetrahedra> split;
       split->SetInputData(grid);
+      if (!scalar.OnCells)
+        split->SetFieldArrayName(scalar.Array->GetName()); // higher-order cells: refine for what is drawn
       split->Update();
       vtkUnstructuredGrid* tets = vtkUnstructuredGrid::SafeDownCast(split->GetOutputDataObject(0));
       if (!tets || tets->GetNumberOfCells() == 0)

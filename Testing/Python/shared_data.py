@@ -137,9 +137,16 @@ def bucky():
     return _unstructured(reader)
 
 
+def xml_grid(*parts):
+    """A .vtu file of ../shared/data."""
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path(*parts))
+    reader.Update()
+    return reader.GetOutput()
+
+
 # Every real mesh the reference renders with a point scalar: name, loader, scalar. The higher-order
-# and polyhedral meshes of ../shared/data are not here (the reference does not take them yet); the
-# cell data is in CELL_DATA_MESHES.
+# meshes are in HIGHER_ORDER_MESHES, the cell data in CELL_DATA_MESHES.
 REFERENCE_MESHES = [
     ("blunt_fin", bluntfin, "Density"),
     ("super_phoenix", lambda: legacy("spx", "spx.vtk"), "scalars"),
@@ -163,4 +170,14 @@ CELL_DATA_MESHES = [
     ("openfoam_cavity", openfoam_cavity_cells, "p"),
     ("can", can, "EQPS"),
     ("sample_struct_grid", sample_struct_grid, "scalars"),
+]
+
+# Every real mesh of higher-order cells: name, loader, point scalar. The triquadratic hexahedra and
+# the mixed quadratic Fichera corner carry only a cell array, "material", and get the smooth "field".
+HIGHER_ORDER_MESHES = [
+    ("cylinder_quadratic", lambda: legacy("quadratic", "CylinderQuadratic.vtk"), "velocity_norm"),
+    ("quadratic_tetra", lambda: xml_grid("quadratic", "QuadraticTetra.vtu"), "Polynomial"),
+    ("triquadratic_hexahedron", lambda: _with_smooth_field(xml_grid("quadratic", "TriQuadraticHexahedron.vtu")),
+     "field"),
+    ("fichera_mixed_p2", lambda: _with_smooth_field(legacy("mfem_small", "fichera-mixed-p2.vtk")), "field"),
 ]
