@@ -13,6 +13,7 @@ endforeach ()
 # VTK-free math, unit-tested on its own.
 set(uv_filters_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/uvAnalyticMesh.h"
+  "${CMAKE_CURRENT_LIST_DIR}/uvCellFamily.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvCellGradient.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvIsoparametricLattice.h"
   "${CMAKE_CURRENT_LIST_DIR}/uvLinearCellSplit.h"

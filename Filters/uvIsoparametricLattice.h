@@ -39,6 +39,8 @@
 #ifndef uvIsoparametricLattice_h
 #define uvIsoparametricLattice_h
 
+#include "uvCellFamily.h"
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -53,14 +55,6 @@
 
 namespace uv
 {
-
-enum class CellFamily
-{
-  Tetrahedron,
-  Hexahedron,
-  Wedge,
-  Pyramid
-};
 
 /// Highest supported level: keeps L^2 lcm(1..L) well inside 64 bits and the sub-cell count sane.
 constexpr int MaxLatticeLevel = 16;

@@ -19,7 +19,8 @@ endforeach ()
 # mapper's passes and program catalogue (vtkBarycentricShell*.h, vtk*Programs.h).
 set(uv_rendering_private_headers)
 foreach (header IN ITEMS
-    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvHexahedralMesh uvHexahedronRay uvImageErrorMetrics
+    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvCurvedCell uvHexahedralMesh uvHexahedronRay
+    uvImageErrorMetrics
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
     uvScalarNormalisation uvShellBuckets uvVisibilitySort
     vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms

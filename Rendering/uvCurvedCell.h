@@ -4,6 +4,7 @@
 #ifndef uvCurvedCell_h
 #define uvCurvedCell_h
 
+#include "uvCellFamily.h"
 #include "uvRayCellGeometry.h"
 
 #include <glm/glm.hpp>
@@ -16,16 +17,6 @@
 
 namespace uv
 {
-/// VTK's parametric domains: the unit simplex, the unit cube, the triangle times [0, 1], and the
-/// pyramid as the unit cube whose top face collapses onto the apex.
-enum class CellFamily
-{
-  Tetrahedron,
-  Hexahedron,
-  Wedge,
-  Pyramid
-};
-
 /// One face as a flat map of (u, v) into parametric space: xi = Origin + u U + v V, on the unit
 /// triangle (u, v >= 0, u + v <= 1) or the unit square.
 struct ParametricFace

@@ -23,8 +23,11 @@
  * at the bottom like VTK's windows. Multithreaded over pixels with vtkSMPTools.
  *
  * Pentagonal and hexagonal prisms and polyhedra are rendered as vtkHexahedraToTetrahedra splits them
- * (the field every mapper draws for them). Other 3D cells (quadratic) are an error; 2D and 1D
- * cells are ignored with a warning.
+ * (the field every mapper draws for them). Higher-order cells (quadratic, triquadratic and
+ * biquadratic tetrahedra, hexahedra, wedges and pyramids; Lagrange hexahedra and wedges up to order
+ * 3) are rendered exactly through VTK's own shape functions (uvCurvedCell.h): each curved face met by
+ * Newton, the field by the inverse isoparametric map. Other 3D cells (Lagrange tetrahedra and
+ * pyramids, Bezier cells) are an error; 2D and 1D cells are ignored with a warning.
  * Cells touching a non-finite scalar are left out (transparent) with a warning.
  */
 #ifndef vtkUnstructuredVolumeReferenceRenderer_h

@@ -31,6 +31,7 @@ import sys
 import time
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper, vtkHexahedraToTetrahedra,
+                                vtkHigherOrderSubdivision,
                                 vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
                                 vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
@@ -167,7 +168,9 @@ def with_cell_data(load):
 
 
 def scenes(quick):
-    """(name, loader, scalar, transfer-function maker, unit distance as a fraction of the diagonal)."""
+    """(name, loader, scalar, transfer-function maker, unit distance as a fraction of the diagonal[,
+    subdivision level of a higher-order mesh: the mappers draw that, the reference the mesh itself]).
+    Scenes named "NAME@..." share NAME's reference images."""
     ml, steiner = vtkAnalyticMeshSource.MARSCHNER_LOBB, vtkAnalyticMeshSource.STEINER
     twist, jitter = vtkAnalyticMeshSource.TWIST, vtkAnalyticMeshSource.JITTER
     hexahedra, tets = vtkAnalyticMeshSource.HEXAHEDRA, vtkAnalyticMeshSource.SIX_TETRAHEDRA
@@ -193,7 +196,22 @@ def scenes(quick):
             ("lox_post_tets", lambda: legacy("lox_post", "post.vtk"), "Pressure", smooth_ramp, 0.05),
             ("openfoam_cavity_cells_hex", openfoam_cavity_cells, "cells:p", smooth_ramp, 0.05),
         ]
+        # The quadratic cylinder: the reference renders its quadratic tetrahedra exactly, the mappers
+        # draw vtkHigherOrderSubdivision's linear cells at each level (error against level).
+        found += [(f"cylinder_quadratic@L{level}", lambda: legacy("quadratic", "CylinderQuadratic.vtk"),
+                   "velocity_norm", smooth_ramp, 0.05, level) for level in (1, 2, 4, 8)]
     return found
+
+
+def subdivided(mesh, level):
+    """The higher-order mesh as linear cells at `level` (None: the mesh itself)."""
+    if not level:
+        return mesh
+    subdivision = vtkHigherOrderSubdivision()
+    subdivision.SetInputData(mesh)
+    subdivision.SetLevel(level)
+    subdivision.Update()
+    return subdivision.GetOutput()
 
 
 def volume_property(mesh, scalar, maker, unit_fraction):
@@ -621,21 +639,22 @@ def main():
     os.makedirs(cache, exist_ok=True)
 
     rows = []
-    for scene, load, scalar, maker, unit_fraction in scenes(args.quick):
+    for scene, load, scalar, maker, unit_fraction, *level in scenes(args.quick):
         if wanted_scenes and scene not in wanted_scenes:
             continue
         mesh = load()
         prop, opacity_nodes, color_nodes = volume_property(mesh, scalar, maker, unit_fraction)
         cameras = orbit(mesh, views)
+        drawn = subdivided(mesh, level[0] if level else None)
         split = vtkHexahedraToTetrahedra()
-        split.SetInputData(mesh)
+        split.SetInputData(drawn)
         split.Update()
         tets = split.GetOutput()
         print(f"\n{scene}: {mesh.GetNumberOfCells()} cells ({tets.GetNumberOfCells()} tets), {views} views, {size} px",
               flush=True)
         references, reference_seconds = [], 0.0
         for k, camera in enumerate(cameras):
-            key = [REFERENCE_VERSION, scene, args.quick, scalar, opacity_nodes, color_nodes, unit_fraction,
+            key = [REFERENCE_VERSION, scene.split("@")[0], args.quick, scalar, opacity_nodes, color_nodes, unit_fraction,
                    size, camera.GetPosition(), camera.GetFocalPoint(), mesh.GetNumberOfCells()]
             image, seconds = reference_image(cache, key, mesh, scalar, prop, camera, size)
             references.append(image)
@@ -643,12 +662,12 @@ def main():
         print(f"  reference: {reference_seconds:.1f} s (0 when cached)", flush=True)
 
         scene_rows, first_views, heat_maps = [], [over_background(references[0])], [over_background(references[0])]
-        hexahedral = all(mesh.GetCellType(c) in (11, 12) for c in range(min(mesh.GetNumberOfCells(), 1000)))
+        hexahedral = all(drawn.GetCellType(c) in (11, 12) for c in range(min(drawn.GetNumberOfCells(), 1000)))
         for name, factory, takes in mappers:
             if takes == "hexahedra" and not hexahedral:
                 continue
             preparation, frames, memory, images, mesh_bytes = run_mapper(
-                name, factory, tets if takes == "tets" else mesh, scalar, prop, cameras, size)
+                name, factory, tets if takes == "tets" else drawn, scalar, prop, cameras, size)
             errors = []
             for k, (image, reference) in enumerate(zip(images, references)):
                 metrics = vtkVolumeImageErrorMetrics()

@@ -548,6 +548,7 @@ TEST(HexahedraToTetrahedra, HigherOrderCellsAreSubdividedFirst)
   uvtest::EventCounter* events = uvtest::WatchEvents(relaxed);
   relaxed->SetFieldTolerance(0.05);
   relaxed->SetChordTolerance(0.05);
+  relaxed->SetMaximumLevel(8);
   relaxed->SetInputData(quadratic);
   relaxed->Update();
   EXPECT_EQ(events->Warnings, 1);

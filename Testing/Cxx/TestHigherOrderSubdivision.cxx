@@ -437,6 +437,7 @@ TEST(HigherOrderSubdivision, AutomaticLevelMeetsTheTolerances)
   filter->SetInputData(tet);
   filter->SetFieldTolerance(0.01);
   filter->SetChordTolerance(0.01);
+  filter->SetMaximumLevel(8);
   filter->Update();
   const int level = filter->GetChosenLevel();
   EXPECT_EQ(events->Warnings, 0);

@@ -342,7 +342,7 @@ inline long long ExpectedSubdividedBoundaryTriangles(vtkDataSet* mesh, int level
 }
 
 /// One quadratic tetrahedron with a constant point scalar (flat corners and wild mid-edge nodes).
-inline vtkSmartPointer<vtkUnstructuredGrid> QuadraticTetraMesh()
+inline vtkSmartPointer<vtkUnstructuredGrid> QuadraticTetraMesh(int type = VTK_QUADRATIC_TETRA)
 {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
@@ -354,7 +354,7 @@ inline vtkSmartPointer<vtkUnstructuredGrid> QuadraticTetraMesh()
   }
   grid->SetPoints(points);
   const vtkIdType ids[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
-  grid->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ids);
+  grid->InsertNextCell(type, 10, ids);
   grid->GetPointData()->SetScalars(values);
   return grid;
 }

@@ -11,7 +11,8 @@ Checks, on the wavelet as an unstructured grid of 12^3 hexahedra:
 - the cell array (the point scalar averaged to the cells) renders without an error, covers what the
   point scalar covers and differs from it (it is constant in each cell); a constant cell array
   renders as the same constant point array does (no pixel more than 2 levels off);
-- where ../shared/data is present, the OpenFOAM cavity's cell pressure "p" renders.
+- where ../shared/data is present, the OpenFOAM cavity's cell pressure "p" renders, and so do the
+  triquadratic hexahedra (cell data) and the quadratic cylinder (point data, tetrahedral entries).
 """
 import os
 import sys
@@ -137,5 +138,42 @@ if os.path.exists(cavity):
     print(f"OpenFOAM cavity coloured by cell p: {path}")
 else:
     print("../shared/data absent: the OpenFOAM cavity is skipped")
+
+
+def show_higher_order(name, association, array):
+    """A higher-order mesh of ../shared/data/quadratic in the entry (subdivided on the way in);
+    returns its covered pixel count, or None when the file is absent."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "shared", "data",
+                        "quadratic", name)
+    if not os.path.exists(path):
+        return None
+    source = OpenDataFile(path)  # noqa: F405
+    display = Show(source, view)  # noqa: F405
+    display.Representation = ENTRY
+    ColorBy(display, (association, array))  # noqa: F405
+    display.RescaleTransferFunctionToDataRange(True)
+    display.Isovalues = []
+    ResetCamera(view)  # noqa: F405
+    Render(view)  # noqa: F405
+    shot = os.path.join(os.environ.get("UV_TEST_OUTPUT", "/tmp"), f"arrays_{mapper}_{name}.png")
+    SaveScreenshot(shot, view, ImageResolution=[SIZE, SIZE])  # noqa: F405
+    Hide(source, view)  # noqa: F405
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    reader = vtkPNGReader()
+    reader.SetFileName(shot)
+    reader.Update()
+    pixels = reader.GetOutput().GetPointData().GetScalars()
+    return covered([pixels.GetTuple3(i) for i in range(pixels.GetNumberOfTuples())])
+
+
+# Higher-order cells: the triquadratic hexahedra (every entry; the hexahedral one subdivides them into
+# linear hexahedra) by their cell material, the quadratic cylinder's tetrahedra by a point array.
+higher_order = [("TriQuadraticHexahedron.vtu", "CELLS", "material")]
+if mapper != "hexahedral":
+    higher_order.append(("CylinderQuadratic.vtk", "POINTS", "velocity_norm"))
+for name, association, array in higher_order:
+    drawn = show_higher_order(name, association, array)
+    print(f"{name} coloured by {array}: " + ("absent, skipped" if drawn is None else f"{drawn} covered pixels"))
+    assert drawn is None or drawn > 200
 assert errors.errors == 0, f"{errors.errors} errors"
 print("plugin arrays OK")
