@@ -12,7 +12,7 @@ Checks, on the wavelet as an unstructured grid of 12^3 hexahedra:
   point scalar covers and differs from it (it is constant in each cell); a constant cell array
   renders as the same constant point array does (no pixel more than 2 levels off);
 - where ../shared/data is present, the OpenFOAM cavity's cell pressure "p" renders, and so do the
-  triquadratic hexahedra (cell data) and the quadratic cylinder (point data, tetrahedral entries).
+  triquadratic hexahedra (a cell array) and the quadratic cylinder (point data, tetrahedral entries).
 """
 import os
 import sys
@@ -148,10 +148,19 @@ def show_higher_order(name, association, array):
     if not os.path.exists(path):
         return None
     source = OpenDataFile(path)  # noqa: F405
+    if association == "CELLS":  # a smooth field averaged to the cells (the file's own is constant)
+        smooth = Calculator(Input=source, ResultArrayName=array, Function="coordsX + 2*coordsY + 3")  # noqa: F405
+        source = PointDatatoCellData(Input=smooth)  # noqa: F405
     display = Show(source, view)  # noqa: F405
     display.Representation = ENTRY
     ColorBy(display, (association, array))  # noqa: F405
     display.RescaleTransferFunctionToDataRange(True)
+    low, high = source.GetDataInformation().DataInformation.GetArrayInformation(
+        array, 0 if association == "POINTS" else 1).GetComponentRange(0)
+    GetOpacityTransferFunction(array).Points = [low, 0.1, 0.5, 0.0, high, 0.8, 0.5, 0.0]  # noqa: F405
+    bounds = source.GetDataInformation().GetBounds()
+    diagonal = sum((bounds[2 * d + 1] - bounds[2 * d]) ** 2 for d in range(3)) ** 0.5
+    display.ScalarOpacityUnitDistance = 0.2 * diagonal
     display.Isovalues = []
     ResetCamera(view)  # noqa: F405
     Render(view)  # noqa: F405
@@ -167,8 +176,8 @@ def show_higher_order(name, association, array):
 
 
 # Higher-order cells: the triquadratic hexahedra (every entry; the hexahedral one subdivides them into
-# linear hexahedra) by their cell material, the quadratic cylinder's tetrahedra by a point array.
-higher_order = [("TriQuadraticHexahedron.vtu", "CELLS", "material")]
+# linear hexahedra) by a cell array, the quadratic cylinder's tetrahedra by a point array.
+higher_order = [("TriQuadraticHexahedron.vtu", "CELLS", "smooth")]
 if mapper != "hexahedral":
     higher_order.append(("CylinderQuadratic.vtk", "POINTS", "velocity_norm"))
 for name, association, array in higher_order:
