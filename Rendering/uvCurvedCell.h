@@ -147,36 +147,12 @@ public:
     return value;
   }
 
-  /// Parametric coordinates of x by safeguarded Newton from xi (as InverseIsoparametric does for
-  /// the linear cells). False if it does not converge.
+  /// Parametric coordinates of x by safeguarded Newton from xi (uvRayCellGeometry.h). False if it
+  /// does not converge.
   bool Inverse(const glm::dvec3& x, glm::dvec3& xi) const
   {
-    const glm::dvec3 target = x - this->Anchor;
-    double previous = std::numeric_limits<double>::infinity();
-    for (int iteration = 0; iteration < 60; ++iteration)
-    {
-      glm::dmat3 jacobian;
-      const glm::dvec3 residual = this->Map(xi, &jacobian) - target;
-      const double det = glm::determinant(jacobian);
-      if (!(std::abs(det) > 0.0) || !std::isfinite(det))
-        return false;
-      glm::dvec3 step = glm::inverse(jacobian) * residual;
-      const double longest = std::max({ std::abs(step.x), std::abs(step.y), std::abs(step.z) });
-      if (!std::isfinite(longest))
-        return false;
-      if (longest < 1e-12)
-      {
-        xi -= step;
-        return true;
-      }
-      if (longest >= 0.5 * previous && glm::length(residual) <= 1e-10 * this->Size)
-        return true; // stalled at rounding with the point found
-      previous = longest;
-      if (longest > 0.5)
-        step *= 0.5 / longest;
-      xi = glm::clamp(xi - step, glm::dvec3(-0.5), glm::dvec3(1.5));
-    }
-    return false;
+    const auto map = [this](const glm::dvec3& at, glm::dmat3& jacobian) { return this->Map(at, &jacobian); };
+    return SafeguardedNewton(map, x - this->Anchor, this->Size, xi);
   }
 
   bool Contains(const glm::dvec3& x, glm::dvec3& xi) const

@@ -298,32 +298,22 @@ inline double IsoparametricScalar(const IsoparametricShape& shape, const double 
   return value;
 }
 
-/// Parametric coordinates of x by safeguarded Newton (steps limited to half the reference cell,
-/// iterates kept near it). Returns false if it does not converge.
+/// Solves map(xi) = target for xi by safeguarded Newton (steps limited to half the reference cell,
+/// iterates kept near it) from the given xi; `map(xi, jacobian)` returns the point and fills its
+/// Jacobian. Returns false if it does not converge.
 ///
-/// Works in coordinates relative to the cell's first corner, so a cell far from the origin solves
-/// as well as one at it. Converged means the step fell below 1e-12, or (where the cell's shape
-/// limits what double precision resolves) stopped shrinking while the point it maps to lies within
-/// 1e-10 of the cell's size from x: a fixed step threshold near machine precision cannot be reached
-/// on every cell, and calling those failures lost whole cells.
-inline bool InverseIsoparametric(
-  const IsoparametricShape& shape, const glm::dvec3 p[8], const glm::dvec3& x, glm::dvec3& xi)
+/// Converged means the step fell below 1e-12, or (where the cell's shape limits what double
+/// precision resolves) stopped shrinking while the point it maps to lies within 1e-10 of `size` from
+/// the target: a fixed step threshold near machine precision cannot be reached on every cell, and
+/// calling those failures lost whole cells.
+template <typename Map>
+bool SafeguardedNewton(const Map& map, const glm::dvec3& target, double size, glm::dvec3& xi)
 {
-  glm::dvec3 local[8];
-  glm::dvec3 low(0.0), high(0.0);
-  for (int k = 0; k < shape.Corners; ++k)
-  {
-    local[k] = p[k] - p[0];
-    low = glm::min(low, local[k]);
-    high = glm::max(high, local[k]);
-  }
-  const glm::dvec3 target = x - p[0];
-  const double size = std::max({ high.x - low.x, high.y - low.y, high.z - low.z });
   double previous = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration < 60; ++iteration)
   {
     glm::dmat3 jacobian;
-    const glm::dvec3 residual = IsoparametricPoint(shape, local, xi, &jacobian) - target;
+    const glm::dvec3 residual = map(xi, jacobian) - target;
     const double det = glm::determinant(jacobian);
     if (!(std::abs(det) > 0.0) || !std::isfinite(det))
     {
@@ -352,6 +342,27 @@ inline bool InverseIsoparametric(
     xi = glm::clamp(xi - step, glm::dvec3(-0.5), glm::dvec3(1.5));
   }
   return false;
+}
+
+/// Parametric coordinates of x in a linear isoparametric cell (SafeguardedNewton), working in
+/// coordinates relative to the cell's first corner, so a cell far from the origin solves as well as
+/// one at it.
+inline bool InverseIsoparametric(
+  const IsoparametricShape& shape, const glm::dvec3 p[8], const glm::dvec3& x, glm::dvec3& xi)
+{
+  glm::dvec3 local[8];
+  glm::dvec3 low(0.0), high(0.0);
+  for (int k = 0; k < shape.Corners; ++k)
+  {
+    local[k] = p[k] - p[0];
+    low = glm::min(low, local[k]);
+    high = glm::max(high, local[k]);
+  }
+  const double size = std::max({ high.x - low.x, high.y - low.y, high.z - low.z });
+  const auto map = [&](const glm::dvec3& at, glm::dmat3& jacobian) {
+    return IsoparametricPoint(shape, local, at, &jacobian);
+  };
+  return SafeguardedNewton(map, x - p[0], size, xi);
 }
 
 /// Hexahedron shorthands (the hexahedral mapper's math tests use them).

@@ -86,6 +86,11 @@ def render(association, name, factor=1.0, component=None):
     path = os.path.join(os.environ.get("UV_TEST_OUTPUT", "/tmp"), f"arrays_{mapper}_{association}_{name}_{component}.png")
     SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE])  # noqa: F405
     Hide(cells, view)  # noqa: F405
+    return read_png(path)
+
+
+def read_png(path):
+    """A screenshot's pixels as RGB tuples."""
     from vtkmodules.vtkIOImage import vtkPNGReader
     reader = vtkPNGReader()
     reader.SetFileName(path)
@@ -167,12 +172,7 @@ def show_higher_order(name, association, array):
     shot = os.path.join(os.environ.get("UV_TEST_OUTPUT", "/tmp"), f"arrays_{mapper}_{name}.png")
     SaveScreenshot(shot, view, ImageResolution=[SIZE, SIZE])  # noqa: F405
     Hide(source, view)  # noqa: F405
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    reader = vtkPNGReader()
-    reader.SetFileName(shot)
-    reader.Update()
-    pixels = reader.GetOutput().GetPointData().GetScalars()
-    return covered([pixels.GetTuple3(i) for i in range(pixels.GetNumberOfTuples())])
+    return covered(read_png(shot))
 
 
 # Higher-order cells: the triquadratic hexahedra (every entry; the hexahedral one subdivides them into
