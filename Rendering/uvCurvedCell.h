@@ -282,13 +282,17 @@ private:
   }
 
   /// (u, v) of a parametric point on the face.
-  glm::dvec2 FaceCoordinates(const ParametricFace& face, const glm::dvec3& xi) const
+  static glm::dvec2 FaceCoordinates(const ParametricFace& face, const glm::dvec3& xi)
   {
-    const glm::dvec3 p = xi - face.Origin;
-    const double uu = glm::dot(face.U, face.U), uv = glm::dot(face.U, face.V), vv = glm::dot(face.V, face.V);
+    return PlaneCoordinates(xi - face.Origin, face.U, face.V);
+  }
+
+  /// The (u, v) with u du + v dv closest to p (least squares).
+  static glm::dvec2 PlaneCoordinates(const glm::dvec3& p, const glm::dvec3& du, const glm::dvec3& dv)
+  {
+    const double uu = glm::dot(du, du), uv = glm::dot(du, dv), vv = glm::dot(dv, dv);
     const double det = uu * vv - uv * uv;
-    return { (vv * glm::dot(p, face.U) - uv * glm::dot(p, face.V)) / det,
-      (uu * glm::dot(p, face.V) - uv * glm::dot(p, face.U)) / det };
+    return { (vv * glm::dot(p, du) - uv * glm::dot(p, dv)) / det, (uu * glm::dot(p, dv) - uv * glm::dot(p, du)) / det };
   }
 
   enum class FlatHit
@@ -310,11 +314,9 @@ private:
     const double along = glm::dot(normal, ray.Direction);
     if (!(std::abs(along) > 0.2 * glm::length(normal)))
       return FlatHit::Grazing;
-    const glm::dvec3 p = origin + (glm::dot(normal, a - origin) / along) * ray.Direction - a;
-    const double uu = glm::dot(du, du), uv = glm::dot(du, dv), vv = glm::dot(dv, dv);
-    const double det = uu * vv - uv * uv;
-    u = (vv * glm::dot(p, du) - uv * glm::dot(p, dv)) / det;
-    v = (uu * glm::dot(p, dv) - uv * glm::dot(p, du)) / det;
+    const glm::dvec2 uv = PlaneCoordinates(origin + (glm::dot(normal, a - origin) / along) * ray.Direction - a, du, dv);
+    u = uv.x;
+    v = uv.y;
     return face.Contains(u, v, 3.0) ? FlatHit::Near : FlatHit::Off; // a curved face reaches past its plane
   }
 

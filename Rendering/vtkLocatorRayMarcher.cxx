@@ -4,6 +4,7 @@
 #include "vtkCellData.h"
 #include "vtkCell.h"
 #include "vtkCellType.h"
+#include "vtkCellTypes.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -765,11 +766,12 @@ void vtkLocatorRayMarcher::UpdateLocator()
   {
     double* bounds = this->CellBounds.data() + 6 * i;
     this->Input->GetCellBounds(i, bounds);
-    this->Input->GetCell(i, cell);
-    if (!cell->IsLinear())
+    if (vtkCellTypes::IsLinear(static_cast<unsigned char>(this->Input->GetCellType(i))))
     {
-      this->CurvedReach = std::max(this->CurvedReach, ExtendToSampledShape(cell, bounds));
+      continue; // by type: no cell built for the common case
     }
+    this->Input->GetCell(i, cell);
+    this->CurvedReach = std::max(this->CurvedReach, ExtendToSampledShape(cell, bounds));
   }
   this->LocatorBuildTime.Modified();
 }
