@@ -2,6 +2,8 @@
 // face adjacency and boundary faces from the cells' point ids, the cells whose map folds, and the cell
 // holding a point (where rays start when the eye is inside the mesh). Cells are 8 point ids each in
 // VTK's hexahedron order; points are 4 floats each (recentred position, normalised scalar).
+// Tetrahedra, pyramids and wedges are hexahedra with repeated corners (the *AsHexahedron orders):
+// a face with a repeated corner is a triangle, one with fewer than three distinct corners no face.
 #ifndef uvHexahedralMesh_h
 #define uvHexahedralMesh_h
 
@@ -20,6 +22,27 @@
 
 namespace uv
 {
+
+/// Where a tetrahedron's, a pyramid's and a wedge's points (VTK's orders) go among a hexahedron's 8
+/// corners. The hexahedron's trilinear map then is the cell's own isoparametric map -- the
+/// tetrahedron's linear one, the pyramid's, the wedge's (barycentric across, linear along) -- so its
+/// field is the cell's field, and one walk takes all four. The wedge's base is reversed because
+/// VTK's wedge base faces out, a hexahedron's in: every collapsed cell keeps a positive Jacobian.
+inline constexpr std::array<int, 8> TetrahedronAsHexahedron = { 0, 1, 2, 2, 3, 3, 3, 3 };
+inline constexpr std::array<int, 8> PyramidAsHexahedron = { 0, 1, 2, 3, 4, 4, 4, 4 };
+inline constexpr std::array<int, 8> WedgeAsHexahedron = { 0, 2, 1, 1, 3, 5, 4, 4 };
+
+/// A face's key: its distinct point ids ascending, padded with NoPoint (a triangle has one pad).
+/// Returns how many are distinct: under 3 the face is collapsed to an edge or a point.
+constexpr std::uint32_t NoPoint = std::numeric_limits<std::uint32_t>::max();
+inline int FaceKey(const std::uint32_t corners[4], std::array<std::uint32_t, 4>& key)
+{
+  key = { corners[0], corners[1], corners[2], corners[3] };
+  std::sort(key.begin(), key.end());
+  const int distinct = static_cast<int>(std::unique(key.begin(), key.end()) - key.begin());
+  std::fill(key.begin() + distinct, key.end(), NoPoint);
+  return distinct;
+}
 
 /// The corners of hexahedron `cell` in double.
 inline void HexahedronCornerPoints(
@@ -49,14 +72,44 @@ struct HexahedralFaces
   std::vector<std::int32_t> Boundary;   // 4 per boundary face: cell, local face, 0, 0
 };
 
+/// Per point, the smallest id of the points at exactly its position (points are 4 floats each): a
+/// mesh that repeats its points along internal faces (as some writers do) is still joined across
+/// them. `sort(begin, end, less)` orders point ids.
+template <typename Sort>
+std::vector<std::uint32_t> CoincidentPointRepresentatives(const std::vector<float>& pointData, Sort&& sort)
+{
+  const std::size_t pointCount = pointData.size() / 4;
+  std::vector<std::uint32_t> order(pointCount), representative(pointCount);
+  for (std::size_t p = 0; p < pointCount; ++p)
+    order[p] = static_cast<std::uint32_t>(p);
+  auto position = [&pointData](std::uint32_t p) {
+    return std::array<float, 3>{ pointData[4 * p], pointData[4 * p + 1], pointData[4 * p + 2] };
+  };
+  sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return position(a) < position(b) || (position(a) == position(b) && a < b);
+  });
+  for (std::size_t i = 0; i < pointCount;)
+  {
+    std::size_t j = i + 1;
+    while (j < pointCount && position(order[j]) == position(order[i]))
+      ++j;
+    for (std::size_t k = i; k < j; ++k)
+      representative[order[k]] = order[i];
+    i = j;
+  }
+  return representative;
+}
+
 /// Which cells share each face (uv::HexahedronFaces numbering): a face two cells share joins them;
-/// any other (a boundary face, or a non-manifold one, every copy) is a boundary face. Faces are
+/// any other (a boundary face, or a non-manifold one, every copy) is a boundary face; a collapsed
+/// face (FaceKey) is neither, and has no neighbour. Points are compared through `samePoint`
+/// (CoincidentPointRepresentatives; empty: by id). Faces are
 /// matched by sorting them by their sorted point ids: `parallelFor(count, function(begin, end))` lists
 /// them, `sort(begin, end)` orders HexahedronFaceRecords, and `progress(fraction)` is told 0.5 once
 /// they are listed and 1 once sorted.
 template <typename ParallelFor, typename Sort, typename Progress>
-HexahedralFaces MakeHexahedralFaces(
-  const std::vector<std::uint32_t>& cellPoints, ParallelFor&& parallelFor, Sort&& sort, Progress&& progress)
+HexahedralFaces MakeHexahedralFaces(const std::vector<std::uint32_t>& cellPoints,
+  const std::vector<std::uint32_t>& samePoint, ParallelFor&& parallelFor, Sort&& sort, Progress&& progress)
 {
   const std::size_t cellCount = cellPoints.size() / 8;
   std::vector<HexahedronFaceRecord> faces(6 * cellCount);
@@ -65,9 +118,14 @@ HexahedralFaces MakeHexahedralFaces(
       for (int f = 0; f < 6; ++f)
       {
         HexahedronFaceRecord& record = faces[6 * c + f];
+        std::uint32_t corners[4];
         for (int k = 0; k < 4; ++k)
-          record.Key[k] = cellPoints[8 * c + HexahedronFaces[f].Vertices[k]];
-        std::sort(record.Key.begin(), record.Key.end());
+        {
+          const std::uint32_t point = cellPoints[8 * c + HexahedronFaces[f].Vertices[k]];
+          corners[k] = samePoint.empty() ? point : samePoint[point];
+        }
+        if (FaceKey(corners, record.Key) < 3)
+          record.Key.fill(NoPoint); // sorts last, skipped below
         record.CellFace = static_cast<std::uint32_t>(8 * c + f);
       }
   });
@@ -81,6 +139,8 @@ HexahedralFaces MakeHexahedralFaces(
     std::size_t j = i + 1;
     while (j < faces.size() && faces[j].Key == faces[i].Key)
       ++j;
+    if (faces[i].Key[0] == NoPoint)
+      break; // the collapsed faces, all at the end
     if (j - i == 2)
     {
       const std::uint32_t a = faces[i].CellFace, b = faces[i + 1].CellFace;

@@ -461,6 +461,10 @@ bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const uvvtk::Rend
     vtkWarningMacro(<< mesh.TangledCells << " hexahedra are tangled (their Jacobian changes sign, as in a "
                     << "crushed mesh): what a ray integrates through them is not well defined");
   }
+  if (built && mesh.FlatCells > 0)
+  {
+    vtkWarningMacro(<< mesh.FlatCells << " cells are not 3D (vertices, lines, polygons) and are left out");
+  }
   if (built && mesh.NaNCells > 0 && !this->Impl->WarnedNaN)
   {
     vtkWarningMacro(<< mesh.NaNCells << " cells touch a NaN scalar and are left out (holes in the mesh)");

@@ -33,11 +33,15 @@
  * uvgl::MaximumUniformNodes nodes is approximated by fewer (with a warning). A perspective eye inside
  * the mesh starts every ray of the first peel in the cell holding it.
  *
- * Input: any vtkDataSet of hexahedra and voxels with a point or cell scalar (the base's selection; a
- * cell scalar is one value per cell, constant along the ray inside it): vtkUnstructuredGrid, and
- * vtkStructuredGrid (blanked cells left out), vtkImageData and vtkRectilinearGrid as they are, with
- * no conversion. Other cells are an error: split mixed meshes with vtkHexahedraToTetrahedra and
- * render them with vtkPreIntegratedTetrahedraMapper. Cells touching a NaN scalar are left out (one
+ * Input: any vtkDataSet of hexahedra, voxels, wedges, pyramids and tetrahedra with a point or cell
+ * scalar (the base's selection; a cell scalar is one value per cell, constant along the ray inside
+ * it): vtkUnstructuredGrid, and vtkStructuredGrid (blanked cells left out), vtkImageData and
+ * vtkRectilinearGrid as they are, with no conversion. Wedges, pyramids and tetrahedra walk as
+ * hexahedra with repeated corners, whose trilinear map is their own isoparametric map (a
+ * tetrahedron's field is linear along the ray; triangular faces are flat). Higher-order cells are
+ * subdivided first (vtkHigherOrderSubdivision). Other cells (polyhedra, pentagonal and hexagonal
+ * prisms) are an error: split such meshes with vtkHexahedraToTetrahedra and render them with
+ * vtkPreIntegratedTetrahedraMapper. Cells touching a NaN scalar are left out (one
  * warning); folded (tangled) cells are rendered, with a warning per mesh build.
  */
 #ifndef vtkHexahedralRayCastMapper_h

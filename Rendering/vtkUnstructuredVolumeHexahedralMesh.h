@@ -1,5 +1,5 @@
-// The hexahedra of any vtkDataSet as vtkHexahedralRayCastMapper's passes read them: 8 point ids per
-// cell, the recentred points with the normalised point scalar (vtkUnstructuredVolumePointData.h) or
+// The cells of any vtkDataSet as vtkHexahedralRayCastMapper's passes read them: 8 point ids per
+// cell (tetrahedra, pyramids and wedges as collapsed hexahedra), the recentred points with the normalised point scalar (vtkUnstructuredVolumePointData.h) or
 // one normalised value per cell for cell data, face adjacency and boundary faces (uvHexahedralMesh.h),
 // rebuilt only when the input or its scalar changes. Reads VTK data through the generic cell API,
 // so no input type needs a conversion.
@@ -15,6 +15,7 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkHigherOrderSubdivision.h"
@@ -42,6 +43,7 @@ public:
   RecentredPoints Points;
   uv::HexahedralFaces Faces;
   vtkIdType TangledCells = 0, NaNCells = 0;
+  vtkIdType FlatCells = 0; // vertices, lines and polygons: not volumes, left out
   int Builds = 0;
   std::uint64_t Version = 0; // bumped by every build
 
@@ -74,13 +76,16 @@ public:
     {
       this->CellPoints.clear();
       this->Faces = uv::HexahedralFaces();
-      return std::to_string(others) + " cells are not hexahedra or voxels: split the mesh with "
-                                      "vtkHexahedraToTetrahedra and render it with vtkPreIntegratedTetrahedraMapper";
+      return std::to_string(others) + " cells are not hexahedra, voxels, wedges, pyramids or tetrahedra (nor "
+                                      "higher-order ones): split the mesh with vtkHexahedraToTetrahedra and render "
+                                      "it with vtkPreIntegratedTetrahedraMapper";
     }
     this->TangledCells =
       static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
+    const std::vector<std::uint32_t> samePoint = uv::CoincidentPointRepresentatives(
+      this->Points.Values, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
     this->Faces = uv::MakeHexahedralFaces(
-      this->CellPoints, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
+      this->CellPoints, samePoint, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
       [&progress](double fraction) { progress(0.8 * fraction); });
     this->BuiltFrom = source;
     ++this->Builds;
@@ -98,7 +103,7 @@ public:
   }
 
 private:
-  /// `input` itself, or where it holds higher-order hexahedra, its subdivision into linear ones
+  /// `input` itself, or where it holds higher-order cells, its subdivision into linear ones
   /// (vtkHigherOrderSubdivision, its field tolerance on the rendered array), with `scalar` moved
   /// onto it. Null when the subdivision fails.
   vtkDataSet* Linearise(vtkDataSet* input, RenderedScalar& scalar)
@@ -140,32 +145,73 @@ private:
   };
   Source BuiltFrom;
 
-  /// The hexahedra and voxels of `grid` into CellPoints (voxels reordered), leaving out those that
-  /// touch a NaN point scalar or hold a NaN cell scalar. Returns how many cells are neither (not
-  /// drawable here).
+  /// Where a cell's points go among a hexahedron's 8 corners (uvHexahedralMesh.h's orders), or
+  /// null for a cell the walk cannot take.
+  static const std::array<int, 8>* AsHexahedron(int type)
+  {
+    static constexpr std::array<int, 8> identity = { 0, 1, 2, 3, 4, 5, 6, 7 };
+    switch (type)
+    {
+      case VTK_HEXAHEDRON:
+        return &identity;
+      case VTK_VOXEL:
+        return &uv::VoxelToHexahedronOrder;
+      case VTK_TETRA:
+        return &uv::TetrahedronAsHexahedron;
+      case VTK_PYRAMID:
+        return &uv::PyramidAsHexahedron;
+      case VTK_WEDGE:
+        return &uv::WedgeAsHexahedron;
+      default:
+        return nullptr;
+    }
+  }
+
+  /// Whether cells of `type` are 3D (VTK's own cell says; the higher-order tetrahedra to hexahedra,
+  /// which VTK 9.1 cannot stand up empty, are).
+  static bool IsVolumeCell(int type)
+  {
+    if (type == VTK_LAGRANGE_PYRAMID || type == VTK_BEZIER_PYRAMID ||
+      (type >= VTK_HIGHER_ORDER_TETRAHEDRON && type <= VTK_HIGHER_ORDER_HEXAHEDRON))
+      return true;
+    vtkNew<vtkGenericCell> probe;
+    probe->SetCellType(type);
+    return probe->GetCellDimension() == 3;
+  }
+
+  /// The hexahedra, voxels (reordered), tetrahedra, pyramids and wedges (as collapsed hexahedra) of
+  /// `grid` into CellPoints, leaving out those that touch a NaN point scalar or hold a NaN cell
+  /// scalar, and the cells that are not 3D (counted in FlatCells). Returns how many 3D cells are none
+  /// of these (not drawable here).
   vtkIdType ReadCells(vtkDataSet* grid)
   {
     const bool onCells = !this->Points.CellValues.empty();
     this->CellPoints.clear();
     this->CellScalars.clear();
     this->NaNCells = 0;
+    this->FlatCells = 0;
     vtkIdType others = 0;
+    std::array<signed char, 256> volume; // per cell type: 1 3D, 0 not, -1 not asked yet
+    volume.fill(-1);
     vtkNew<vtkIdList> cellIds;
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
     {
       const int type = grid->GetCellType(c);
       if (type == VTK_EMPTY_CELL)
         continue; // blanked
-      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL)
+      const std::array<int, 8>* order = AsHexahedron(type);
+      if (!order)
       {
-        ++others;
+        if (volume[type] < 0)
+          volume[type] = IsVolumeCell(type) ? 1 : 0;
+        ++(volume[type] ? others : this->FlatCells);
         continue;
       }
       grid->GetCellPoints(c, cellIds);
       const vtkIdType* ids = cellIds->GetPointer(0);
       std::array<std::uint32_t, 8> corners;
       for (int k = 0; k < 8; ++k)
-        corners[k] = static_cast<std::uint32_t>(ids[type == VTK_VOXEL ? uv::VoxelToHexahedronOrder[k] : k]);
+        corners[k] = static_cast<std::uint32_t>(ids[(*order)[k]]);
       const bool finite = onCells ? std::isfinite(this->Points.CellValues[c])
                                   : uv::ScalarsFinite(this->Points.Values, corners.data(), 8);
       if (!finite)

@@ -2,7 +2,9 @@
 // passes of vtkHexahedralRayCastMapper (the GPU twin of IntersectBilinearPatch in
 // uvRayCellGeometry.h). Every cell, and the boundary pass, parameterises a face the same way --
 // corner a the smallest point id, b its neighbour with the smaller id, c opposite a -- so two cells
-// sharing a face compute bitwise the same crossing: the walk is watertight.
+// sharing a face compute bitwise the same crossing: the walk is watertight. A face with a repeated
+// corner (of a tetrahedron, pyramid or wedge stored as a collapsed hexahedron) is a flat triangle,
+// its corners ordered by id.
 
 /// Canonical corners of a quad given in cyclic order with their point ids.
 void CanonicalQuad(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, out vec3 d)
@@ -108,4 +110,80 @@ vec3 PatchNormalAt(vec3 a, vec3 b, vec3 c, vec3 d, vec2 uv)
 {
   vec3 e1 = b - a, e2 = d - a, e3 = a - b + c - d;
   return cross(e1 + uv.y * e3, e2 + uv.x * e3);
+}
+
+/// The face with corners p (cyclic order) and point ids `ids` as every cell sharing it sees it: a
+/// quad (CanonicalQuad) or, with a repeated corner, the triangle a, b, c by ascending id (d = c).
+/// Returns how many distinct corners it has: under 3 it is collapsed, no face.
+int CanonicalFace(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, out vec3 d)
+{
+  int distinct[4];
+  int count = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    bool repeated = false;
+    for (int j = 0; j < i; ++j)
+      repeated = repeated || ids[j] == ids[i];
+    if (!repeated)
+      distinct[count++] = i;
+  }
+  if (count == 4)
+  {
+    CanonicalQuad(p, ids, a, b, c, d);
+    return 4;
+  }
+  a = p[0];
+  b = p[0];
+  c = p[0];
+  d = p[0];
+  if (count < 3)
+    return count;
+  int i0 = distinct[0], i1 = distinct[1], i2 = distinct[2], swap;
+  if (ids[i1] < ids[i0]) { swap = i0; i0 = i1; i1 = swap; }
+  if (ids[i2] < ids[i1]) { swap = i1; i1 = i2; i2 = swap; }
+  if (ids[i1] < ids[i0]) { swap = i0; i0 = i1; i1 = swap; }
+  a = p[i0];
+  b = p[i1];
+  c = p[i2];
+  d = c;
+  return 3;
+}
+
+/// Where the ray meets triangle (a, b, c), with the patches' slack on its edges: 0 or 1 hits.
+int HitTriangle(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, out float t)
+{
+  const float slack = 1e-5;
+  vec3 e1 = b - a, e2 = c - a;
+  vec3 pv = cross(direction, e2);
+  float determinant = dot(e1, pv);
+  t = -3.0e38;
+  if (determinant == 0.0)
+    return 0; // along the plane
+  vec3 s = origin - a;
+  float u = dot(s, pv) / determinant;
+  vec3 q = cross(s, e1);
+  float v = dot(direction, q) / determinant;
+  if (!(u >= -slack && v >= -slack && u + v <= 1.0 + slack))
+    return 0;
+  t = dot(e2, q) / determinant;
+  return 1;
+}
+
+/// The hits of the ray on a canonical face of `corners` (3 or 4) corners, and the face's normal at
+/// each (either orientation; zero where a patch's edge is collapsed).
+int HitFace(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, int corners, out float t0,
+  out float t1, out vec3 n0, out vec3 n1)
+{
+  t1 = -3.0e38;
+  if (corners == 3)
+  {
+    n0 = cross(b - a, c - a);
+    n1 = n0;
+    return HitTriangle(origin, direction, a, b, c, t0);
+  }
+  vec2 uv0, uv1;
+  int hits = HitPatchAt(origin, direction, a, b, c, d, t0, t1, uv0, uv1);
+  n0 = PatchNormalAt(a, b, c, d, uv0);
+  n1 = PatchNormalAt(a, b, c, d, uv1);
+  return hits;
 }

@@ -11,15 +11,17 @@ uniform mat4 clipToModel;
 uniform mat4 modelToClip;
 uniform isamplerBuffer boundaryFaces;
 uniform vec2 viewportSize;
-uniform sampler2D previousExit; // ray parameter where the previous peel's traversal ended
+uniform sampler2D previousExit; // the previous peel's traversal: where and how it stopped, the
+                                // boundary face it entered by
 uniform int firstPeel;
 
 //UV::BilinearFace
 
 //UV::Hexahedron
 
-/// The boundary face as the exact bilinear patch, parameterised as every cell sharing it would.
-void BoundaryPatch(out vec3 a, out vec3 b, out vec3 c, out vec3 d)
+/// The boundary face as the exact bilinear patch or triangle, parameterised as every cell sharing it
+/// would; returns its corner count.
+int BoundaryPatch(out vec3 a, out vec3 b, out vec3 c, out vec3 d)
 {
   ivec4 cellFace = texelFetch(boundaryFaces, boundaryFace);
   uint cellIds[8];
@@ -31,15 +33,15 @@ void BoundaryPatch(out vec3 a, out vec3 b, out vec3 c, out vec3 d)
     qi[k] = cellIds[FaceCorner(cellFace.y, k)];
     q[k] = PointPosition(qi[k]);
   }
-  CanonicalQuad(q, qi, a, b, c, d);
+  return CanonicalFace(q, qi, a, b, c, d);
 }
 
 /// The nearest ray parameter beyond `after` where the ray enters the mesh through the patch, or 3e38.
-float EntryParameter(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, float after)
+float EntryParameter(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, int corners, float after)
 {
   float h0, h1;
-  vec2 uv0, uv1;
-  int hits = HitPatchAt(origin, direction, a, b, c, d, h0, h1, uv0, uv1);
+  vec3 n0, n1;
+  int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
   if (hits == 0)
   {
     // Rasterisation put this pixel on this face, the exact patch just misses it (its centre is
@@ -50,8 +52,8 @@ float EntryParameter(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d
   }
   // Only where the ray enters the mesh: the patch's own normal there, turned outward (a curved
   // boundary face can be entered on one part and left on another).
-  vec3 normal0 = OrientedNormal(PatchNormalAt(a, b, c, d, uv0), outwardNormal);
-  vec3 normal1 = OrientedNormal(PatchNormalAt(a, b, c, d, uv1), outwardNormal);
+  vec3 normal0 = OrientedNormal(n0, outwardNormal);
+  vec3 normal1 = OrientedNormal(n1, outwardNormal);
   float t = 3.0e38;
   if (h0 > after && dot(normal0, direction) < 0.0)
     t = h0;
@@ -65,9 +67,18 @@ void main()
   vec3 origin, direction;
   EyeRay(PixelNdc(gl_FragCoord.xy, viewportSize), clipToModel, origin, direction);
   vec3 a, b, c, d;
-  BoundaryPatch(a, b, c, d);
-  float after = firstPeel == 1 ? -3.0e38 : texelFetch(previousExit, ivec2(gl_FragCoord.xy), 0).r;
-  float t = EntryParameter(origin, direction, a, b, c, d, after);
+  int corners = BoundaryPatch(a, b, c, d);
+  // A later peel starts where the last walk stopped (uvHexahedralTraverseFS.glsl's stopKind). Where
+  // it left the mesh through a boundary face, or lost the ray at an edge, a face entered right there
+  // counts too: the other side of an internal wall of the mesh (two layers of cells on coincident,
+  // unshared points), whose crossing rounds to either side of the stop -- but not the face the lost
+  // walk entered by, which would lose it again.
+  vec4 exit = texelFetch(previousExit, ivec2(gl_FragCoord.xy), 0);
+  if (firstPeel == 0 && exit.g > 1.5 && boundaryFace == int(exit.b))
+    discard;
+  float wall = exit.g > 0.5 ? 1e-5 * (1.0 + abs(exit.r)) : 0.0;
+  float after = firstPeel == 1 ? -3.0e38 : exit.r - wall;
+  float t = EntryParameter(origin, direction, a, b, c, d, corners, after);
   if (!(t < 3.0e38))
   {
     discard; // the ray leaves the mesh here, or this face was traversed already

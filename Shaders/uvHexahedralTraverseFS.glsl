@@ -3,10 +3,13 @@
 // vtkHexahedralRayCastMapper, traversal pass (full screen): from the boundary face the entry pass
 // found, walks the ray through the hexahedra by face adjacency and integrates the exact trilinear
 // field in each (the GPU twin of uvHexahedronRay.h: same steps, same names). Writes the composited
-// colour (front to back, premultiplied, alpha) and where the walk left the mesh (for the next peel).
+// colour (front to back, premultiplied, alpha) and, for the next peel, where and how the walk ended
+// and the boundary face it entered by.
 //
 // Each cell's field is the cubic of its corner values along the ray, in the cell's affine frame
-// (exact for every parallelepiped). Faces are exact bilinear patches, parameterised the same way by
+// (exact for every parallelepiped). Tetrahedra, pyramids and wedges come as hexahedra with repeated
+// corners (uvHexahedralMesh.h), whose trilinear map is their own: a tetrahedron's field is linear,
+// the others' go through the isoparametric inverse; their triangular faces are flat. Faces are exact bilinear patches, parameterised the same way by
 // every cell (uvBilinearFaceLib.glsl): the exit found in one cell is the entry of the next.
 //
 // Isosurfaces are further cuts: where the cubic crosses an isovalue the surface's colour is
@@ -43,6 +46,10 @@ const float noExit = 3.0e38; // a ray parameter beyond every other
 
 vec3 colour = vec3(0.0);
 float transmittance = 1.0;
+// How the walk ended, for the next peel's entry pass: opaque, out of the mesh through a boundary
+// face, or lost at an edge (Relocate found no cell ahead).
+const float STOPPED = 0.0, LEFT_THROUGH_BOUNDARY = 1.0, LOST = 2.0;
+float stopKind = STOPPED;
 
 //UV::TransferFunction
 
@@ -70,6 +77,19 @@ float scalars[8];
 // Its isoparametric map, x = p0 + b r + c s + d t + e rs + f rt + g st + h rst: the Jacobian, the
 // inverse map and the curved-cell test read it.
 vec3 mapB, mapC, mapD, mapE, mapF, mapG, mapH;
+// What its repeated corners make it, and for a tetrahedron its field's constant gradient.
+const int HEXAHEDRON = 0, WEDGE = 1, PYRAMID = 2, TETRAHEDRON = 3;
+int cellShape;
+vec3 tetrahedronGradient;
+
+/// A tetrahedron (corners 0, 1, 2, 4 distinct) has a linear field: its gradient.
+vec3 LinearFieldGradient()
+{
+  mat3 edges = mat3(points[1] - points[0], points[2] - points[0], points[4] - points[0]);
+  if (abs(determinant(edges)) < 1e-30)
+    return vec3(0.0);
+  return transpose(inverse(edges)) * vec3(scalars[1] - scalars[0], scalars[2] - scalars[0], scalars[4] - scalars[0]);
+}
 
 void LoadCell(int cell)
 {
@@ -93,6 +113,28 @@ void LoadCell(int cell)
   mapF = points[0] - points[1] - points[4] + points[5];
   mapG = points[0] - points[3] - points[4] + points[7];
   mapH = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
+  bool apex = cellIds[4] == cellIds[5] && cellIds[5] == cellIds[6] && cellIds[6] == cellIds[7];
+  bool collapsedEdge = cellIds[2] == cellIds[3];
+  cellShape = apex ? (collapsedEdge ? TETRAHEDRON : PYRAMID)
+                   : (collapsedEdge && cellIds[6] == cellIds[7] ? WEDGE : HEXAHEDRON);
+  tetrahedronGradient = cellShape == TETRAHEDRON ? LinearFieldGradient() : vec3(0.0);
+}
+
+/// How many distinct corners face f of the loaded cell has (under 3: collapsed, no face).
+int FaceCornerCount(int f)
+{
+  uint ids[4];
+  for (int k = 0; k < 4; ++k)
+    ids[k] = cellIds[FaceCorner(f, k)];
+  int count = 1;
+  for (int i = 1; i < 4; ++i)
+  {
+    bool repeated = false;
+    for (int j = 0; j < i; ++j)
+      repeated = repeated || ids[j] == ids[i];
+    count += repeated ? 0 : 1;
+  }
+  return count;
 }
 
 /// The neighbour across each face of `cell`: neighbour * 8 + its face, or -1.
@@ -140,6 +182,8 @@ bool IsCurved(HexahedronFrame frame)
 /// The gradient of the loaded cell's trilinear field at xi, in model space.
 vec3 FieldGradient(vec3 xi)
 {
+  if (cellShape == TETRAHEDRON)
+    return tetrahedronGradient;
   float r = xi.x, s = xi.y, t = xi.z;
   float a100 = scalars[1] - scalars[0], a010 = scalars[3] - scalars[0], a001 = scalars[4] - scalars[0];
   float a110 = scalars[0] - scalars[1] + scalars[2] - scalars[3];
@@ -499,8 +543,14 @@ void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd)
   vec3 xi0 = FrameCoordinates(frame, entryPoint);
   vec3 xi1 = FrameCoordinates(frame, exitPoint);
   vec4 field;
-  if (exactEnds == 1 && IsCurved(frame))
-    field = FieldThroughExactEnds(entryPoint, exitPoint, xi0, xi1);
+  if (cellShape == TETRAHEDRON)
+  {
+    float f0 = scalars[0] + dot(tetrahedronGradient, entryPoint - points[0]);
+    float f1 = scalars[0] + dot(tetrahedronGradient, exitPoint - points[0]);
+    field = vec4(f0, f1 - f0, 0.0, 0.0);
+  }
+  else if ((exactEnds == 1 || cellShape != HEXAHEDRON) && IsCurved(frame))
+    field = FieldThroughExactEnds(entryPoint, exitPoint, xi0, xi1); // a collapsed cell is never its frame
   else
     field = TrilinearAlongSegment(scalars, xi0, xi1);
   segmentXi0 = xi0;
@@ -534,7 +584,8 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
   {
     if (f == enterFace)
       continue;
-    // The face exactly, as the bilinear patch through its corners (parameterised canonically).
+    // The face exactly, as the bilinear patch (or triangle) through its corners, parameterised
+    // canonically; a collapsed face is no way out.
     vec3 q[4];
     uint qi[4];
     for (int k = 0; k < 4; ++k)
@@ -543,19 +594,21 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
       qi[k] = cellIds[FaceCorner(f, k)];
     }
     vec3 a, b, c, d;
-    CanonicalQuad(q, qi, a, b, c, d);
+    int corners = CanonicalFace(q, qi, a, b, c, d);
+    if (corners < 3)
+      continue;
     float h0, h1;
-    vec2 uv0, uv1;
-    int hits = HitPatchAt(origin, direction, a, b, c, d, h0, h1, uv0, uv1);
+    vec3 n0, n1;
+    int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
     // Only where the ray leaves the cell: near an edge the ray can also meet (within the edge
     // slack) a face it enters through, just after the entry on the neighbouring face.
     vec3 outward = PatchNormal(a, b, c, d, cellCentre);
-    if (hits > 0 && h0 > t + tolerance && h0 < exitT && Leaves(PatchNormalAt(a, b, c, d, uv0), outward, direction))
+    if (hits > 0 && h0 > t + tolerance && h0 < exitT && Leaves(n0, outward, direction))
     {
       exitT = h0;
       exitFace = f;
     }
-    if (hits > 1 && h1 > t + tolerance && h1 < exitT && Leaves(PatchNormalAt(a, b, c, d, uv1), outward, direction))
+    if (hits > 1 && h1 > t + tolerance && h1 < exitT && Leaves(n1, outward, direction))
     {
       exitT = h1;
       exitFace = f;
@@ -574,12 +627,27 @@ int StepTowards(vec3 target, int cell, out bool inside)
 {
   int across[6];
   CellNeighbours(cell, across);
-  vec3 xi = InverseTrilinear(target, FrameCoordinates(MakeHexahedronFrame(points), target));
-  float violation[6] = float[6](-xi.z, xi.z - 1.0, -xi.y, xi.x - 1.0, xi.y - 1.0, -xi.x);
+  float violation[6];
+  if (cellShape == TETRAHEDRON)
+  {
+    // Barycentric coordinates, exact (the collapsed map's inverse is singular at the apex): each
+    // face is violated by the coordinate of the corner opposite it.
+    mat3 edges = mat3(points[1] - points[0], points[2] - points[0], points[4] - points[0]);
+    vec3 l = inverse(edges) * (target - points[0]);
+    float l0 = 1.0 - l.x - l.y - l.z;
+    violation = float[6](-l.z, -1.0, -l.y, -l0, -1.0, -l.x);
+  }
+  else
+  {
+    vec3 xi = InverseTrilinear(target, FrameCoordinates(MakeHexahedronFrame(points), target));
+    violation = float[6](-xi.z, xi.z - 1.0, -xi.y, xi.x - 1.0, xi.y - 1.0, -xi.x);
+  }
   int outside = -1, outsideBoundary = -1;
   float farthest = 1e-6, farthestBoundary = 1e-6;
   for (int f = 0; f < 6; ++f)
   {
+    if (FaceCornerCount(f) < 3)
+      continue; // collapsed: the others bound the cell
     if (across[f] >= 0 && violation[f] > farthest)
     {
       farthest = violation[f];
@@ -650,6 +718,7 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
       if (!Relocate(origin, direction, t, cell, ahead))
       {
         exitParameter = t;
+        stopKind = LOST;
         break;
       }
       enterFace = -1;
@@ -667,6 +736,7 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
     if (next < 0)
     {
       exitParameter = exitT; // left the mesh: the next peel looks beyond here
+      stopKind = LEFT_THROUGH_BOUNDARY;
       break;
     }
     cell = next / 8;
@@ -706,5 +776,5 @@ void main()
   if ((start.g >= 0.0 || fromEye) && transmittance > 1.0 - opacityThreshold)
     exitParameter = CastRay(pixel, start, fromEye);
   gl_FragData[0] = vec4(colour, 1.0 - transmittance);
-  gl_FragData[1] = vec4(exitParameter, 0.0, 0.0, 1.0);
+  gl_FragData[1] = vec4(exitParameter, stopKind, fromEye ? -1.0 : start.g, 1.0);
 }

@@ -42,7 +42,7 @@ TEST(HexahedronMesh, NeighboursAreMutualAndTheRestIsBoundary)
 {
   const Block block(3);
   std::vector<double> progress;
-  const uv::HexahedralFaces faces = uv::MakeHexahedralFaces(block.CellPoints, Serial,
+  const uv::HexahedralFaces faces = uv::MakeHexahedralFaces(block.CellPoints, {}, Serial,
     [](auto begin, auto end) { std::sort(begin, end); }, [&](double f) { progress.push_back(f); });
   EXPECT_EQ(progress, (std::vector<double>{ 0.5, 1.0 }));
   ASSERT_EQ(faces.Neighbours.size(), 8u * 3u);
@@ -57,6 +57,69 @@ TEST(HexahedronMesh, NeighboursAreMutualAndTheRestIsBoundary)
   ASSERT_EQ(faces.Boundary.size(), 4u * (6 * 3 - 2 * 2));
   for (std::size_t b = 0; b < faces.Boundary.size(); b += 4)
     EXPECT_EQ(faces.Neighbours[8 * faces.Boundary[b] + faces.Boundary[b + 1]], -1);
+}
+
+TEST(HexahedronMesh, CollapsedCellsShareTrianglesAndHaveNoCollapsedFaces)
+{
+  // A unit cube split into two wedges by its diagonal plane x = y, and a tetrahedron on the
+  // second wedge's triangle at z = 1, through the *AsHexahedron orders. Cube points: (i, j, k) as
+  // i + 2 j + 4 k; the apex is point 8.
+  const std::uint32_t wedgeA[6] = { 0, 1, 3, 4, 5, 7 }; // below the diagonal: (0,0) (1,0) (1,1)... as VTK
+  const std::uint32_t wedgeB[6] = { 0, 3, 2, 4, 7, 6 };
+  const std::uint32_t tetrahedron[4] = { 4, 6, 7, 8 };
+  std::vector<std::uint32_t> cells;
+  for (const std::uint32_t* wedge : { wedgeA, wedgeB })
+    for (int k : uv::WedgeAsHexahedron)
+      cells.push_back(wedge[k]);
+  for (int k : uv::TetrahedronAsHexahedron)
+    cells.push_back(tetrahedron[k]);
+  const uv::HexahedralFaces faces =
+    uv::MakeHexahedralFaces(cells, {}, Serial, [](auto begin, auto end) { std::sort(begin, end); }, [](double) {});
+  // Each wedge: 2 triangles, 3 quads, 1 collapsed face; the tetrahedron: 4 triangles, 2 collapsed.
+  // Shared: the diagonal quad (wedge A / wedge B) and the top triangle of wedge B / the tetrahedron.
+  int joined = 0;
+  for (int cell = 0; cell < 3; ++cell)
+    for (int f = 0; f < 6; ++f)
+    {
+      const int across = faces.Neighbours[8 * cell + f];
+      if (across < 0)
+        continue;
+      ++joined;
+      EXPECT_EQ(faces.Neighbours[across], 8 * cell + f);
+    }
+  EXPECT_EQ(joined, 4);
+  EXPECT_EQ(faces.Boundary.size(), 4u * ((5 - 1) + (5 - 2) + (4 - 1)));
+  std::array<std::uint32_t, 4> key;
+  const std::uint32_t triangle[4] = { 7, 3, 3, 5 }, edge[4] = { 2, 2, 6, 6 };
+  EXPECT_EQ(uv::FaceKey(triangle, key), 3);
+  EXPECT_EQ(key, (std::array<std::uint32_t, 4>{ 3, 5, 7, uv::NoPoint }));
+  EXPECT_EQ(uv::FaceKey(edge, key), 2);
+}
+
+TEST(HexahedronMesh, RepeatedPointsStillJoinTheirCells)
+{
+  // Two cubes of Block(2) whose shared face's points are repeated for the second cube (as some
+  // writers store meshes): joined through the coincident points' representatives, not by id.
+  Block block(2);
+  const std::size_t pointCount = block.PointData.size() / 4;
+  for (int k = 8; k < 16; ++k)
+  {
+    std::uint32_t& id = block.CellPoints[k];
+    if (block.PointData[4 * id] != 1.0f)
+      continue; // not on the shared face x = 1
+    block.PointData.insert(block.PointData.end(), block.PointData.begin() + 4 * id, block.PointData.begin() + 4 * id + 4);
+    id = static_cast<std::uint32_t>(block.PointData.size() / 4 - 1);
+  }
+  ASSERT_EQ(block.PointData.size() / 4, pointCount + 4);
+  auto sort = [](auto begin, auto end) { std::sort(begin, end); };
+  EXPECT_EQ(uv::MakeHexahedralFaces(block.CellPoints, {}, Serial, sort, [](double) {}).Neighbours[8 * 0 + 3], -1);
+  const std::vector<std::uint32_t> same = uv::CoincidentPointRepresentatives(
+    block.PointData, [](auto begin, auto end, auto less) { std::sort(begin, end, less); });
+  for (std::size_t p = pointCount; p < pointCount + 4; ++p)
+    EXPECT_LT(same[p], pointCount);
+  const uv::HexahedralFaces faces = uv::MakeHexahedralFaces(block.CellPoints, same, Serial, sort, [](double) {});
+  EXPECT_EQ(faces.Neighbours[8 * 0 + 3], 8 * 1 + 5);
+  EXPECT_EQ(faces.Boundary.size(), 4u * 10);
 }
 
 TEST(HexahedronMesh, CellHoldingAPointAndTangledCells)

@@ -48,8 +48,6 @@ mixed.ClipType.Normal = [1.0, 0.7, 0.4]
 mixed.Crinkleclip = 0
 tetrahedra = Tetrahedralize(Input=hexahedra)  # noqa: F405
 inputs = [("hexahedra", hexahedra), ("mixed", mixed), ("tetrahedra", tetrahedra)]
-if mapper == "hexahedral":
-    inputs = inputs[:1]  # it takes hexahedra only (mixed meshes: a later issue)
 
 
 def covered_share(view):

@@ -17,7 +17,8 @@ from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedralRayCastMappe
                                 vtkPreIntegratedTetrahedraMapper, vtkUnstructuredVolumeReferenceRenderer,
                                 vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkFloatArray, vtkIdList, vtkIdTypeArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import (VTK_POLYHEDRON, VTK_QUADRATIC_TETRA, vtkGenericCell, vtkImageData,
+from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, VTK_POLYHEDRON, VTK_PYRAMID, VTK_QUADRATIC_TETRA, VTK_TETRA,
+                                           VTK_WEDGE, vtkGenericCell, vtkImageData,
                                            vtkPiecewiseFunction, vtkUnstructuredGrid)
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
@@ -58,6 +59,82 @@ def analytic(resolution, field=ML, distortion=0, cells=vtkAnalyticMeshSource.SIX
 
 def analytic_hexahedra(resolution, field=ML, distortion=0):
     return analytic(resolution, field, distortion, vtkAnalyticMeshSource.HEXAHEDRA)
+
+
+def hex_dominant(resolution, distortion=vtkAnalyticMeshSource.JITTER):
+    """analytic_hexahedra(resolution) made hex-dominant and conforming, with every linear 3D cell
+    type: the columns of the lowest x third split into two wedges each (the same diagonal all the
+    way up, so the triangles match), and two neighbouring hexahedra near the centre split into six
+    pyramids about their centres (the mean of the corners, valued the mean of the corner values),
+    the two pyramids on the face they share each split into two tetrahedra on the same diagonal."""
+    hexahedra = analytic_hexahedra(resolution, distortion=distortion)
+    points = vtkPoints()
+    points.DeepCopy(hexahedra.GetPoints())
+    values = vtkDoubleArray()
+    values.DeepCopy(hexahedra.GetPointData().GetScalars())
+    out = vtkUnstructuredGrid()
+    out.SetPoints(points)
+    spacing = 2.0 / resolution
+
+    def position(i):
+        return points.GetPoint(i)
+
+    def index_of(ids):
+        centre = [sum(position(i)[a] for i in ids) / len(ids) for a in range(3)]
+        return [min(resolution - 1, max(0, int((c + 1.0) / spacing))) for c in centre]
+
+    def add(kind, ids):
+        out.InsertNextCell(kind, len(ids), list(ids))
+
+    def inward(quad, apex):
+        """The quad turned so its right-hand normal points at `apex` (VTK's pyramid base)."""
+        p = [position(i) for i in quad]
+        normal = cross(sub(p[2], p[0]), sub(p[3], p[1]))
+        centre = [sum(q[a] for q in p) / 4 for a in range(3)]
+        return quad if dot(normal, sub(apex, centre)) > 0 else quad[::-1]
+
+    middle = resolution // 2
+    split_pair = ([resolution - 2, middle, middle], [resolution - 1, middle, middle])
+    centres = {}
+    for c in range(hexahedra.GetNumberOfCells()):
+        ids = [hexahedra.GetCell(c).GetPointId(k) for k in range(8)]
+        index = index_of(ids)
+        if index[0] < resolution // 3:
+            # VTK's wedge base faces away from its top: (0, 2, 1) of the hexahedron's bottom.
+            add(VTK_WEDGE, [ids[0], ids[2], ids[1], ids[4], ids[6], ids[5]])
+            add(VTK_WEDGE, [ids[0], ids[3], ids[2], ids[4], ids[7], ids[6]])
+        elif index in split_pair:
+            centre = [sum(position(i)[a] for i in ids) / 8 for a in range(3)]
+            apex = points.InsertNextPoint(*centre)
+            values.InsertNextValue(sum(values.GetValue(i) for i in ids) / 8)
+            centres[tuple(index)] = (ids, apex, centre)
+        else:
+            add(VTK_HEXAHEDRON, ids)
+    shared = set.intersection(*(set(ids) for ids, _, _ in centres.values()))
+    for ids, apex, centre in centres.values():
+        for face in ((0, 4, 7, 3), (1, 2, 6, 5), (0, 1, 5, 4), (3, 7, 6, 2), (0, 3, 2, 1), (4, 5, 6, 7)):
+            quad = inward([ids[k] for k in face], centre)
+            if set(quad) != shared:
+                add(VTK_PYRAMID, quad + [apex])
+                continue
+            start = quad.index(min(quad))  # the diagonal through the smallest id, from both sides
+            quad = quad[start:] + quad[:start]
+            for triangle in ((quad[0], quad[1], quad[2]), (quad[0], quad[2], quad[3])):
+                add(VTK_TETRA, list(triangle) + [apex])  # the base's normal points at the apex
+    out.GetPointData().SetScalars(values)
+    return out
+
+
+def sub(a, b):
+    return [x - y for x, y in zip(a, b)]
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
 
 def as_polyhedra(mesh):

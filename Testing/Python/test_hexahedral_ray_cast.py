@@ -8,16 +8,16 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
-from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic_hexahedra, camera_for,  # noqa: E402
-                      covered_colour_error, finite_image, inside_camera, load_shared, plane_scene_setup, reference,
-                      rmse, thin_shell_property, transparent_property)
+from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic_hexahedra, as_polyhedra,  # noqa: E402
+                      camera_for, covered_colour_error, finite_image, hex_dominant, inside_camera, load_shared,
+                      plane_scene_setup, reference, rmse, thin_shell_property, transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,  # noqa: E402
                                 vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
                                 vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints  # noqa: E402
-from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, vtkPiecewiseFunction, vtkStructuredGrid,  # noqa: E402
-                                           vtkUnstructuredGrid)
+from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, VTK_LINE, VTK_PYRAMID, VTK_QUAD,  # noqa: E402
+                                           VTK_TETRA, VTK_VERTEX, VTK_WEDGE, vtkPiecewiseFunction, vtkStructuredGrid, vtkUnstructuredGrid)
 from vtkmodules.vtkFiltersCore import vtkAppendFilter  # noqa: E402
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolumeProperty  # noqa: E402
@@ -143,6 +143,68 @@ class AccuracyTests(SceneTestCase):
         self.check(mesh, prop, inside_camera(), 5e-3, size=96)
 
 
+class MixedCellTests(SceneTestCase):
+    """Tetrahedra, pyramids and wedges walk with the hexahedra, as hexahedra with repeated corners."""
+
+    def check(self, mesh, camera, bound, size=96):
+        scalars = mesh.GetPointData().GetScalars() or mesh.GetCellData().GetScalars()
+        prop = uvrender.volume_property(scalars.GetRange())
+        prop.SetScalarOpacityUnitDistance(0.3)
+        scene = HexScene(mesh, prop, camera, size)
+        image = scene.render()
+        self.assertEqual(scene.events.errors, 0)
+        self.assertEqual(scene.mapper.GetNumberOfCells(), mesh.GetNumberOfCells())
+        error, worst = rmse(image, reference(mesh, prop, camera, size))
+        print(f"\n  RMSE {error:.3g}, max {worst:.3g} (bound {bound})", end="")
+        self.assertLess(error, bound)
+        return image
+
+    def test_hex_dominant_mesh(self):
+        mesh = hex_dominant(6)
+        kinds = {}
+        for c in range(mesh.GetNumberOfCells()):
+            kinds[mesh.GetCellType(c)] = kinds.get(mesh.GetCellType(c), 0) + 1
+        self.assertEqual(kinds, {VTK_WEDGE: 2 * 2 * 36, VTK_HEXAHEDRON: 4 * 36 - 2, VTK_PYRAMID: 10, VTK_TETRA: 4})
+        self.check(mesh, camera_for(mesh), 2e-3)
+        self.check(mesh, camera_for(mesh, 200, -30), 2e-3)  # from the wedges' side
+
+    def test_cell_data(self):
+        mesh = hex_dominant(5)
+        values = vtkDoubleArray()
+        values.SetName("mean")
+        for c in range(mesh.GetNumberOfCells()):
+            ids = mesh.GetCell(c).GetPointIds()
+            point_values = [mesh.GetPointData().GetScalars().GetValue(ids.GetId(k)) for k in range(ids.GetNumberOfIds())]
+            values.InsertNextValue(sum(point_values) / len(point_values))
+        mesh.GetPointData().Initialize()
+        mesh.GetCellData().SetScalars(values)
+        self.check(mesh, camera_for(mesh), 2e-3)
+
+    def test_tetrahedra_alone(self):
+        split = vtkHexahedraToTetrahedra()
+        split.SetInputData(analytic_hexahedra(4, distortion=vtkAnalyticMeshSource.JITTER))
+        split.Update()
+        self.check(split.GetOutput(), camera_for(split.GetOutput()), 2e-3)
+
+    def test_camera_inside(self):
+        self.check(hex_dominant(5), inside_camera(), 5e-3)
+
+    def test_flat_cells_are_left_out_with_one_warning(self):
+        mesh = hex_dominant(4)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        camera = camera_for(mesh)
+        without = HexScene(mesh, prop, camera, 64).render()
+        with_flat = vtkUnstructuredGrid()
+        with_flat.DeepCopy(mesh)
+        with_flat.InsertNextCell(VTK_QUAD, 4, [0, 1, 6, 5])
+        with_flat.InsertNextCell(VTK_LINE, 2, [0, 7])
+        with_flat.InsertNextCell(VTK_VERTEX, 1, [3])
+        scene = HexScene(with_flat, prop, camera, 64)
+        image = scene.render()
+        self.assertEqual((scene.events.errors, scene.events.warnings), (0, 1))
+        self.assertEqual(rmse(image, without)[1], 0.0)
+
+
 class IsosurfaceTests(SceneTestCase):
     def test_position_against_an_opaque_shell_in_the_reference(self):
         # An unlit opaque isosurface is the limit of a thin, very opaque shell of the transfer
@@ -202,11 +264,9 @@ class IsosurfaceTests(SceneTestCase):
 
 
 class InputTests(SceneTestCase):
-    def test_tetrahedra_are_an_error_naming_the_route(self):
-        split = vtkHexahedraToTetrahedra()
-        split.SetInputData(analytic_hexahedra(2))
-        split.Update()
-        scene = HexScene(split.GetOutput(), uvrender.volume_property((0, 1)), camera_for(analytic_hexahedra(2)), 48)
+    def test_polyhedra_are_an_error_naming_the_route(self):
+        scene = HexScene(as_polyhedra(analytic_hexahedra(2)), uvrender.volume_property((0, 1)),
+                         camera_for(analytic_hexahedra(2)), 48)
         scene.render()
         self.assertEqual(scene.events.errors, 1)
 

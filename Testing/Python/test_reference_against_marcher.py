@@ -21,7 +21,9 @@ from fixtures import (HexScene, Scene, SceneTestCase, analytic, analytic_hexahed
                       largest_difference, load_shared, march, reference)
 
 from unstructuredvolume import vtkAnalyticMeshSource, vtkBarycentricShellMapper, vtkHexahedraToTetrahedra  # noqa: E402
-from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_TETRA, VTK_VOXEL, vtkUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, VTK_LINE, VTK_POLY_LINE, VTK_POLY_VERTEX,  # noqa: E402
+                                           VTK_POLYGON, VTK_PYRAMID, VTK_QUAD, VTK_TETRA, VTK_TRIANGLE,
+                                           VTK_TRIANGLE_STRIP, VTK_VERTEX, VTK_VOXEL, VTK_WEDGE, vtkUnstructuredGrid)
 
 SIZE = 96
 PIXELS = 2000
@@ -109,11 +111,13 @@ for _name, _make, _steps in GENERATED:
 
 # The GPU mappers against the marcher: MAPPER_PIXELS random pixels plus the WORST_PIXELS where the
 # mapper and the reference differ most, on every real mesh. The hexahedral mapper takes the
-# hexahedral meshes themselves; the tetrahedral mappers take every mesh split by
+# meshes themselves (every one of linear 3D cells); the tetrahedral mappers take every mesh split by
 # vtkHexahedraToTetrahedra (the marcher then marches the same split mesh). Bounds on the RMSE over
 # those pixels, per mapper, from the measured errors: the tetrahedra mapper integrates exactly (its
 # error is the visibility order), the shells sample (128 samples across, early termination at
 # 0.999), the hexahedral mapper in float with early termination at 0.99.
+FLAT_CELLS = {VTK_VERTEX, VTK_POLY_VERTEX, VTK_LINE, VTK_POLY_LINE, VTK_TRIANGLE, VTK_TRIANGLE_STRIP, VTK_POLYGON,
+              VTK_QUAD}  # what every mapper leaves out
 MAPPER_PIXELS = 300
 WORST_PIXELS = 20
 MAPPER_BOUNDS = {"preintegrated": 2e-3, "shells": 1.5e-2, "hexahedral": 1e-2}
@@ -149,7 +153,7 @@ class MappersAgainstMarcher(SceneTestCase):
             splitter.Update()
             split = splitter.GetOutput()
         runs = [("preintegrated", split), ("shells", split)]
-        if types <= {VTK_HEXAHEDRON, VTK_VOXEL}:
+        if types - FLAT_CELLS <= {VTK_HEXAHEDRON, VTK_VOXEL, VTK_TETRA, VTK_WEDGE, VTK_PYRAMID}:
             runs.append(("hexahedral", mesh))
         chooser = random.Random(zlib.crc32(f"mappers {mesh.GetNumberOfCells()}".encode()))
         randoms = chooser.sample(range(SIZE * SIZE), MAPPER_PIXELS)
