@@ -161,6 +161,37 @@ HexahedralFaces MakeHexahedralFaces(const std::vector<std::uint32_t>& cellPoints
   return result;
 }
 
+/// For a cell scalar's isosurfaces on a tetrahedral mesh (4 point ids per tetrahedron in
+/// `tetrahedronPoints`, one value each): per tetrahedron, the value of the neighbour across the face
+/// opposite each corner, or its own where there is none (so no surface lies on a boundary face).
+/// The faces are matched as MakeHexahedralFaces matches a collapsed hexahedron's; `parallelFor` and
+/// `sort` as there.
+template <typename ParallelFor, typename Sort>
+std::vector<float> TetrahedronNeighbourValues(const std::vector<std::uint32_t>& tetrahedronPoints,
+  const std::vector<float>& values, ParallelFor&& parallelFor, Sort&& sort)
+{
+  const std::size_t count = values.size();
+  std::vector<std::uint32_t> collapsed(8 * count);
+  parallelFor(count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      for (int k = 0; k < 8; ++k)
+        collapsed[8 * t + k] = tetrahedronPoints[4 * t + TetrahedronAsHexahedron[k]];
+  });
+  const HexahedralFaces faces = MakeHexahedralFaces(collapsed, {}, parallelFor, sort, [](double) {});
+  // The collapsed hexahedron's face opposite each tetrahedron corner (TetrahedronAsHexahedron).
+  constexpr int oppositeFace[4] = { 3, 5, 2, 0 };
+  std::vector<float> across(4 * count);
+  parallelFor(count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      for (int k = 0; k < 4; ++k)
+      {
+        const std::int32_t neighbour = faces.Neighbours[8 * t + oppositeFace[k]];
+        across[4 * t + k] = neighbour < 0 ? values[t] : values[static_cast<std::size_t>(neighbour / 8)];
+      }
+  });
+  return across;
+}
+
 /// How many cells fold over themselves (uv::IsTangledHexahedron); `parallelFor` as above.
 template <typename ParallelFor>
 std::size_t CountTangledHexahedra(

@@ -77,6 +77,22 @@ private:
   std::vector<Isosurface> Surfaces;
 };
 
+/// The isosurfaces of a cell scalar (constant in each cell) are the faces between cells on either
+/// side of the value: a face from a cell of value `from` into one of value `to` holds each surface of
+/// `drawn` (ascending) with (from < v) != (to < v) -- a cell at exactly v counts as above it. Visits
+/// them in the order a ray crossing the face meets them (from `from` towards `to`).
+template <typename Visit>
+void ForEachSurfaceBetweenCells(const std::vector<Isosurface>& drawn, double from, double to, Visit&& visit)
+{
+  const std::size_t count = drawn.size();
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Isosurface& surface = drawn[from < to ? i : count - 1 - i];
+    if ((from < surface.Value) != (to < surface.Value))
+      visit(surface);
+  }
+}
+
 } // namespace uv
 
 #endif

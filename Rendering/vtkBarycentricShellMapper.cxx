@@ -298,7 +298,7 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
     return false;
   }
   this->DrawnIsosurfaces = self->GetIsosurfaces().Drawn(this->Now.ScalarOffset, this->Now.ScalarScale);
-  if (!this->Now.Textured && self->WarnCellScalarLimits(this->Mesh.Scalar, frame.Property->GetShade() != 0))
+  if (!this->Now.Textured && self->WarnCellScalarLimits(this->Mesh.Scalar, frame.Property->GetShade() != 0, false))
     this->DrawnIsosurfaces.clear(); // constant in each cell: no crossing inside one
   if (this->Now.Textured && (!this->DrawnIsosurfaces.empty() || self->RenderMode == CELL_PROJECTION))
   {

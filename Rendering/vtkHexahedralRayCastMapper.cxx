@@ -505,10 +505,9 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
   }
   const uv::ScalarNormalisation& normalisation = impl.Mesh.Points.Normalisation;
   impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(normalisation.Offset, normalisation.Scale);
-  // Constant in each cell: no isosurface crosses one; the volume is unlit (the shader lights only
-  // isosurfaces).
-  if (this->WarnCellScalarLimits(scalar, false))
-    impl.DrawnIsosurfaces.clear();
+  // A cell scalar's isosurfaces are faces between cells (the walk draws them as it crosses); the
+  // volume is unlit anyway (the shader lights only isosurfaces).
+  this->WarnCellScalarLimits(scalar, false, true);
   const glm::dvec3& center = impl.Mesh.Points.Center;
   impl.EyeCellOfFrame = frame.Parallel ? -1 : impl.Eye.Update(impl.Mesh, frame.EyeInModel(center));
   return true;

@@ -1,6 +1,7 @@
 #include "vtkPreIntegratedTetrahedraMapper.h"
 
 #include "uvCellVisibility.h"
+#include "uvHexahedralMesh.h"
 #include "uvIsosurfaceList.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
@@ -69,9 +70,18 @@ public:
   uvvtk::CentroidOrder Order;
   uvvtk::MeshWarnings Warned;
   bool NeedGradients = false, Shade = false;
+  // A cell scalar's isosurfaces (faces between cells): per tetrahedron the values across its faces,
+  // and its scalar range widened to them, so a transparent tetrahedron whose front face holds a
+  // surface is still drawn.
+  bool DrawCellSurfaces = false;
+  struct
+  {
+    std::vector<float> NeighbourValues, Low, High;
+    std::uint64_t BuiltFor = 0; // the mesh's CellsVersion
+  } CellSurfaces;
 
   // GPU state.
-  vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, DrawOrder;
+  vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, DrawOrder, NeighbourValues;
   vtkUnstructuredVolumeIndexBuffer OrderIndices, FanIndices;
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
@@ -82,7 +92,7 @@ public:
   void Release()
   {
     for (vtkUnstructuredVolumeBufferTexture* texture : { &this->TetrahedronPoints, &this->Points,
-           &this->PointGradients, &this->DrawOrder })
+           &this->PointGradients, &this->DrawOrder, &this->NeighbourValues })
       texture->Release();
     this->OrderIndices.Release();
     this->FanIndices.Release();
@@ -90,14 +100,41 @@ public:
     this->Isosurfaces.Release();
   }
 
-  /// Which tetrahedra are drawn: those with some extinction in their range or an isovalue in it.
+  /// Which tetrahedra are drawn: those with some extinction in their range or an isovalue in it
+  /// (for a cell scalar's surfaces, the range widened to the values across its faces).
   void UpdateVisible(bool skipInvisible)
   {
     const auto zeroSet = skipInvisible ? uv::ZeroExtinctionIntervals(this->TransferFunction.Nodes)
                                        : std::vector<std::pair<double, double>>();
-    if (this->Visible.Update(this->Mesh.CellsVersion, this->Mesh.ScalarLow, this->Mesh.ScalarHigh, zeroSet,
-          this->Isovalues, uvvtk::ParallelFor))
+    const bool widened = this->DrawCellSurfaces;
+    if (this->Visible.Update(2 * this->Mesh.CellsVersion + (widened ? 1 : 0),
+          widened ? this->CellSurfaces.Low : this->Mesh.ScalarLow,
+          widened ? this->CellSurfaces.High : this->Mesh.ScalarHigh, zeroSet, this->Isovalues, uvvtk::ParallelFor))
       this->Order.Invalidate();
+  }
+
+  /// The values across each tetrahedron's faces (of the input cells' shared faces), when the cells
+  /// changed.
+  void UpdateCellSurfaces()
+  {
+    if (this->CellSurfaces.BuiltFor == this->Mesh.CellsVersion)
+      return;
+    const std::vector<std::uint32_t>& drawn = this->Mesh.TetrahedronPoints;
+    std::vector<std::uint32_t> corners(drawn.size());
+    for (std::size_t i = 0; i < drawn.size(); ++i)
+      corners[i] = this->Mesh.CornerPoints[drawn[i]]; // the input's point ids: shared faces match
+    this->CellSurfaces.NeighbourValues = uv::TetrahedronNeighbourValues(corners, this->Mesh.ScalarLow,
+      uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
+    const std::size_t count = this->Mesh.Size();
+    this->CellSurfaces.Low.resize(count);
+    this->CellSurfaces.High.resize(count);
+    for (std::size_t t = 0; t < count; ++t)
+    {
+      const float* across = &this->CellSurfaces.NeighbourValues[4 * t];
+      this->CellSurfaces.Low[t] = std::min({ this->Mesh.ScalarLow[t], across[0], across[1], across[2], across[3] });
+      this->CellSurfaces.High[t] = std::max({ this->Mesh.ScalarHigh[t], across[0], across[1], across[2], across[3] });
+    }
+    this->CellSurfaces.BuiltFor = this->Mesh.CellsVersion;
   }
 
 };
@@ -192,8 +229,9 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
     return false;
   }
 
-  // Transfer function and isosurfaces, normalised like the scalar (a cell scalar has none).
-  const bool onCells = this->WarnCellScalarLimits(scalar, property->GetShade() != 0);
+  // Transfer function and isosurfaces, normalised like the scalar (a cell scalar's are faces between
+  // cells).
+  const bool onCells = this->WarnCellScalarLimits(scalar, property->GetShade() != 0, true);
   impl.TransferFunction.Update(property, impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale);
   if (impl.TransferFunction.Nodes.empty())
   {
@@ -201,11 +239,12 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
     return false;
   }
   impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale);
-  if (onCells)
-    impl.DrawnIsosurfaces.clear();
   impl.Isovalues.clear();
   for (const uv::Isosurface& s : impl.DrawnIsosurfaces)
     impl.Isovalues.push_back(s.Value);
+  impl.DrawCellSurfaces = onCells && !impl.Isovalues.empty();
+  if (impl.DrawCellSurfaces)
+    impl.UpdateCellSurfaces();
 
   impl.UpdateVisible(this->SkipInvisibleCells);
   if (impl.Visible.Drawn.empty())
@@ -215,7 +254,7 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
 
   // Gradients, only when something is lit.
   impl.Shade = property->GetShade() != 0 && !onCells;
-  impl.NeedGradients = impl.Shade || !impl.Isovalues.empty();
+  impl.NeedGradients = !onCells && (impl.Shade || !impl.Isovalues.empty()); // a face's normal lights a cell's
   if (impl.NeedGradients)
   {
     bool ignoredArray = false;
@@ -240,6 +279,8 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
     ++impl.MeshUploads;
   if (impl.NeedGradients)
     impl.PointGradients.Sync(window, impl.Gradients.Values, 4, impl.Gradients.Version);
+  if (impl.DrawCellSurfaces)
+    impl.NeighbourValues.Sync(window, impl.CellSurfaces.NeighbourValues, 4, impl.CellSurfaces.BuiltFor);
   if (impl.Nodes.Sync(window, impl.TransferFunction.Nodes))
     ++impl.TransferFunctionUploads;
   impl.Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(impl.DrawnIsosurfaces), 2, 4,
@@ -271,6 +312,7 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
   options.VertexPulling = pulling;
   options.Gradients = impl.NeedGradients;
   options.NodeTexture = uvgl::NodesNeedTexture(impl.TransferFunction.Nodes);
+  options.CellSurfaces = impl.DrawCellSurfaces;
   vtkShaderProgram* program =
     uvgl::ReadyProgram(frame.Window, vtkPreIntegratedTetrahedraPrograms::Sources(options));
   if (!program)
@@ -308,6 +350,8 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
   program->SetUniformi("opaqueDepth", sceneDepth->GetTextureUnit());
   if (impl.NeedGradients)
     impl.PointGradients.Bind(program, "pointGradients");
+  if (impl.DrawCellSurfaces)
+    impl.NeighbourValues.Bind(program, "neighbourValues");
 
   const std::size_t count = impl.Order.Order.size();
   target.GetNoAttributes()->Bind();
@@ -330,6 +374,8 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
   sceneDepth->Deactivate();
   if (impl.NeedGradients)
     impl.PointGradients.Unbind();
+  if (impl.DrawCellSurfaces)
+    impl.NeighbourValues.Unbind();
   impl.DrawnTetrahedra = static_cast<vtkIdType>(count);
   return true;
 }

@@ -29,6 +29,7 @@ struct vtkPreIntegratedTetrahedraPrograms
     bool VertexPulling = true; // else a geometry shader emits the fans
     bool Gradients = false;    // vertex gradients for lighting
     bool NodeTexture = false;  // more transfer-function nodes than fit in uniforms
+    bool CellSurfaces = false; // a cell scalar's isosurfaces, on the faces between cells
   };
 
   static uvgl::ProgramSources Sources(const Options& options)
@@ -36,6 +37,8 @@ struct vtkPreIntegratedTetrahedraPrograms
     std::string defines = uvgl::TransferFunctionDefines(options.NodeTexture);
     if (options.Gradients)
       defines += "#define UV_GRADIENTS\n";
+    if (options.CellSurfaces)
+      defines += "#define UV_CELL_SURFACES\n";
     const std::initializer_list<std::pair<const char*, const char*>> projection = {
       { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
     };
@@ -56,7 +59,9 @@ struct vtkPreIntegratedTetrahedraPrograms
     for (bool pulling : { true, false })
       for (bool gradients : { false, true })
         for (bool nodeTexture : { false, true })
-          all.push_back({ pulling, gradients, nodeTexture });
+          all.push_back({ pulling, gradients, nodeTexture, false });
+    for (bool pulling : { true, false })
+      all.push_back({ pulling, false, false, true });
     return all;
   }
 };

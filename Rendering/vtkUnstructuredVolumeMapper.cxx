@@ -73,20 +73,22 @@ bool vtkUnstructuredVolumeMapper::FindScalar(
   return true;
 }
 
-bool vtkUnstructuredVolumeMapper::WarnCellScalarLimits(const uvvtk::RenderedScalar& scalar, bool shade)
+bool vtkUnstructuredVolumeMapper::WarnCellScalarLimits(
+  const uvvtk::RenderedScalar& scalar, bool shade, bool facesBetweenCells)
 {
   if (!scalar.OnCells)
   {
     return false;
   }
-  const bool isosurfaces = this->GetNumberOfIsosurfaces() > 0;
+  const bool isosurfaces = this->GetNumberOfIsosurfaces() > 0 && !facesBetweenCells;
   if ((isosurfaces || shade) && !this->Base->WarnedCellScalarLimits)
   {
     vtkWarningMacro("rendering the " << scalar.Describe() << ", constant in each cell: "
                                      << (isosurfaces ? "isosurfaces are not drawn" : "")
                                      << (isosurfaces && shade ? " and " : "")
                                      << (shade ? "volume shading is off" : "")
-                                     << " (both need a field that varies inside cells)");
+                                     << " (" << (isosurfaces && shade ? "both need" : "it needs")
+                                     << " a field that varies inside cells)");
     this->Base->WarnedCellScalarLimits = true;
   }
   return true;

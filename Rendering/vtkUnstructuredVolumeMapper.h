@@ -109,9 +109,11 @@ protected:
   /// mode). False after reporting why there is none.
   bool FindScalar(vtkDataSet* data, vtkVolumeProperty* property, uvvtk::RenderedScalar& scalar);
 
-  /// For a cell scalar (constant in each cell): says once that isosurfaces and shading, which need a
-  /// field varying inside cells, are not drawn. Returns true when the scalar is on cells.
-  bool WarnCellScalarLimits(const uvvtk::RenderedScalar& scalar, bool shade);
+  /// For a cell scalar (constant in each cell): says once that shading, which needs a field varying
+  /// inside cells, is off, and that isosurfaces are not drawn unless the mapper draws a cell scalar's
+  /// (`facesBetweenCells`: the faces between cells on either side of the value). Returns true when
+  /// the scalar is on cells.
+  bool WarnCellScalarLimits(const uvvtk::RenderedScalar& scalar, bool shade, bool facesBetweenCells);
 
   /// The isosurfaces, in value order.
   const uv::IsosurfaceList& GetIsosurfaces() const;

@@ -2,6 +2,7 @@
 
 #include "uvChebyshevSeries.h"
 #include "uvCurvedCell.h"
+#include "uvIsosurfaceList.h"
 #include "uvLinearCellSplit.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
@@ -495,16 +496,40 @@ struct RayScratch
   std::vector<std::reference_wrapper<const SegmentScalar>> Active; // those present on one stretch
 };
 
+/// The isosurfaces of a cell scalar as the reference draws them: on the faces between cells
+/// (uv::ForEachSurfaceBetweenCells), unlit.
+struct CellFaceSurfaces
+{
+  std::vector<uv::Isosurface> Drawn; // ascending, in the scalar's own values
+  double Shading = 1.0;              // the property's ambient + diffuse
+  double Touching = 0.0;             // how near a segment's start to the last one's end is a face
+                                     // (and how much overlap is rounding)
+
+  /// Composites the surfaces on the face where a ray leaves a cell of value `from` at `exit` and
+  /// enters one of value `to` at `entry`.
+  void Cross(double exit, double from, double entry, double to, uv::RayAccumulator& accumulator) const
+  {
+    if (std::abs(entry - exit) > this->Touching)
+      return; // a gap: the ray left the mesh between them
+    uv::ForEachSurfaceBetweenCells(this->Drawn, from, to, [&](const uv::Isosurface& surface) {
+      const glm::dvec3 colour(surface.Color[0], surface.Color[1], surface.Color[2]);
+      const double depth = surface.Opacity < 1.0 ? -std::log1p(-surface.Opacity) : HUGE_VAL;
+      accumulator.Composite(surface.Opacity * this->Shading * colour, depth);
+    });
+  }
+};
+
 /// Every ray's segments, in order, integrated exactly.
 class RayIntegrator
 {
 public:
   RayIntegrator(const Mesh& mesh, const uv::BoundingVolumeHierarchy& hierarchy,
-    const uv::TransferFunction& transfer, double tolerance)
+    const uv::TransferFunction& transfer, double tolerance, const CellFaceSurfaces& surfaces)
     : TheMesh(mesh)
     , Hierarchy(hierarchy)
     , Transfer(transfer)
     , Tolerance(tolerance)
+    , Surfaces(surfaces)
   {
   }
 
@@ -515,28 +540,40 @@ public:
     std::sort(segments.begin(), segments.end(),
       [](const Segment& a, const Segment& b) { return a.Span.Enter < b.Span.Enter; });
     uv::RayAccumulator accumulator;
+    const bool surfaces = this->TheMesh.OnCells() && !this->Surfaces.Drawn.empty();
+    std::optional<std::size_t> previous; // the last segment integrated alone, for the faces between cells
     for (std::size_t first = 0; first < segments.size();)
     {
       if (accumulator.Transmittance < 1e-12)
       {
         break; // what lies behind cannot change any channel by more than 1e-12
       }
-      // A run of segments that overlap one another (tangled or overlapping cells).
+      // A run of segments that overlap one another (tangled or overlapping cells). Neighbours whose
+      // shared face two different intersections put within rounding of each other (a pyramid's
+      // triangle and a tetrahedron's plane) only touch.
       std::size_t last = first + 1;
       double end = segments[first].Span.Exit;
-      for (; last < segments.size() && segments[last].Span.Enter < end; ++last)
+      for (; last < segments.size() && segments[last].Span.Enter < end - this->Surfaces.Touching; ++last)
       {
         end = std::max(end, segments[last].Span.Exit);
       }
       if (last == first + 1)
       {
         const Segment& segment = segments[first];
+        if (surfaces && previous)
+        {
+          const Segment& before = segments[*previous];
+          this->Surfaces.Cross(before.Span.Exit, this->TheMesh.CellScalar[before.Cell], segment.Span.Enter,
+            this->TheMesh.CellScalar[segment.Cell], accumulator);
+        }
+        previous = first;
         uv::IntegrateSegment(this->Transfer, SegmentScalar(this->TheMesh, segment, ray), segment.Span.Enter,
           segment.Span.Exit, this->Tolerance, accumulator);
       }
       else
       {
         this->IntegrateOverlapping(ray, first, last, scratch, accumulator);
+        previous.reset(); // overlapping cells: no face between two of them
       }
       first = last;
     }
@@ -641,6 +678,7 @@ private:
   const uv::BoundingVolumeHierarchy& Hierarchy;
   const uv::TransferFunction& Transfer;
   double Tolerance;
+  const CellFaceSurfaces& Surfaces;
 };
 
 /// Pixel rays of a camera, in the mesh's recentred frame: the camera is moved by the same offset
@@ -687,7 +725,26 @@ private:
 };
 } // namespace
 
+void vtkUnstructuredVolumeReferenceRenderer::AddIsosurface(
+  double value, double red, double green, double blue, double opacity)
+{
+  this->Isosurfaces->Add(value, red, green, blue, opacity);
+  this->Modified();
+}
+
+void vtkUnstructuredVolumeReferenceRenderer::RemoveAllIsosurfaces()
+{
+  if (this->Isosurfaces->Clear())
+    this->Modified();
+}
+
+int vtkUnstructuredVolumeReferenceRenderer::GetNumberOfIsosurfaces()
+{
+  return this->Isosurfaces->Size();
+}
+
 vtkUnstructuredVolumeReferenceRenderer::vtkUnstructuredVolumeReferenceRenderer()
+  : Isosurfaces(new uv::IsosurfaceList)
 {
   this->Output = vtkImageData::New();
 }
@@ -699,6 +756,7 @@ vtkUnstructuredVolumeReferenceRenderer::~vtkUnstructuredVolumeReferenceRenderer(
   this->SetCamera(nullptr);
   this->SetScalarArrayName(nullptr);
   this->Output->Delete();
+  delete this->Isosurfaces;
 }
 
 void vtkUnstructuredVolumeReferenceRenderer::SetInputData(vtkDataSet* input)
@@ -768,7 +826,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     return false;
   }
   const uv::TransferFunction transfer(nodes);
-  if (transfer.IsInvisible())
+  if (transfer.IsInvisible() && this->Isosurfaces->Drawn(0.0, 1.0).empty())
   {
     return true;
   }
@@ -791,8 +849,16 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   {
     vtkWarningMacro("Left out " << mesh.NonFinite << " cells with non-finite scalars.");
   }
+  CellFaceSurfaces surfaces;
+  surfaces.Drawn = this->Isosurfaces->Drawn(0.0, 1.0);
+  surfaces.Shading = this->VolumeProperty->GetAmbient() + this->VolumeProperty->GetDiffuse();
+  surfaces.Touching = 1e-7 * input->GetLength(); // shared faces meet exactly; internal walls nearly
+  if (!surfaces.Drawn.empty() && !mesh.OnCells())
+  {
+    vtkWarningMacro("Isosurfaces of a point scalar are not drawn by the reference renderer.");
+  }
   const uv::BoundingVolumeHierarchy hierarchy(std::move(mesh.Boxes));
-  const RayIntegrator integrator(mesh, hierarchy, transfer, this->Tolerance);
+  const RayIntegrator integrator(mesh, hierarchy, transfer, this->Tolerance, surfaces);
   const PixelRays rays(this->Camera, mesh.Centre, width, height);
 
   float* pixels = rgba->GetPointer(0);

@@ -29,6 +29,12 @@
  * Newton, the field by the inverse isoparametric map. Other 3D cells (Lagrange tetrahedra and
  * pyramids, Bezier cells) are an error; 2D and 1D cells are ignored with a warning.
  * Cells touching a non-finite scalar are left out (transparent) with a warning.
+ *
+ * Isosurfaces of a cell scalar are drawn as the mappers draw them: the faces between cells on either
+ * side of the value (uv::ForEachSurfaceBetweenCells; the mesh boundary holds none), composited with
+ * their opacity where the ray crosses the face, unlit -- the colour times the volume property's
+ * ambient plus diffuse, what the mappers' Phong gives a surface facing the light. Isosurfaces of a
+ * point scalar are not drawn here (one warning).
  */
 #ifndef vtkUnstructuredVolumeReferenceRenderer_h
 #define vtkUnstructuredVolumeReferenceRenderer_h
@@ -38,6 +44,10 @@
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
 class vtkCamera;
+namespace uv
+{
+class IsosurfaceList;
+}
 class vtkDataSet;
 class vtkImageData;
 class vtkVolumeProperty;
@@ -79,6 +89,13 @@ public:
   void SetCamera(vtkCamera* camera);
   vtkGetObjectMacro(Camera, vtkCamera);
 
+  ///@{
+  /// Isosurfaces, as vtkUnstructuredVolumeMapper takes them (drawn for a cell scalar only).
+  void AddIsosurface(double value, double red, double green, double blue, double opacity);
+  void RemoveAllIsosurfaces();
+  int GetNumberOfIsosurfaces();
+  ///@}
+
   vtkSetVector2Macro(ImageSize, int);
   vtkGetVector2Macro(ImageSize, int);
 
@@ -112,6 +129,7 @@ protected:
   vtkImageData* Output = nullptr;
 
 private:
+  uv::IsosurfaceList* Isosurfaces;
   uvvtk::RenderedScalar FindScalar(vtkDataSet* input);
 
   vtkUnstructuredVolumeReferenceRenderer(const vtkUnstructuredVolumeReferenceRenderer&) = delete;

@@ -13,7 +13,8 @@
 // every cell (uvBilinearFaceLib.glsl): the exit found in one cell is the entry of the next.
 //
 // Isosurfaces are further cuts: where the cubic crosses an isovalue the surface's colour is
-// composited, Phong-lit with the exact gradient of the cell's trilinear field there.
+// composited, Phong-lit with the exact gradient of the cell's trilinear field there. For a cell
+// scalar they are the faces between cells on either side of the value, lit with the face's normal.
 uniform sampler2D entry;        // (ray parameter, boundary face) of this peel, face < 0: none
 uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
 uniform sampler2D opaqueDepth;
@@ -202,20 +203,40 @@ vec3 FieldGradient(vec3 xi)
 vec3 segmentXi0, segmentXi1;  // the segment's ends in the cell's trilinear coordinates
 vec3 segmentStartPoint, segmentEndPoint; // and in model space
 
+/// Composites isosurface `k` at model point x, lit with the model-space normal (any length).
+void CompositeLitSurface(int k, vec3 x, vec3 normal)
+{
+  vec4 surface = texelFetch(isosurfaces, ivec2(k, 0), 0);
+  vec3 eyePoint = (modelToEye * vec4(x, 1.0)).xyz;
+  vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-eyePoint);
+  vec3 lit = Light(surface.rgb, normalToEye * normal, toEye);
+  colour += transmittance * surface.a * lit;
+  transmittance *= 1.0 - surface.a;
+}
+
 /// Composites isosurface `k` where the segment's parameter is u.
 void CompositeSurface(int k, float u)
 {
-  vec4 surface = texelFetch(isosurfaces, ivec2(k, 0), 0);
-  vec3 eyePoint = (modelToEye * vec4(mix(segmentStartPoint, segmentEndPoint, u), 1.0)).xyz;
-  vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-eyePoint);
-  vec3 lit = Light(surface.rgb, normalToEye * FieldGradient(mix(segmentXi0, segmentXi1, u)), toEye);
-  colour += transmittance * surface.a * lit;
-  transmittance *= 1.0 - surface.a;
+  CompositeLitSurface(k, mix(segmentStartPoint, segmentEndPoint, u), FieldGradient(mix(segmentXi0, segmentXi1, u)));
 }
 
 float IsoValue(int k)
 {
   return texelFetch(isosurfaces, ivec2(k, 1), 0).r;
+}
+
+/// A cell scalar's isosurfaces are the faces between cells on either side of the value
+/// (uv::ForEachSurfaceBetweenCells): those of the face at x, normal `normal`, from a cell of value
+/// `from` into one of value `to`, in the order the ray meets them.
+void CompositeSurfacesBetweenCells(float from, float to, vec3 x, vec3 normal)
+{
+  for (int i = 0; i < isosurfaceCount; ++i)
+  {
+    int k = from < to ? i : isosurfaceCount - 1 - i;
+    float v = IsoValue(k);
+    if ((from < v) != (to < v))
+      CompositeLitSurface(k, x, normal);
+  }
 }
 
 // ---- The cubic along the ray (uvHexahedronRay.h)
@@ -574,6 +595,8 @@ bool Leaves(vec3 normal, vec3 outward, vec3 direction)
 
 /// The face of the loaded cell (other than `enterFace`) where the ray leaves it nearest beyond t, with
 /// that parameter in exitT; -1 when no face claims the ray.
+vec3 exitNormal; // the face's normal where FindExit found the ray leaving
+
 int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
 {
   exitT = noExit;
@@ -607,11 +630,13 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
     {
       exitT = h0;
       exitFace = f;
+      exitNormal = n0;
     }
     if (hits > 1 && h1 > t + tolerance && h1 < exitT && Leaves(n1, outward, direction))
     {
       exitT = h1;
       exitFace = f;
+      exitNormal = n1;
     }
   }
   return exitFace;
@@ -739,6 +764,11 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
       stopKind = LEFT_THROUGH_BOUNDARY;
       break;
     }
+#ifdef UV_CELL_SCALARS
+    if (isosurfaceCount > 0)
+      CompositeSurfacesBetweenCells(scalars[0], texelFetch(cellScalars, next / 8).r, origin + exitT * direction,
+        exitNormal);
+#endif
     cell = next / 8;
     enterFace = next % 8;
     t = exitT;

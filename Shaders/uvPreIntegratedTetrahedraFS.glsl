@@ -19,6 +19,12 @@ uniform samplerBuffer pointGradients;
 uniform mat3 modelToEyeNormals;
 #endif
 flat in int rayCastTetrahedron;  // >= 0: intersect the eye ray with this tetrahedron here
+#ifdef UV_CELL_SURFACES
+// A cell scalar's isosurfaces, the faces between cells on either side of the value: each
+// tetrahedron draws those on its front face (the one the ray enters by), over its own segment.
+flat in int fragmentTetrahedron;
+uniform samplerBuffer neighbourValues; // per tetrahedron, the value across the face opposite each corner
+#endif
 
 uniform usamplerBuffer tetrahedronPoints;
 uniform samplerBuffer pointData;
@@ -33,6 +39,54 @@ uniform int parallelProjection;
 //UV::Phong
 
 //UV::SegmentIntegration
+
+#ifdef UV_CELL_SURFACES
+/// The surfaces on the front face of the drawn tetrahedron where the ray along `direction` enters
+/// it at eye point `front` (seen along `toEye`), composited in the order the ray meets them:
+/// premultiplied colour and alpha. None where `front` is on no face (the near plane cut the
+/// tetrahedron there).
+vec4 FrontFaceSurfaces(vec3 front, vec3 direction, vec3 toEye)
+{
+  uvec4 ids = texelFetch(tetrahedronPoints, fragmentTetrahedron);
+  vec3 p[4];
+  float value = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    vec4 data = texelFetch(pointData, int(ids[k]));
+    p[k] = (modelToEye * vec4(data.xyz, 1.0)).xyz;
+    value = data.w; // constant in the tetrahedron
+  }
+  // Barycentric weights at the front point, and how each changes along the ray. The ray enters by
+  // the last face plane it crosses inwards: of the corners whose weight grows, the one whose weight
+  // is least (0, up to rounding; the other entering planes lie behind it, their weights already
+  // grown). Away from 0 the front point is on the near plane, on no face.
+  mat3 toLocal = inverse(mat3(p[1] - p[0], p[2] - p[0], p[3] - p[0]));
+  vec3 l = toLocal * (front - p[0]), dl = toLocal * direction;
+  float weights[4] = float[4](1.0 - l.x - l.y - l.z, l.x, l.y, l.z);
+  float growth[4] = float[4](-dl.x - dl.y - dl.z, dl.x, dl.y, dl.z);
+  int corner = -1;
+  for (int k = 0; k < 4; ++k)
+    if (growth[k] > 0.0 && (corner < 0 || weights[k] < weights[corner]))
+      corner = k;
+  vec4 surfaces = vec4(0.0);
+  if (corner < 0 || abs(weights[corner]) > 1e-3)
+    return surfaces;
+  float from = texelFetch(neighbourValues, fragmentTetrahedron)[corner];
+  vec3 normal = cross(p[(corner + 2) % 4] - p[(corner + 1) % 4], p[(corner + 3) % 4] - p[(corner + 1) % 4]);
+  for (int i = 0; i < isosurfaceCount; ++i)
+  {
+    int k = from < value ? i : isosurfaceCount - 1 - i;
+    float v = texelFetch(isosurfaces, ivec2(k, 1), 0).r;
+    if ((from < v) != (value < v))
+    {
+      vec4 surface = texelFetch(isosurfaces, ivec2(k, 0), 0);
+      surfaces.rgb += (1.0 - surfaces.a) * surface.a * Light(surface.rgb, normal, toEye);
+      surfaces.a += (1.0 - surfaces.a) * surface.a;
+    }
+  }
+  return surfaces;
+}
+#endif
 
 void main()
 {
@@ -129,6 +183,10 @@ void main()
   vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-frontPoint);
 
   vec4 result = IntegrateSegment(frontScalar, backScalar, frontGradient, backGradient, segmentLength, toEye);
+#ifdef UV_CELL_SURFACES
+  vec4 surfaces = FrontFaceSurfaces(frontPoint, direction, toEye);
+  result = surfaces + (1.0 - surfaces.a) * result;
+#endif
   if (!(result.a > 0.0))
   {
     discard;

@@ -26,6 +26,10 @@ noperspective out vec3 frontGradientOverW;
 noperspective out vec3 backGradientOverW;
 #endif
 flat out int rayCastTetrahedron;         // -1, or the tetrahedron each fragment intersects itself
+#ifdef UV_CELL_SURFACES
+flat out int fragmentTetrahedron;        // the tetrahedron drawn (its front face may hold surfaces)
+#endif
+int loadedTetrahedron;
 
 vec3 eye[4];
 vec4 clip[4];
@@ -56,6 +60,9 @@ void SetPoint(vec2 screen, SurfacePoint front, SurfacePoint back)
   backGradientOverW = back.gradient / back.w;
 #endif
   rayCastTetrahedron = -1;
+#ifdef UV_CELL_SURFACES
+  fragmentTetrahedron = loadedTetrahedron;
+#endif
 }
 
 SurfacePoint Vertex(int k)
@@ -99,6 +106,9 @@ void SetRayCastSlot(int slot, int id, vec2 low, vec2 high)
   backGradientOverW = vec3(0.0);
 #endif
   rayCastTetrahedron = id;
+#ifdef UV_CELL_SURFACES
+  fragmentTetrahedron = id;
+#endif
 }
 
 /// The projection of the loaded tetrahedron as a fan of four triangles (thick vertex, hull[i],
@@ -116,6 +126,7 @@ struct Projection
 /// Loads tetrahedron `id` into eye[], clip[], scalar[], gradient[].
 void LoadTetrahedron(int id)
 {
+  loadedTetrahedron = id;
   uvec4 ids = texelFetch(tetrahedronPoints, id);
   for (int k = 0; k < 4; ++k)
   {

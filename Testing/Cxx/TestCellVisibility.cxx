@@ -1,6 +1,8 @@
 // Which cells a transfer function makes invisible (uvCellVisibility.h): roles against a brute-force
-// check of the definition, and lists rebuilt exactly when their inputs change.
+// check of the definition, and lists rebuilt exactly when their inputs change; which faces between
+// cells hold the isosurfaces of a cell scalar (uvIsosurfaceList.h).
 #include "uvCellVisibility.h"
+#include "uvIsosurfaceList.h"
 
 #include <gtest/gtest.h>
 
@@ -80,4 +82,26 @@ TEST(CellVisibility, ListsRebuildOnlyWhenTheirInputsChange)
   EXPECT_EQ(lists.Volume.size(), 3u);
   EXPECT_EQ(lists.Builds, 4);
   EXPECT_EQ(lists.Version, 4u);
+}
+
+TEST(CellDataIsosurfaces, FacesBetweenCellsOnEitherSideInTheRayOrder)
+{
+  uv::IsosurfaceList list;
+  list.Add(0.5, 1, 0, 0, 1);
+  list.Add(0.2, 0, 1, 0, 1);
+  list.Add(0.8, 0, 0, 1, 1);
+  const std::vector<uv::Isosurface> drawn = list.Drawn(0.0, 1.0);
+  auto crossed = [&drawn](double from, double to) {
+    std::vector<double> values;
+    uv::ForEachSurfaceBetweenCells(drawn, from, to, [&](const uv::Isosurface& s) { values.push_back(s.Value); });
+    return values;
+  };
+  EXPECT_EQ(crossed(0.1, 0.9), (std::vector<double>{ 0.2, 0.5, 0.8 }));
+  EXPECT_EQ(crossed(0.9, 0.1), (std::vector<double>{ 0.8, 0.5, 0.2 }));
+  EXPECT_EQ(crossed(0.3, 0.4), std::vector<double>{});
+  // A cell at exactly the value counts as above it: the face below it holds the surface, the one
+  // above not, so a run of cells at the value shows the surface once.
+  EXPECT_EQ(crossed(0.4, 0.5), std::vector<double>{ 0.5 });
+  EXPECT_EQ(crossed(0.5, 0.6), std::vector<double>{});
+  EXPECT_EQ(crossed(0.5, 0.4), std::vector<double>{ 0.5 });
 }

@@ -69,12 +69,12 @@ protected:
 TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
 {
   const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
-  EXPECT_EQ(all.size(), 8u);
+  EXPECT_EQ(all.size(), 10u);
   for (const auto& options : all)
   {
     const std::string variant = std::string("tetrahedra program, ") +
       (options.VertexPulling ? "vertex pulling" : "geometry shader") + (options.Gradients ? ", gradients" : "") +
-      (options.NodeTexture ? ", node texture" : "");
+      (options.NodeTexture ? ", node texture" : "") + (options.CellSurfaces ? ", cell surfaces" : "");
     this->ExpectLinks(vtkPreIntegratedTetrahedraPrograms::Sources(options), variant);
   }
 }
