@@ -17,7 +17,8 @@ writes Testing/Benchmark/README.md (or the path given): how and where the run wa
 table, and its ratios against VTK's mappers, so that the published numbers are always one run's.
 
 Mappers register in MAPPERS below: a name, a factory, and the input it takes: "tets" (the scene's
-mesh split into tetrahedra) or "hexahedra" (the mesh itself; run on hexahedral scenes only).
+mesh split into tetrahedra) or "hexahedra" (the mesh itself; run on scenes of the cells the hexahedral
+walk takes: hexahedra, voxels, wedges, pyramids, tetrahedra).
 """
 import argparse
 import csv
@@ -55,9 +56,9 @@ import vtkmodules.vtkRenderingFreeType  # noqa: F401
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
-from fixtures import analytic  # noqa: E402
+from fixtures import analytic, hex_dominant  # noqa: E402
 from shared_data import SHARED, bluntfin, can, disk_out_ref, legacy, openfoam_cavity_cells  # noqa: E402
-REFERENCE_VERSION = "2"  # bump when the reference renderer's output changes (2: no lost cells, superposition)
+REFERENCE_VERSION = "3"  # bump when the reference renderer's output changes (2: no lost cells, superposition; 3: rounding overlaps touch)
 
 # ---------------------------------------------------------------------------------------------
 # Mappers: (name, factory, input: "tets" or "hexahedra"). This project's mappers register here as they land.
@@ -186,6 +187,8 @@ def scenes(quick):
     found.append(("wavelet_tets", wavelet_tets, "RTData", smooth_ramp, 0.05))
     found.append(("ml_twisted_hex_cells", with_cell_data(lambda: analytic(resolution, ml, twist, hexahedra)),
                   "cells:MarschnerLobb", smooth_ramp, 0.05))
+    # Hex-dominant: wedge columns, pyramids and tetrahedra among jittered hexahedra (fixtures.hex_dominant).
+    found.append(("ml_hex_dominant_mixed", lambda: hex_dominant(resolution), "MarschnerLobb", smooth_ramp, 0.05))
     if os.path.isdir(SHARED):
         found += [
             ("bluntfin_hex", bluntfin, "Density", smooth_ramp, 0.03),
@@ -662,7 +665,8 @@ def main():
         print(f"  reference: {reference_seconds:.1f} s (0 when cached)", flush=True)
 
         scene_rows, first_views, heat_maps = [], [over_background(references[0])], [over_background(references[0])]
-        hexahedral = all(drawn.GetCellType(c) in (11, 12) for c in range(min(drawn.GetNumberOfCells(), 1000)))
+        walkable = (10, 11, 12, 13, 14)  # tetrahedra, voxels, hexahedra, wedges, pyramids
+        hexahedral = all(drawn.GetCellType(c) in walkable for c in range(drawn.GetNumberOfCells()))
         for name, factory, takes in mappers:
             if takes == "hexahedra" and not hexahedral:
                 continue
