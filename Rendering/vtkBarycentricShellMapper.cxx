@@ -6,6 +6,7 @@
 #include "uvBarycentricShellMaskFS.h"
 #include "uvBarycentricShellSliceFS.h"
 #include "uvCellVisibility.h"
+#include "uvHexahedralMesh.h"
 #include "uvIsosurfaceList.h"
 #include "uvPreIntegration.h"
 #include "uvShellBuckets.h"
@@ -88,6 +89,7 @@ public:
   {
     WidenedSampleDistance,
     TextureLimits,
+    CellSurfacesByProjection,
     Kinds
   };
   /// True the first time `kind` is asked for.
@@ -139,18 +141,25 @@ public:
   } Coordinates; // where the mesh's texture coordinates come from, and their version
   uvvtk::MeshWarnings Warned;
   WarningsGiven Warnings;
+  struct
+  {
+    std::vector<float> NeighbourValues, Low, High; // per tetrahedron (oriented), for a cell scalar's surfaces
+    std::uint64_t CellsVersion = 0, OrientedVersion = 0; // what they were built from
+    std::uint64_t Version = 0;                           // bumped by every build
+  } CellSurfaces;
 
   // ---- What this frame draws (Prepare).
   struct
   {
     bool CellProjection = false, Textured = false, Shade = false, Lit = false, NeedGradients = false;
+    bool CellSurfaces = false; // a cell scalar's isosurfaces, the faces between cells (cell projection)
     bool SegmentTable = false, Pulling = true;
     int Slices = 7, Targets = 2, Layers = 1;
     double SampleDistance = 0.0, ScalarOffset = 0.0, ScalarScale = 1.0;
   } Now;
 
   // ---- GPU state: the mesh's resources, then the passes.
-  vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, PointCoordinates;
+  vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, PointCoordinates, NeighbourValues;
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
   vtkBarycentricShellImageTexture Image;
@@ -171,7 +180,8 @@ public:
   void Release()
   {
     for (vtkUnstructuredVolumeBufferTexture* texture :
-      { &this->TetrahedronPoints, &this->Points, &this->PointGradients, &this->PointCoordinates })
+      { &this->TetrahedronPoints, &this->Points, &this->PointGradients, &this->PointCoordinates,
+        &this->NeighbourValues })
       texture->Release();
     this->Nodes.Release();
     this->Isosurfaces.Release();
@@ -188,6 +198,7 @@ public:
   bool UpdateMesh(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateTransferFunction(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateLists(vtkBarycentricShellMapper* self);
+  void UpdateNeighbourValues();
   void UpdateGradients(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   void UpdateSampleDistance(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateShells(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
@@ -298,8 +309,8 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
     return false;
   }
   this->DrawnIsosurfaces = self->GetIsosurfaces().Drawn(this->Now.ScalarOffset, this->Now.ScalarScale);
-  if (!this->Now.Textured && self->WarnCellScalarLimits(this->Mesh.Scalar, frame.Property->GetShade() != 0, false))
-    this->DrawnIsosurfaces.clear(); // constant in each cell: no crossing inside one
+  if (!this->Now.Textured)
+    self->WarnCellScalarLimits(this->Mesh.Scalar, frame.Property->GetShade() != 0, true);
   if (this->Now.Textured && (!this->DrawnIsosurfaces.empty() || self->RenderMode == CELL_PROJECTION))
   {
     // The field inside a cell is the image's, not linear: no closed-form crossings or whole segments.
@@ -311,7 +322,41 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
   this->Isovalues.clear();
   for (const uv::Isosurface& s : this->DrawnIsosurfaces)
     this->Isovalues.push_back(s.Value);
+  // A cell scalar's isosurfaces lie on faces between cells: cell projection draws them (exact for a
+  // constant per cell), the shells do not sample them.
+  this->Now.CellSurfaces = !this->Now.Textured && this->Mesh.OnCells() && !this->Isovalues.empty();
+  if (this->Now.CellSurfaces)
+    this->UpdateNeighbourValues();
+  if (this->Now.CellSurfaces && self->RenderMode == SHELLS && this->Warnings.First(WarningsGiven::CellSurfacesByProjection))
+    vtkWarningWithObjectMacro(self, "isosurfaces of a cell scalar lie on the faces between cells: drawn by cell "
+                                    "projection (exact for a cell scalar), not by shells");
   return true;
+}
+
+/// For a cell scalar's isosurfaces: per tetrahedron (in the oriented order the shaders read) the
+/// values across its faces, and its scalar range widened to them, when the cells changed.
+void vtkBarycentricShellMapper::Internals::UpdateNeighbourValues()
+{
+  if (this->CellSurfaces.Version != 0 && this->CellSurfaces.CellsVersion == this->Mesh.CellsVersion &&
+    this->CellSurfaces.OrientedVersion == this->OrientedVersion)
+    return;
+  std::vector<std::uint32_t> corners(this->OrientedPoints.size());
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    corners[i] = this->Mesh.CornerPoints[this->OrientedPoints[i]]; // the input's point ids: shared faces match
+  this->CellSurfaces.NeighbourValues = uv::TetrahedronNeighbourValues(corners, this->Mesh.ScalarLow,
+    uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
+  const std::size_t count = this->Mesh.Size();
+  this->CellSurfaces.Low.resize(count);
+  this->CellSurfaces.High.resize(count);
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    const float* across = &this->CellSurfaces.NeighbourValues[4 * t];
+    this->CellSurfaces.Low[t] = std::min({ this->Mesh.ScalarLow[t], across[0], across[1], across[2], across[3] });
+    this->CellSurfaces.High[t] = std::max({ this->Mesh.ScalarHigh[t], across[0], across[1], across[2], across[3] });
+  }
+  this->CellSurfaces.CellsVersion = this->Mesh.CellsVersion;
+  this->CellSurfaces.OrientedVersion = this->OrientedVersion;
+  ++this->CellSurfaces.Version;
 }
 
 /// Which tetrahedra matter: the volume's (some extinction in their range), the isosurfaces' (an
@@ -322,8 +367,11 @@ bool vtkBarycentricShellMapper::Internals::UpdateLists(vtkBarycentricShellMapper
   const bool skip = self->SkipInvisibleCells && !this->Now.Textured;
   const auto zeroSet = skip ? uv::ZeroExtinctionIntervals(this->TransferFunction.Nodes)
                             : std::vector<std::pair<double, double>>();
-  if (this->Lists.Update(this->Mesh.CellsVersion, this->Mesh.ScalarLow, this->Mesh.ScalarHigh, zeroSet,
-        this->Isovalues, uvvtk::ParallelFor))
+  // A cell scalar's surfaces: a cell is drawn for the faces it fronts too (its range widened to them).
+  const bool widened = this->Now.CellSurfaces;
+  if (this->Lists.Update(2 * this->Mesh.CellsVersion + (widened ? 1 : 0),
+        widened ? this->CellSurfaces.Low : this->Mesh.ScalarLow,
+        widened ? this->CellSurfaces.High : this->Mesh.ScalarHigh, zeroSet, this->Isovalues, uvvtk::ParallelFor))
     this->Order.Invalidate();
   return !this->Lists.Drawn.empty();
 }
@@ -334,7 +382,7 @@ void vtkBarycentricShellMapper::Internals::UpdateGradients(
   vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame)
 {
   this->Now.Shade = this->Now.CellProjection && frame.Property->GetShade() != 0 && !this->Mesh.OnCells();
-  this->Now.Lit = this->Now.Shade || !this->Isovalues.empty();
+  this->Now.Lit = this->Now.Shade || (!this->Isovalues.empty() && !this->Now.CellSurfaces); // faces light those
   this->Now.NeedGradients = this->Now.Lit && self->GradientMode == VERTEX_GRADIENTS;
   if (this->Now.NeedGradients)
   {
@@ -430,6 +478,8 @@ void vtkBarycentricShellMapper::Internals::UploadMesh(vtkOpenGLRenderWindow* win
   this->Points.Sync(window, this->Mesh.PointData, 4, this->Mesh.Version);
   if (this->Now.NeedGradients)
     this->PointGradients.Sync(window, this->Gradients.Values, 4, this->Gradients.Version);
+  if (this->Now.CellSurfaces)
+    this->NeighbourValues.Sync(window, this->CellSurfaces.NeighbourValues, 4, this->CellSurfaces.Version);
   this->Nodes.Sync(window, this->TransferFunction.Nodes);
   this->Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(this->DrawnIsosurfaces), 2, 4,
     uv::IsosurfaceList::Texels(this->DrawnIsosurfaces));
@@ -503,6 +553,7 @@ std::string vtkBarycentricShellMapper::Internals::Defines(bool opaqueGeometry) c
   options.OpaqueGeometry = opaqueGeometry;
   options.Textured = this->Now.Textured;
   options.NodeTexture = uvgl::NodesNeedTexture(this->TransferFunction.Nodes);
+  options.CellSurfaces = this->Now.CellSurfaces;
   return vtkBarycentricShellPrograms::DefinesFor(options);
 }
 
@@ -558,6 +609,8 @@ void vtkBarycentricShellMapper::Internals::UnbindMesh(bool opaqueGeometry)
   }
   if (this->Now.NeedGradients)
     this->PointGradients.Unbind();
+  if (this->Now.CellSurfaces)
+    this->NeighbourValues.Unbind();
   this->Nodes.Unbind();
   this->Isosurfaces.Unbind();
 }
@@ -582,6 +635,8 @@ bool vtkBarycentricShellMapper::Internals::DrawCellProjection(
     return false;
   this->SetCellUniforms(program, frame, opaqueGeometry);
   this->SetIntegrationUniforms(program, frame, static_cast<int>(this->Isovalues.size()));
+  if (this->Now.CellSurfaces)
+    this->NeighbourValues.Bind(program, "neighbourValues");
   this->Projection.Run(frame.Window->GetState(), program, this->Cells, this->Order.Order.size());
   this->DrawnTetrahedra = static_cast<vtkIdType>(this->Order.Order.size());
   return true;
@@ -794,7 +849,7 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   {
     return false;
   }
-  impl.Now.CellProjection = this->RenderMode == CELL_PROJECTION && !impl.Now.Textured;
+  impl.Now.CellProjection = (this->RenderMode == CELL_PROJECTION || impl.Now.CellSurfaces) && !impl.Now.Textured;
   impl.Now.Pulling = this->ProjectionRoute == VERTEX_PULLING;
   impl.Now.Slices = this->SlicesPerShell;
   impl.Now.Targets = (this->SlicesPerShell + 1 + 3) / 4;

@@ -39,6 +39,7 @@ public:
     int Slices = 7, Targets = 2, Layers = 1; // slices per shell, their render targets, isosurface layers
     bool VertexGradients = false, CellGradients = false; // lighting from vertex or cell gradients
     bool SegmentTable = false, OpaqueGeometry = false, Textured = false, NodeTexture = false;
+    bool CellSurfaces = false; // cell projection of a cell scalar with isosurfaces (faces between cells)
   };
 
   static std::string DefinesFor(const Options& options)
@@ -56,6 +57,8 @@ public:
       defines += "#define UV_OPAQUE_GEOMETRY\n";
     if (options.Textured)
       defines += "#define UV_TEXTURE\n";
+    if (options.CellSurfaces)
+      defines += "#define UV_CELL_SURFACES\n";
     return defines;
   }
 
@@ -76,6 +79,9 @@ public:
         options.NodeTexture = flags & 8;
         all.push_back(options);
       }
+    Options cellSurfaces;
+    cellSurfaces.CellSurfaces = true;
+    all.push_back(cellSurfaces);
     Options smallest, largest;
     smallest.Slices = 3;
     smallest.Targets = 1;

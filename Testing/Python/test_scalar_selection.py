@@ -197,18 +197,20 @@ class CellDataMappersAgainstReference(SceneTestCase):
         self.assertEqual(scene.events.errors, 0)
         self.assertLess(error, MAPPER_BOUNDS["preintegrated"])
 
-    def test_shells_do_not_draw_isosurfaces_of_cell_data_and_say_so_once(self):
-        # (The hexahedral and tetrahedra mappers draw them: test_cell_data_isosurfaces.py.)
+    def test_shells_draw_isosurfaces_of_cell_data_by_cell_projection_and_say_so_once(self):
+        # (Every mapper against the reference: test_cell_data_isosurfaces.py.)
         mesh = split(generated_cell_meshes()["hexahedra"]())
         prop, camera = cell_scene(mesh, "MarschnerLobb")
-        expected = cell_reference(mesh, "MarschnerLobb", prop, camera)
-        scene = cell_mapper_scene("shells", mesh, prop, camera, "MarschnerLobb")
-        scene.mapper.AddIsosurface(0.5, 1, 1, 1, 1)
-        image = scene.render()
-        scene.render()
-        self.assertEqual(scene.events.errors, 0)
-        self.assertEqual(scene.events.warnings, 1)
-        self.assertLess(rmse(image, expected)[0], MAPPER_BOUNDS["shells"])
+        images = {}
+        for kind in ("shells", "cell projection"):
+            scene = cell_mapper_scene(kind, mesh, prop, camera, "MarschnerLobb")
+            scene.mapper.AddIsosurface(0.5, 1, 1, 1, 0.5)
+            images[kind] = copy_image(scene.render())
+            scene.render()
+            self.assertEqual(scene.events.errors, 0, kind)
+            self.assertEqual(scene.events.warnings, 1 if kind == "shells" else 0, kind)
+        self.assertLess(rmse(images["shells"], images["cell projection"])[1], 1e-6)
+        self.assertGreater(rmse(images["shells"], cell_reference(mesh, "MarschnerLobb", prop, camera))[0], 1e-2)
 
 
 # Multi-component arrays: "vector" = (0.6 s, 0.8 s, 0) over the scalar s, so |vector| = s, its
