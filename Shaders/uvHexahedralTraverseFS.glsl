@@ -662,6 +662,28 @@ int StepTowards(vec3 target, int cell, out bool inside)
     float l0 = 1.0 - l.x - l.y - l.z;
     violation = float[6](-l.z, -1.0, -l.y, -l0, -1.0, -l.x);
   }
+  else if (cellShape != HEXAHEDRON)
+  {
+    // A wedge's or pyramid's inverse map is singular along its collapsed edge or apex: the target's
+    // distance beyond each face's mean plane instead (exact for the flat triangles), per cell size.
+    vec3 centre = CellCentre(points);
+    float size = length(points[6] - points[0]);
+    for (int f = 0; f < 6; ++f)
+    {
+      vec3 q[4];
+      uint qi[4];
+      for (int k = 0; k < 4; ++k)
+      {
+        q[k] = points[FaceCorner(f, k)];
+        qi[k] = cellIds[FaceCorner(f, k)];
+      }
+      vec3 a, b, c, d;
+      int corners = CanonicalFace(q, qi, a, b, c, d);
+      vec3 normal = PatchNormal(a, b, c, d, centre);
+      float faceCentreDistance = dot(normal, target - 0.25 * (q[0] + q[1] + q[2] + q[3]));
+      violation[f] = corners < 3 ? -1.0 : faceCentreDistance / (length(normal) * size);
+    }
+  }
   else
   {
     vec3 xi = InverseTrilinear(target, FrameCoordinates(MakeHexahedronFrame(points), target));
