@@ -161,13 +161,21 @@ HexahedralFaces MakeHexahedralFaces(const std::vector<std::uint32_t>& cellPoints
   return result;
 }
 
-/// For a cell scalar's isosurfaces on a tetrahedral mesh (4 point ids per tetrahedron in
-/// `tetrahedronPoints`, one value each): per tetrahedron, the value of the neighbour across the face
-/// opposite each corner, or its own where there is none (so no surface lies on a boundary face).
-/// The faces are matched as MakeHexahedralFaces matches a collapsed hexahedron's; `parallelFor` and
-/// `sort` as there.
+/// For a cell scalar's isosurfaces on a tetrahedral mesh: per tetrahedron the value of the
+/// neighbour across the face opposite each corner (its own where there is none, so no surface lies
+/// on a boundary face), and its scalar range widened to them (a cell is drawn for the surfaces on
+/// its faces too).
+struct TetrahedronFaceNeighbours
+{
+  std::vector<float> Values; // 4 per tetrahedron, by opposite corner
+  std::vector<float> Low, High;
+};
+
+/// TetrahedronFaceNeighbours of 4 point ids per tetrahedron (`tetrahedronPoints`), each with the
+/// constant value `values`. The faces are matched as MakeHexahedralFaces matches a collapsed
+/// hexahedron's; `parallelFor` and `sort` as there.
 template <typename ParallelFor, typename Sort>
-std::vector<float> TetrahedronNeighbourValues(const std::vector<std::uint32_t>& tetrahedronPoints,
+TetrahedronFaceNeighbours MakeTetrahedronFaceNeighbours(const std::vector<std::uint32_t>& tetrahedronPoints,
   const std::vector<float>& values, ParallelFor&& parallelFor, Sort&& sort)
 {
   const std::size_t count = values.size();
@@ -180,16 +188,27 @@ std::vector<float> TetrahedronNeighbourValues(const std::vector<std::uint32_t>& 
   const HexahedralFaces faces = MakeHexahedralFaces(collapsed, {}, parallelFor, sort, [](double) {});
   // The collapsed hexahedron's face opposite each tetrahedron corner (TetrahedronAsHexahedron).
   constexpr int oppositeFace[4] = { 3, 5, 2, 0 };
-  std::vector<float> across(4 * count);
+  TetrahedronFaceNeighbours result;
+  result.Values.resize(4 * count);
+  result.Low.resize(count);
+  result.High.resize(count);
   parallelFor(count, [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t)
+    {
+      float low = values[t], high = values[t];
       for (int k = 0; k < 4; ++k)
       {
         const std::int32_t neighbour = faces.Neighbours[8 * t + oppositeFace[k]];
-        across[4 * t + k] = neighbour < 0 ? values[t] : values[static_cast<std::size_t>(neighbour / 8)];
+        const float across = neighbour < 0 ? values[t] : values[static_cast<std::size_t>(neighbour / 8)];
+        result.Values[4 * t + k] = across;
+        low = std::min(low, across);
+        high = std::max(high, across);
       }
+      result.Low[t] = low;
+      result.High[t] = high;
+    }
   });
-  return across;
+  return result;
 }
 
 /// How many cells fold over themselves (uv::IsTangledHexahedron); `parallelFor` as above.

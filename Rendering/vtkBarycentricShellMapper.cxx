@@ -141,12 +141,12 @@ public:
   } Coordinates; // where the mesh's texture coordinates come from, and their version
   uvvtk::MeshWarnings Warned;
   WarningsGiven Warnings;
+  uv::TetrahedronFaceNeighbours CellSurfaces; // per oriented tetrahedron, for a cell scalar's surfaces
   struct
   {
-    std::vector<float> NeighbourValues, Low, High; // per tetrahedron (oriented), for a cell scalar's surfaces
-    std::uint64_t CellsVersion = 0, OrientedVersion = 0; // what they were built from
+    std::uint64_t CellsVersion = 0, OrientedVersion = 0; // what CellSurfaces was built from
     std::uint64_t Version = 0;                           // bumped by every build
-  } CellSurfaces;
+  } CellSurfacesBuilt;
 
   // ---- What this frame draws (Prepare).
   struct
@@ -337,26 +337,18 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
 /// values across its faces, and its scalar range widened to them, when the cells changed.
 void vtkBarycentricShellMapper::Internals::UpdateNeighbourValues()
 {
-  if (this->CellSurfaces.Version != 0 && this->CellSurfaces.CellsVersion == this->Mesh.CellsVersion &&
-    this->CellSurfaces.OrientedVersion == this->OrientedVersion)
+  auto& built = this->CellSurfacesBuilt;
+  if (built.Version != 0 && built.CellsVersion == this->Mesh.CellsVersion &&
+    built.OrientedVersion == this->OrientedVersion)
     return;
   std::vector<std::uint32_t> corners(this->OrientedPoints.size());
   for (std::size_t i = 0; i < corners.size(); ++i)
     corners[i] = this->Mesh.CornerPoints[this->OrientedPoints[i]]; // the input's point ids: shared faces match
-  this->CellSurfaces.NeighbourValues = uv::TetrahedronNeighbourValues(corners, this->Mesh.ScalarLow,
-    uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
-  const std::size_t count = this->Mesh.Size();
-  this->CellSurfaces.Low.resize(count);
-  this->CellSurfaces.High.resize(count);
-  for (std::size_t t = 0; t < count; ++t)
-  {
-    const float* across = &this->CellSurfaces.NeighbourValues[4 * t];
-    this->CellSurfaces.Low[t] = std::min({ this->Mesh.ScalarLow[t], across[0], across[1], across[2], across[3] });
-    this->CellSurfaces.High[t] = std::max({ this->Mesh.ScalarHigh[t], across[0], across[1], across[2], across[3] });
-  }
-  this->CellSurfaces.CellsVersion = this->Mesh.CellsVersion;
-  this->CellSurfaces.OrientedVersion = this->OrientedVersion;
-  ++this->CellSurfaces.Version;
+  this->CellSurfaces = uv::MakeTetrahedronFaceNeighbours(corners, this->Mesh.ScalarLow, uvvtk::ParallelFor,
+    [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
+  built.CellsVersion = this->Mesh.CellsVersion;
+  built.OrientedVersion = this->OrientedVersion;
+  ++built.Version;
 }
 
 /// Which tetrahedra matter: the volume's (some extinction in their range), the isosurfaces' (an
@@ -479,7 +471,7 @@ void vtkBarycentricShellMapper::Internals::UploadMesh(vtkOpenGLRenderWindow* win
   if (this->Now.NeedGradients)
     this->PointGradients.Sync(window, this->Gradients.Values, 4, this->Gradients.Version);
   if (this->Now.CellSurfaces)
-    this->NeighbourValues.Sync(window, this->CellSurfaces.NeighbourValues, 4, this->CellSurfaces.Version);
+    this->NeighbourValues.Sync(window, this->CellSurfaces.Values, 4, this->CellSurfacesBuilt.Version);
   this->Nodes.Sync(window, this->TransferFunction.Nodes);
   this->Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(this->DrawnIsosurfaces), 2, 4,
     uv::IsosurfaceList::Texels(this->DrawnIsosurfaces));

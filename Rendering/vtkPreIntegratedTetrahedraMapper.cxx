@@ -74,11 +74,8 @@ public:
   // and its scalar range widened to them, so a transparent tetrahedron whose front face holds a
   // surface is still drawn.
   bool DrawCellSurfaces = false;
-  struct
-  {
-    std::vector<float> NeighbourValues, Low, High;
-    std::uint64_t BuiltFor = 0; // the mesh's CellsVersion
-  } CellSurfaces;
+  uv::TetrahedronFaceNeighbours CellSurfaces;
+  std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
 
   // GPU state.
   vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, DrawOrder, NeighbourValues;
@@ -117,24 +114,15 @@ public:
   /// changed.
   void UpdateCellSurfaces()
   {
-    if (this->CellSurfaces.BuiltFor == this->Mesh.CellsVersion)
+    if (this->CellSurfacesBuiltFor == this->Mesh.CellsVersion)
       return;
     const std::vector<std::uint32_t>& drawn = this->Mesh.TetrahedronPoints;
     std::vector<std::uint32_t> corners(drawn.size());
     for (std::size_t i = 0; i < drawn.size(); ++i)
       corners[i] = this->Mesh.CornerPoints[drawn[i]]; // the input's point ids: shared faces match
-    this->CellSurfaces.NeighbourValues = uv::TetrahedronNeighbourValues(corners, this->Mesh.ScalarLow,
-      uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
-    const std::size_t count = this->Mesh.Size();
-    this->CellSurfaces.Low.resize(count);
-    this->CellSurfaces.High.resize(count);
-    for (std::size_t t = 0; t < count; ++t)
-    {
-      const float* across = &this->CellSurfaces.NeighbourValues[4 * t];
-      this->CellSurfaces.Low[t] = std::min({ this->Mesh.ScalarLow[t], across[0], across[1], across[2], across[3] });
-      this->CellSurfaces.High[t] = std::max({ this->Mesh.ScalarHigh[t], across[0], across[1], across[2], across[3] });
-    }
-    this->CellSurfaces.BuiltFor = this->Mesh.CellsVersion;
+    this->CellSurfaces = uv::MakeTetrahedronFaceNeighbours(corners, this->Mesh.ScalarLow, uvvtk::ParallelFor,
+      [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
+    this->CellSurfacesBuiltFor = this->Mesh.CellsVersion;
   }
 
 };
@@ -280,7 +268,7 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
   if (impl.NeedGradients)
     impl.PointGradients.Sync(window, impl.Gradients.Values, 4, impl.Gradients.Version);
   if (impl.DrawCellSurfaces)
-    impl.NeighbourValues.Sync(window, impl.CellSurfaces.NeighbourValues, 4, impl.CellSurfaces.BuiltFor);
+    impl.NeighbourValues.Sync(window, impl.CellSurfaces.Values, 4, impl.CellSurfacesBuiltFor);
   if (impl.Nodes.Sync(window, impl.TransferFunction.Nodes))
     ++impl.TransferFunctionUploads;
   impl.Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(impl.DrawnIsosurfaces), 2, 4,

@@ -38,27 +38,15 @@ vec4 EntryFaceSurfaces(BarycentricRay ray, vec3 toEye)
   int corner = 0;
   for (int k = 1; k < 4; ++k)
     corner = entries[k] > entries[corner] ? k : corner;
-  vec4 surfaces = vec4(0.0);
   if (!(entries[corner] > 0.0))
-    return surfaces;
+    return vec4(0.0);
   uvec4 ids = texelFetch(tetrahedronPoints, cellId);
   vec3 p[4];
   for (int k = 0; k < 4; ++k)
     p[k] = (modelToEye * vec4(texelFetch(pointData, int(ids[k])).xyz, 1.0)).xyz;
   vec3 normal = cross(p[(corner + 2) % 4] - p[(corner + 1) % 4], p[(corner + 3) % 4] - p[(corner + 1) % 4]);
   float from = texelFetch(neighbourValues, cellId)[corner], value = cellScalars[0];
-  for (int i = 0; i < isosurfaceCount; ++i)
-  {
-    int k = from < value ? i : isosurfaceCount - 1 - i;
-    float v = texelFetch(isosurfaces, ivec2(k, 1), 0).r;
-    if ((from < v) != (value < v))
-    {
-      vec4 surface = texelFetch(isosurfaces, ivec2(k, 0), 0);
-      surfaces.rgb += (1.0 - surfaces.a) * surface.a * Light(surface.rgb, normal, toEye);
-      surfaces.a += (1.0 - surfaces.a) * surface.a;
-    }
-  }
-  return surfaces;
+  return SurfacesBetweenCells(from, value, normal, toEye);
 }
 #endif
 

@@ -121,21 +121,24 @@ void LoadCell(int cell)
   tetrahedronGradient = cellShape == TETRAHEDRON ? LinearFieldGradient() : vec3(0.0);
 }
 
+/// Face f of the loaded cell as CanonicalFace gives it; returns its distinct corners.
+int LoadedCellFace(int f, out vec3 a, out vec3 b, out vec3 c, out vec3 d)
+{
+  vec3 q[4];
+  uint qi[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    q[k] = points[FaceCorner(f, k)];
+    qi[k] = cellIds[FaceCorner(f, k)];
+  }
+  return CanonicalFace(q, qi, a, b, c, d);
+}
+
 /// How many distinct corners face f of the loaded cell has (under 3: collapsed, no face).
 int FaceCornerCount(int f)
 {
-  uint ids[4];
-  for (int k = 0; k < 4; ++k)
-    ids[k] = cellIds[FaceCorner(f, k)];
-  int count = 1;
-  for (int i = 1; i < 4; ++i)
-  {
-    bool repeated = false;
-    for (int j = 0; j < i; ++j)
-      repeated = repeated || ids[j] == ids[i];
-    count += repeated ? 0 : 1;
-  }
-  return count;
+  vec3 a, b, c, d;
+  return LoadedCellFace(f, a, b, c, d);
 }
 
 /// The neighbour across each face of `cell`: neighbour * 8 + its face, or -1.
@@ -172,7 +175,30 @@ vec3 InverseTrilinear(vec3 x, vec3 xi)
   return xi;
 }
 
-/// Whether the loaded cell's map has bilinear terms: a parallelepiped's map is its frame, whose cubic
+/// Wedge coordinates (r, s, t) of x in the loaded wedge (VTK's points 0..5 are corners 0, 2, 1,
+/// 4, 6, 5 of its collapsed hexahedron): x = (1 - t) B(r, s) + t T(r, s), B and T the bottom and top
+/// triangles at barycentric (1 - r - s, r, s). Newton from the centre.
+vec3 InverseWedge(vec3 x)
+{
+  vec3 p0 = points[0], p1 = points[2], p2 = points[1], p3 = points[4], p4 = points[6], p5 = points[5];
+  vec3 w = vec3(1.0 / 3.0, 1.0 / 3.0, 0.5);
+  for (int iteration = 0; iteration < 10; ++iteration)
+  {
+    float r = w.x, s = w.y, t = w.z;
+    vec3 bottom = p0 + r * (p1 - p0) + s * (p2 - p0), top = p3 + r * (p4 - p3) + s * (p5 - p3);
+    vec3 mapped = mix(bottom, top, t);
+    mat3 jacobian = mat3(mix(p1 - p0, p4 - p3, t), mix(p2 - p0, p5 - p3, t), top - bottom);
+    if (abs(determinant(jacobian)) < 1e-30)
+      break;
+    vec3 step = inverse(jacobian) * (mapped - x);
+    w = clamp(w - step, vec3(-0.5), vec3(1.5));
+    if (max(abs(step.x), max(abs(step.y), abs(step.z))) < 1e-6)
+      break;
+  }
+  return w;
+}
+
+/// Whether the loaded cell's map has bilinear terms/// Whether the loaded cell's map has bilinear terms: a parallelepiped's map is its frame, whose cubic
 /// is exact.
 bool IsCurved(HexahedronFrame frame)
 {
@@ -609,15 +635,8 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
       continue;
     // The face exactly, as the bilinear patch (or triangle) through its corners, parameterised
     // canonically; a collapsed face is no way out.
-    vec3 q[4];
-    uint qi[4];
-    for (int k = 0; k < 4; ++k)
-    {
-      q[k] = points[FaceCorner(f, k)];
-      qi[k] = cellIds[FaceCorner(f, k)];
-    }
     vec3 a, b, c, d;
-    int corners = CanonicalFace(q, qi, a, b, c, d);
+    int corners = LoadedCellFace(f, a, b, c, d);
     if (corners < 3)
       continue;
     float h0, h1;
@@ -662,27 +681,28 @@ int StepTowards(vec3 target, int cell, out bool inside)
     float l0 = 1.0 - l.x - l.y - l.z;
     violation = float[6](-l.z, -1.0, -l.y, -l0, -1.0, -l.x);
   }
-  else if (cellShape != HEXAHEDRON)
+  else if (cellShape == WEDGE)
   {
-    // A wedge's or pyramid's inverse map is singular along its collapsed edge or apex: the target's
-    // distance beyond each face's mean plane instead (exact for the flat triangles), per cell size.
+    // The wedge's own coordinates (barycentric across, linear along): its map is regular where
+    // the collapsed hexahedron's is singular, and its faces are the same bilinear patches.
+    vec3 w = InverseWedge(target);
+    float r = w.x, s = w.y, t = w.z;
+    violation = float[6](-t, t - 1.0, -r, r + s - 1.0, -1.0, -s);
+  }
+  else if (cellShape == PYRAMID)
+  {
+    // The four triangles are flat: the target's distance beyond each, per cell size; the base by
+    // the inverse map, regular there (singular only at the apex).
     vec3 centre = CellCentre(points);
     float size = length(points[6] - points[0]);
-    for (int f = 0; f < 6; ++f)
+    for (int f = 1; f < 6; ++f)
     {
-      vec3 q[4];
-      uint qi[4];
-      for (int k = 0; k < 4; ++k)
-      {
-        q[k] = points[FaceCorner(f, k)];
-        qi[k] = cellIds[FaceCorner(f, k)];
-      }
       vec3 a, b, c, d;
-      int corners = CanonicalFace(q, qi, a, b, c, d);
+      int corners = LoadedCellFace(f, a, b, c, d);
       vec3 normal = PatchNormal(a, b, c, d, centre);
-      float faceCentreDistance = dot(normal, target - 0.25 * (q[0] + q[1] + q[2] + q[3]));
-      violation[f] = corners < 3 ? -1.0 : faceCentreDistance / (length(normal) * size);
+      violation[f] = corners < 3 ? -1.0 : dot(normal, target - a) / (length(normal) * size);
     }
+    violation[0] = -InverseTrilinear(target, FrameCoordinates(MakeHexahedronFrame(points), target)).z;
   }
   else
   {

@@ -68,23 +68,11 @@ vec4 FrontFaceSurfaces(vec3 front, vec3 direction, vec3 toEye)
   for (int k = 0; k < 4; ++k)
     if (growth[k] > 0.0 && (corner < 0 || weights[k] < weights[corner]))
       corner = k;
-  vec4 surfaces = vec4(0.0);
   if (corner < 0 || abs(weights[corner]) > 1e-3)
-    return surfaces;
+    return vec4(0.0);
   float from = texelFetch(neighbourValues, fragmentTetrahedron)[corner];
   vec3 normal = cross(p[(corner + 2) % 4] - p[(corner + 1) % 4], p[(corner + 3) % 4] - p[(corner + 1) % 4]);
-  for (int i = 0; i < isosurfaceCount; ++i)
-  {
-    int k = from < value ? i : isosurfaceCount - 1 - i;
-    float v = texelFetch(isosurfaces, ivec2(k, 1), 0).r;
-    if ((from < v) != (value < v))
-    {
-      vec4 surface = texelFetch(isosurfaces, ivec2(k, 0), 0);
-      surfaces.rgb += (1.0 - surfaces.a) * surface.a * Light(surface.rgb, normal, toEye);
-      surfaces.a += (1.0 - surfaces.a) * surface.a;
-    }
-  }
-  return surfaces;
+  return SurfacesBetweenCells(from, value, normal, toEye);
 }
 #endif
 

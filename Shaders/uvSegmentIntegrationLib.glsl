@@ -127,3 +127,23 @@ vec4 IntegrateSegment(float frontScalar, float backScalar, vec3 frontGradient, v
   result.a = 1.0 - transmittance;
   return result;
 }
+
+/// A cell scalar's isosurfaces on the face a ray crosses from a cell of value `from` into one of
+/// value `to` (uv::ForEachSurfaceBetweenCells: each value that separates them), composited in the
+/// order the ray meets them and lit with the face's eye-space `normal`: premultiplied colour and alpha.
+vec4 SurfacesBetweenCells(float from, float to, vec3 normal, vec3 toEye)
+{
+  vec4 surfaces = vec4(0.0);
+  for (int i = 0; i < isosurfaceCount; ++i)
+  {
+    int k = from < to ? i : isosurfaceCount - 1 - i;
+    float v = texelFetch(isosurfaces, ivec2(k, 1), 0).r;
+    if ((from < v) != (to < v))
+    {
+      vec4 surface = texelFetch(isosurfaces, ivec2(k, 0), 0);
+      surfaces.rgb += (1.0 - surfaces.a) * surface.a * Light(surface.rgb, normal, toEye);
+      surfaces.a += (1.0 - surfaces.a) * surface.a;
+    }
+  }
+  return surfaces;
+}

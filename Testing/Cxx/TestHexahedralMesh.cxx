@@ -155,13 +155,15 @@ TEST(HexahedronMesh, ScalarNormalisationIgnoresNaN)
   EXPECT_FALSE(uv::ScalarsFinite(points, both, 2));
 }
 
-TEST(HexahedronMesh, TetrahedronNeighbourValuesAcrossEachCorner)
+TEST(HexahedronMesh, TetrahedronFaceNeighboursAcrossEachCorner)
 {
   // Two tetrahedra sharing face (1, 2, 3): across corner 0 of the first lies the second, across
   // corner 3 of the second (point 4) the first; every other face is on the boundary.
   const std::vector<std::uint32_t> tetrahedra = { 0, 1, 2, 3, 1, 2, 3, 4 };
   const std::vector<float> values = { 0.25f, 0.75f };
-  const std::vector<float> across = uv::TetrahedronNeighbourValues(
+  const uv::TetrahedronFaceNeighbours neighbours = uv::MakeTetrahedronFaceNeighbours(
     tetrahedra, values, Serial, [](auto begin, auto end) { std::sort(begin, end); });
-  EXPECT_EQ(across, (std::vector<float>{ 0.75f, 0.25f, 0.25f, 0.25f, 0.75f, 0.75f, 0.75f, 0.25f }));
+  EXPECT_EQ(neighbours.Values, (std::vector<float>{ 0.75f, 0.25f, 0.25f, 0.25f, 0.75f, 0.75f, 0.75f, 0.25f }));
+  EXPECT_EQ(neighbours.Low, (std::vector<float>{ 0.25f, 0.25f }));
+  EXPECT_EQ(neighbours.High, (std::vector<float>{ 0.75f, 0.75f }));
 }
