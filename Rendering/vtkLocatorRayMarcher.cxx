@@ -30,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <string>
 
 vtkStandardNewMacro(vtkLocatorRayMarcher);
@@ -297,17 +298,41 @@ double ExtendToSampledShape(vtkCell* cell, double bounds[6])
   return grown;
 }
 
+std::mutex BezierWedgeMutex;
+
+/// d(weights)/d(pcoords) by central differences of VTK's own shape functions, in VTK's layout (all
+/// d/dr, then d/ds, then d/dt). VTK 9.1's InterpolateDerivs cannot serve: Lagrange and Bezier
+/// hexahedra interleave them per node, and Bezier tetrahedra and wedges give wrong ones (each checked
+/// against differences of the functions). Newton needs the Jacobian only to step; its fixed point is
+/// exact whatever the small error of the differences.
+void ShapeDerivativesByDifferences(vtkCell* cell, const double pcoords[3], double* derivatives, std::vector<double>& scratch)
+{
+  const int n = cell->GetNumberOfPoints();
+  scratch.resize(2 * static_cast<std::size_t>(n));
+  const double h = 1e-6;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    double ahead[3] = { pcoords[0], pcoords[1], pcoords[2] }, behind[3] = { pcoords[0], pcoords[1], pcoords[2] };
+    ahead[axis] += h;
+    behind[axis] -= h;
+    cell->InterpolateFunctions(ahead, scratch.data());
+    cell->InterpolateFunctions(behind, scratch.data() + n);
+    for (int k = 0; k < n; ++k)
+      derivatives[axis * n + k] = (scratch[k] - scratch[n + k]) / (2 * h);
+  }
+}
+
 /// A higher-order cell's pcoords of x by Newton from `pcoords`, through VTK's shape functions, and
 /// the weights there; false if it does not converge. VTK's own EvaluatePosition stops at a loose
 /// tolerance (seen as field error) and gives up near curved faces (seen as lost matter).
 bool SolveParametricCoordinates(vtkCell* cell, const double x[3], double pcoords[3], double* weights)
 {
   const int n = cell->GetNumberOfPoints();
-  std::vector<double> derivatives(3 * static_cast<std::size_t>(n));
+  std::vector<double> derivatives(3 * static_cast<std::size_t>(n)), scratch;
   for (int iteration = 0; iteration < 40; ++iteration)
   {
     cell->InterpolateFunctions(pcoords, weights);
-    cell->InterpolateDerivs(pcoords, derivatives.data());
+    ShapeDerivativesByDifferences(cell, pcoords, derivatives.data(), scratch);
     double residual[3] = { -x[0], -x[1], -x[2] }, columns[3][3] = {};
     for (int k = 0; k < n; ++k)
     {
@@ -438,6 +463,32 @@ struct MarchPixelsWorker
       x[1] <= b[3] + this->Pad && x[2] >= b[4] - this->Pad && x[2] <= b[5] + this->Pad;
   }
 
+  /// Whether `cell` contains x, with its pcoords and weights there. Linear cells: VTK's
+  /// EvaluatePosition. Higher-order cells: this file's Newton from where VTK's EvaluatePosition
+  /// ended, or from the centre where that gave up; for the cells whose VTK 9.1 derivatives are wrong
+  /// or interleaved (ShapeDerivativesByDifferences), VTK's own Newton is no guide and this one starts
+  /// from the centre. VTK 9.1's Bezier wedges share a scratch triangle between all threads: their
+  /// evaluations are serialised.
+  bool Contains(vtkGenericCell* cell, const double x[3], double pcoords[3], std::vector<double>& weights)
+  {
+    double closest[3], dist2;
+    int subId = 0;
+    if (cell->IsLinear())
+      return cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) == 1;
+    const int type = cell->GetCellType();
+    std::unique_lock<std::mutex> serialised(BezierWedgeMutex, std::defer_lock);
+    if (type == VTK_BEZIER_WEDGE)
+      serialised.lock();
+    const bool vtkDerivatives = type != VTK_LAGRANGE_HEXAHEDRON && type != VTK_BEZIER_HEXAHEDRON &&
+      type != VTK_BEZIER_TETRAHEDRON && type != VTK_BEZIER_WEDGE;
+    const int status = vtkDerivatives ? cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) : -1;
+    if (status == 0 && cell->GetParametricDistance(pcoords) > 0.01)
+      return false; // VTK's Newton converged well outside
+    if (status == -1)
+      cell->GetParametricCenter(pcoords); // it gave up (seen near curved faces), or is no guide
+    return SolveParametricCoordinates(cell, x, pcoords, weights.data());
+  }
+
   /// Visits every usable cell containing x with its interpolated scalar; `visit` returns false to
   /// stop. Returns the number of containing cells visited.
   ///
@@ -468,19 +519,8 @@ struct MarchPixelsWorker
         continue;
       }
       this->Input->GetCell(cellId, cell);
-      double closest[3], pcoords[3], dist2;
-      int subId = 0;
-      const int status = cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data());
-      bool contains = status == 1;
-      if (!cell->IsLinear())
-      {
-        if (status == 0 && cell->GetParametricDistance(pcoords) > 0.01)
-          continue; // VTK's Newton converged well outside
-        if (status == -1)
-          cell->GetParametricCenter(pcoords); // it gave up (seen near curved faces)
-        contains = SolveParametricCoordinates(cell, x, pcoords, weights.data());
-      }
-      if (!contains || !StrictlyInside(cell, pcoords, x))
+      double pcoords[3];
+      if (!this->Contains(cell, x, pcoords, weights) || !StrictlyInside(cell, pcoords, x))
       {
         continue;
       }

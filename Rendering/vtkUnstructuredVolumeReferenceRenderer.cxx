@@ -6,6 +6,7 @@
 #include "uvLinearCellSplit.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
+#include "uvSimplexBasis.h"
 #include "vtkUnstructuredVolumeScalar.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
 
@@ -20,12 +21,16 @@
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkLagrangeInterpolation.h"
+#include "vtkLagrangeTetra.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPNGWriter.h"
 #include "vtkCellData.h"
 #include "vtkPointData.h"
+#include "vtkBezierInterpolation.h"
+#include "vtkBezierTetra.h"
+#include "vtkBezierWedge.h"
 #include "vtkBiQuadraticQuadraticHexahedron.h"
 #include "vtkBiQuadraticQuadraticWedge.h"
 #include "vtkQuadraticHexahedron.h"
@@ -62,13 +67,72 @@ struct Cell
   int Corners() const { return this->Shape ? this->Shape->Corners : 4; }
 };
 
-/// The shape functions of VTK's higher-order 3D cells, through VTK's own static functions (no cell
-/// object: the reference calls them from every thread at once).
+/// The lattice indices of the nodes of a Lagrange or Bezier tetrahedron of `order` (1 to 3), in
+/// VTK's node order: the parametric coordinates VTK gives each node, times the order. Built once,
+/// from a VTK cell object, before any thread reads them.
+const std::vector<uv::SimplexIndex>& TetrahedronLattice(int order)
+{
+  static const std::array<std::vector<uv::SimplexIndex>, 4> lattices = [] {
+    std::array<std::vector<uv::SimplexIndex>, 4> made;
+    for (int n = 1; n <= 3; ++n)
+    {
+      const int nodes = (n + 1) * (n + 2) * (n + 3) / 6;
+      vtkNew<vtkLagrangeTetra> tetrahedron;
+      tetrahedron->GetPointIds()->SetNumberOfIds(nodes);
+      tetrahedron->GetPoints()->SetNumberOfPoints(nodes);
+      tetrahedron->Initialize();
+      const double* pcoords = tetrahedron->GetParametricCoords();
+      for (int k = 0; k < nodes; ++k)
+        made[n].push_back(uv::SimplexIndexAt(n, glm::dvec3(pcoords[3 * k], pcoords[3 * k + 1], pcoords[3 * k + 2])));
+    }
+    return made;
+  }();
+  return lattices[order];
+}
+
+/// The lattice indices (triangle index, layer) of the nodes of a Bezier wedge of `order` (1 to 3),
+/// in VTK's node order, as TetrahedronLattice.
+const std::vector<uv::SimplexIndex>& WedgeLattice(int order)
+{
+  static const std::array<std::vector<uv::SimplexIndex>, 4> lattices = [] {
+    std::array<std::vector<uv::SimplexIndex>, 4> made;
+    for (int n = 1; n <= 3; ++n)
+    {
+      const int nodes = (n + 1) * (n + 2) / 2 * (n + 1);
+      vtkNew<vtkBezierWedge> wedge;
+      wedge->GetPointIds()->SetNumberOfIds(nodes);
+      wedge->GetPoints()->SetNumberOfPoints(nodes);
+      wedge->SetUniformOrderFromNumPoints(nodes);
+      wedge->Initialize();
+      const double* pcoords = wedge->GetParametricCoords();
+      for (int k = 0; k < nodes; ++k)
+        made[n].push_back(uv::WedgeIndexAt(n, glm::dvec3(pcoords[3 * k], pcoords[3 * k + 1], pcoords[3 * k + 2])));
+    }
+    return made;
+  }();
+  return lattices[order];
+}
+
+/// VTK 9.1's Lagrange and Bezier hexahedra give their derivatives per node (d/dr, d/ds, d/dt of node
+/// 0, then of node 1, ...), not all d/dr first as every other cell and uvCurvedCell.h: reorders
+/// `count` nodes' in place.
+void DeinterleaveDerivatives(double* derivatives, int count)
+{
+  double blocked[3 * uv::CurvedCell<int>::MaximumNodes];
+  for (int k = 0; k < count; ++k)
+    for (int axis = 0; axis < 3; ++axis)
+      blocked[axis * count + k] = derivatives[3 * k + axis];
+  std::copy(blocked, blocked + 3 * count, derivatives);
+}
+
+/// The shape functions of VTK's higher-order 3D cells, through VTK's own static functions or, where
+/// VTK 9.1 has none or its derivatives are wrong (Lagrange and Bezier tetrahedra, Bezier wedges),
+/// uvSimplexBasis.h: no cell object, as the reference calls them from every thread at once.
 struct CurvedShapeFunctions
 {
   int Type = VTK_EMPTY_CELL;
   int Nodes = 0;
-  int Order[3] = { 0, 0, 0 }; // Lagrange cells
+  int Order[3] = { 0, 0, 0 }; // Lagrange and Bezier cells
 
   explicit operator bool() const { return this->Type != VTK_EMPTY_CELL; }
 
@@ -96,12 +160,32 @@ struct CurvedShapeFunctions
       case VTK_LAGRANGE_HEXAHEDRON:
         vtkLagrangeInterpolation::Tensor3ShapeFunctions(this->Order, p, weights);
         if (derivatives)
+        {
           vtkLagrangeInterpolation::Tensor3ShapeDerivatives(this->Order, p, derivatives);
+          DeinterleaveDerivatives(derivatives, this->Nodes);
+        }
         return;
       case VTK_LAGRANGE_WEDGE:
         vtkLagrangeInterpolation::WedgeShapeFunctions(this->Order, this->Nodes, p, weights);
         if (derivatives)
           vtkLagrangeInterpolation::WedgeShapeDerivatives(this->Order, this->Nodes, p, derivatives);
+        return;
+      case VTK_BEZIER_HEXAHEDRON:
+        vtkBezierInterpolation::Tensor3ShapeFunctions(this->Order, p, weights);
+        if (derivatives)
+        {
+          vtkBezierInterpolation::Tensor3ShapeDerivatives(this->Order, p, derivatives);
+          DeinterleaveDerivatives(derivatives, this->Nodes);
+        }
+        return;
+      case VTK_BEZIER_WEDGE:
+        uv::EvaluateBernsteinWedge(this->Order[0], WedgeLattice(this->Order[0]), xi, weights, derivatives);
+        return;
+      case VTK_LAGRANGE_TETRAHEDRON:
+      case VTK_BEZIER_TETRAHEDRON:
+        uv::EvaluateSimplexBasis(this->Type == VTK_LAGRANGE_TETRAHEDRON ? uv::SimplexBasisKind::Lagrange
+                                                                        : uv::SimplexBasisKind::Bernstein,
+          this->Order[0], TetrahedronLattice(this->Order[0]), xi, weights, derivatives);
         return;
       default:
         return;
@@ -138,14 +222,19 @@ CurvedShapeFunctions CurvedShapeFunctionsOf(int type, vtkIdType nodes, uv::CellF
   }
   for (int order = 1; order <= 3 && !shape; ++order)
   {
-    const bool hexahedron = type == VTK_LAGRANGE_HEXAHEDRON && nodes == (order + 1) * (order + 1) * (order + 1);
-    const bool wedge = type == VTK_LAGRANGE_WEDGE && nodes == (order + 1) * (order + 2) / 2 * (order + 1);
-    if (hexahedron || wedge)
+    const vtkIdType hexahedronNodes = (order + 1) * (order + 1) * (order + 1);
+    const vtkIdType wedgeNodes = (order + 1) * (order + 2) / 2 * (order + 1);
+    const vtkIdType tetrahedronNodes = (order + 1) * (order + 2) * (order + 3) / 6;
+    const bool hexahedron = (type == VTK_LAGRANGE_HEXAHEDRON || type == VTK_BEZIER_HEXAHEDRON) && nodes == hexahedronNodes;
+    const bool wedge = (type == VTK_LAGRANGE_WEDGE || type == VTK_BEZIER_WEDGE) && nodes == wedgeNodes;
+    const bool tetrahedron =
+      (type == VTK_LAGRANGE_TETRAHEDRON || type == VTK_BEZIER_TETRAHEDRON) && nodes == tetrahedronNodes;
+    if (hexahedron || wedge || tetrahedron)
     {
       shape.Type = type;
       shape.Nodes = static_cast<int>(nodes);
       shape.Order[0] = shape.Order[1] = shape.Order[2] = order;
-      family = hexahedron ? uv::CellFamily::Hexahedron : uv::CellFamily::Wedge;
+      family = hexahedron ? uv::CellFamily::Hexahedron : wedge ? uv::CellFamily::Wedge : uv::CellFamily::Tetrahedron;
     }
   }
   return shape;
@@ -174,6 +263,25 @@ const uv::IsoparametricShape* ShapeOf(int type)
     default:
       return nullptr;
   }
+}
+
+bool IsUninterpolable3D(int type)
+{
+  return type == VTK_LAGRANGE_PYRAMID || type == VTK_BEZIER_PYRAMID || type == VTK_HIGHER_ORDER_TETRAHEDRON ||
+    type == VTK_HIGHER_ORDER_WEDGE || type == VTK_HIGHER_ORDER_PYRAMID || type == VTK_HIGHER_ORDER_HEXAHEDRON;
+}
+
+bool HasRationalBezierCells(vtkDataSet* input)
+{
+  if (!input->GetPointData()->GetRationalWeights())
+    return false;
+  for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+  {
+    const int type = input->GetCellType(c);
+    if (type == VTK_BEZIER_TETRAHEDRON || type == VTK_BEZIER_HEXAHEDRON || type == VTK_BEZIER_WEDGE)
+      return true;
+  }
+  return false;
 }
 
 bool IsPolygonalCell(int type)
@@ -306,8 +414,9 @@ struct Mesh
       }
       if (type != VTK_TETRA && !ShapeOf(type))
       {
-        probe->SetCellType(type);
-        if (type == VTK_EMPTY_CELL || probe->GetCellDimension() < 3)
+        if (!IsUninterpolable3D(type)) // no VTK 9.1 class for these: the probe would complain
+          probe->SetCellType(type);
+        if (!IsUninterpolable3D(type) && (type == VTK_EMPTY_CELL || probe->GetCellDimension() < 3))
         {
           ++this->NotThreeDimensional;
           continue;
@@ -831,13 +940,18 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     return true;
   }
 
+  if (HasRationalBezierCells(input))
+  {
+    vtkErrorMacro("Rational Bezier cells (a RationalWeights point array) are not rendered by the reference.");
+    return false;
+  }
   Mesh mesh;
   mesh.LoadPoints(input, scalar);
   if (!mesh.LoadCells(input))
   {
     vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges, pyramids, "
                   "pentagonal and hexagonal prisms, polyhedra, quadratic and triquadratic cells, and Lagrange "
-                  "hexahedra and wedges up to order 3; a cell is a "
+                  "and non-rational Bezier tetrahedra, hexahedra and wedges up to order 3; a cell is a "
       << vtkCellTypes::GetClassNameFromTypeId(input->GetCellType(mesh.Unsupported)) << ".");
     return false;
   }

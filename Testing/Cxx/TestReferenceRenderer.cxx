@@ -337,13 +337,25 @@ TEST(ReferenceRenderer, BadInput)
   EXPECT_FALSE(renderer->Render());
   EXPECT_EQ(missing.Errors, 1);
 
-  // Quadratic cells render (test_higher_order.py checks how well); a Lagrange tetrahedron, whose
-  // shape functions VTK offers only through a cell object, is an error naming it.
-  Render(uvtest::QuadraticTetraMesh(), property, camera, 8, 1e-7, &events);
+  // Quadratic cells render (test_higher_order.py checks how well), and a Lagrange tetrahedron of
+  // order 2 on the same ten nodes is the same cell. A Lagrange pyramid, which no VTK 9.1 class
+  // interpolates, is an error naming it, as is a rational Bezier cell.
+  const auto quadratic = Render(uvtest::QuadraticTetraMesh(), property, camera, 8, 1e-7, &events);
   EXPECT_EQ(events->Errors, 0);
-  Render(uvtest::QuadraticTetraMesh(VTK_LAGRANGE_TETRAHEDRON), property, camera, 8, 1e-7, &events);
+  const auto lagrange = Render(uvtest::QuadraticTetraMesh(VTK_LAGRANGE_TETRAHEDRON), property, camera, 8, 1e-7, &events);
+  EXPECT_EQ(events->Errors, 0);
+  EXPECT_LT(MaxDifference(quadratic, lagrange), 1e-6);
+  Render(uvtest::QuadraticTetraMesh(VTK_LAGRANGE_PYRAMID), property, camera, 8, 1e-7, &events);
   EXPECT_EQ(events->Errors, 1);
-  EXPECT_NE(events->LastMessage.find("vtkLagrangeTetra"), std::string::npos) << events->LastMessage;
+  EXPECT_NE(events->LastMessage.find("vtkLagrangePyramid"), std::string::npos) << events->LastMessage;
+  auto bezier = uvtest::QuadraticTetraMesh(VTK_BEZIER_TETRAHEDRON);
+  vtkNew<vtkDoubleArray> rationalWeights;
+  rationalWeights->SetNumberOfTuples(bezier->GetNumberOfPoints());
+  rationalWeights->Fill(1.0);
+  bezier->GetPointData()->SetRationalWeights(rationalWeights);
+  Render(bezier, property, camera, 8, 1e-7, &events);
+  EXPECT_EQ(events->Errors, 1);
+  EXPECT_NE(events->LastMessage.find("Rational Bezier"), std::string::npos) << events->LastMessage;
 }
 
 TEST(ReferenceRenderer, CurvedTransferFunctionsAreFollowedWithNodesWhereTheyBend)

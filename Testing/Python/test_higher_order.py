@@ -1,9 +1,10 @@
-"""Higher-order cells (quadratic, triquadratic and biquadratic cells) through the reference and the
-mappers.
+"""Higher-order cells (quadratic, triquadratic and biquadratic cells; Lagrange and Bezier cells)
+through the reference and the mappers.
 
 - The reference renders them exactly (curved faces met by Newton, the isoparametric field): against
   vtkLocatorRayMarcher, which samples VTK's own cells (VTK's shape functions, its own inverse), on a
-  generated curved quadratic mesh and on every real higher-order mesh, point and cell data.
+  generated curved quadratic mesh, on generated curved Lagrange and Bezier tetrahedra, hexahedra and
+  wedges of orders 2 and 3, and on every real higher-order mesh, point and cell data.
 - Straight-sided quadratic tetrahedra carrying a linear field render as their corner tetrahedra.
 - The mappers draw vtkHigherOrderSubdivision's linear cells: against the exact reference their error
   falls by second order as the level doubles, and fed the higher-order mesh itself they subdivide it
@@ -22,10 +23,14 @@ import uvrender  # noqa: E402
 from fixtures import (BaselineTestCase, HexScene, Scene, SceneTestCase, analytic, camera_for,  # noqa: E402
                       largest_difference, load_shared, march, reference, rmse)
 
-from unstructuredvolume import (vtkBarycentricShellMapper, vtkHexahedralRayCastMapper,  # noqa: E402
+from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper, vtkHexahedralRayCastMapper,  # noqa: E402
                                 vtkHigherOrderSubdivision, vtkPreIntegratedTetrahedraMapper)
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdList, vtkPoints  # noqa: E402
-from vtkmodules.vtkCommonDataModel import VTK_QUADRATIC_TETRA, VTK_TETRA, vtkUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkCommonDataModel import (VTK_BEZIER_HEXAHEDRON, VTK_BEZIER_TETRAHEDRON,  # noqa: E402
+                                            VTK_BEZIER_WEDGE, VTK_LAGRANGE_HEXAHEDRON, VTK_LAGRANGE_TETRAHEDRON,
+                                            VTK_LAGRANGE_WEDGE, VTK_QUADRATIC_TETRA, VTK_TETRA, vtkBezierHexahedron,
+                                            vtkBezierTetra, vtkBezierWedge, vtkHexahedron, vtkLagrangeHexahedron,
+                                            vtkLagrangeTetra, vtkLagrangeWedge, vtkUnstructuredGrid, vtkWedge)
 from vtkmodules.vtkRenderingCore import vtkCamera  # noqa: E402
 
 SIZE = 64
@@ -63,6 +68,81 @@ def quadratic_tetrahedra(bulge=0.0, field=lambda x, y, z: 0.3 * x - 0.2 * y + 0.
     values.SetName("field")
     for i in range(points.GetNumberOfPoints()):
         values.InsertNextValue(field(*points.GetPoint(i)))
+    mesh.GetPointData().SetScalars(values)
+    return mesh
+
+
+LATTICE_CELLS = {VTK_LAGRANGE_TETRAHEDRON: vtkLagrangeTetra, VTK_BEZIER_TETRAHEDRON: vtkBezierTetra,
+                 VTK_LAGRANGE_HEXAHEDRON: vtkLagrangeHexahedron, VTK_BEZIER_HEXAHEDRON: vtkBezierHexahedron,
+                 VTK_LAGRANGE_WEDGE: vtkLagrangeWedge, VTK_BEZIER_WEDGE: vtkBezierWedge}
+TETRAHEDRA = (VTK_LAGRANGE_TETRAHEDRON, VTK_BEZIER_TETRAHEDRON)
+WEDGES = (VTK_LAGRANGE_WEDGE, VTK_BEZIER_WEDGE)
+# Each hexahedron of vtkAnalyticMeshSource as two wedges over its bottom face's 0-2 diagonal, each
+# base triangle ordered as VTK's wedge wants it (its normal away from the top triangle).
+HEXAHEDRON_AS_WEDGES = ((0, 3, 1, 4, 7, 5), (1, 3, 2, 5, 7, 6))
+
+
+def lattice_node_count(cell_type, order):
+    if cell_type in TETRAHEDRA:
+        return (order + 1) * (order + 2) * (order + 3) // 6
+    if cell_type in WEDGES:
+        return (order + 1) * (order + 2) // 2 * (order + 1)
+    return (order + 1) ** 3
+
+
+def node_parametric_coordinates(cell_type, order):
+    """The parametric coordinates VTK gives the nodes of a Lagrange or Bezier cell of `order`."""
+    count = lattice_node_count(cell_type, order)
+    cell = LATTICE_CELLS[cell_type]()
+    cell.GetPointIds().SetNumberOfIds(count)
+    cell.GetPoints().SetNumberOfPoints(count)
+    if cell_type not in TETRAHEDRA:
+        cell.SetUniformOrderFromNumPoints(count)
+    cell.Initialize()
+    flat = cell.GetParametricCoords()
+    return [flat[3 * k:3 * k + 3] for k in range(count)]
+
+
+def linear_map(cell_type, corners, r, s, t):
+    """The position at (r, s, t) of the straight cell over `corners`."""
+    if cell_type in TETRAHEDRA:
+        weights = (1 - r - s - t, r, s, t)
+    else:
+        weights = [0.0] * len(corners)
+        (vtkWedge if cell_type in WEDGES else vtkHexahedron).InterpolationFunctions((r, s, t), weights)
+    return [sum(w * p[axis] for w, p in zip(weights, corners)) for axis in range(3)]
+
+
+def lattice_cells(cell_type, order, bulge, field):
+    """Curved cells of `cell_type` and `order` filling [-1, 1]^3: vtkAnalyticMeshSource's tetrahedra
+    (2^3 x 6) or hexahedra (2^3, or two wedges each), every node placed at its parametric position in
+    the straight cell and then displaced by `bulge` times a smooth map (nodes merged by position, so
+    the cells conform), carrying `field` of that position (a Bezier cell's control points too)."""
+    if cell_type in TETRAHEDRA:
+        linear, corner_sets = analytic(2), ((0, 1, 2, 3),)
+    else:
+        linear = analytic(2, cells=vtkAnalyticMeshSource.HEXAHEDRA)
+        corner_sets = HEXAHEDRON_AS_WEDGES if cell_type in WEDGES else (tuple(range(8)),)
+    parametric = node_parametric_coordinates(cell_type, order)
+    points, values, merged = vtkPoints(), vtkDoubleArray(), {}
+    values.SetName("field")
+    mesh = vtkUnstructuredGrid()
+    ids = vtkIdList()
+    for c in range(linear.GetNumberOfCells()):
+        linear.GetCellPoints(c, ids)
+        for corner_set in corner_sets:
+            corners = [linear.GetPoint(ids.GetId(k)) for k in corner_set]
+            nodes = []
+            for r, s, t in parametric:
+                x, y, z = linear_map(cell_type, corners, r, s, t)
+                key = (round(x, 9), round(y, 9), round(z, 9))
+                if key not in merged:
+                    moved = (x + bulge * (1 - x * x), y + bulge * (1 - z * z) * x, z + bulge * x * y)
+                    merged[key] = points.InsertNextPoint(moved)
+                    values.InsertNextValue(field(*moved))
+                nodes.append(merged[key])
+            mesh.InsertNextCell(cell_type, len(nodes), nodes)
+    mesh.SetPoints(points)
     mesh.GetPointData().SetScalars(values)
     return mesh
 
@@ -105,19 +185,30 @@ def higher_order(name):
 
 
 class ReferenceAgainstMarcher(unittest.TestCase):
-    def compare(self, mesh, array, cells=False):
+    def compare(self, mesh, array, cells=False, pixels=MARCH_PIXELS, steps=MARCH_STEPS):
         prop, camera = scene_of(mesh, array, cells)
         image = reference(mesh, prop, camera, SIZE).GetPointData().GetScalars()
         covered = [p for p in range(SIZE * SIZE) if image.GetTuple4(p)[3] > 0]
         self.assertGreater(len(covered), SIZE * SIZE // 20)
-        pixels = random.Random(15).sample(covered, MARCH_PIXELS)
-        marched = march(mesh, prop, camera, SIZE, pixels, MARCH_STEPS, array=array, cells=cells)
+        pixels = random.Random(15).sample(covered, pixels)
+        marched = march(mesh, prop, camera, SIZE, pixels, steps, array=array, cells=cells)
         difference = largest_difference([image.GetTuple4(p) for p in pixels], marched)
         self.assertLess(difference, MARCH_BOUND)
         return difference
 
     def test_generated_curved_quadratic_tetrahedra(self):
         self.compare(quadratic_tetrahedra(0.08, lambda x, y, z: x * x + y * z + 0.5 * z), "field")
+
+    def test_generated_lagrange_and_bezier_cells(self):
+        """VTK's Lagrange and Bezier cells, whose shape functions the marcher takes from VTK's cell
+        objects and the reference from static functions or uvSimplexBasis.h (tetrahedra)."""
+        # Fewer pixels and steps than for the other meshes: the marcher's Newton runs through VTK's
+        # de Casteljau evaluation (slow) and, for Bezier wedges, one thread at a time.
+        for cell_type, order in ((VTK_LAGRANGE_TETRAHEDRON, 3), (VTK_BEZIER_TETRAHEDRON, 2), (VTK_LAGRANGE_HEXAHEDRON, 2),
+                                 (VTK_BEZIER_HEXAHEDRON, 3), (VTK_LAGRANGE_WEDGE, 2), (VTK_BEZIER_WEDGE, 2)):
+            with self.subTest(cell=LATTICE_CELLS[cell_type].__name__, order=order):
+                self.compare(lattice_cells(cell_type, order, 0.08, lambda x, y, z: x * x + y * z + 0.5 * z),
+                             "field", pixels=8, steps=2000)
 
     def test_real_meshes_point_data(self):
         for name, loader, array in shared_data.HIGHER_ORDER_MESHES:
