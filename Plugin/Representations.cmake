@@ -34,6 +34,7 @@ uv_representation_entry(
   PROXY HexahedralRayCastRepresentation
   MENU "Volume (Hexahedral Ray Cast)"
   GROUP "Hexahedral Ray Cast"
-  PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity OpacityThreshold MaximumPeels ExactSegmentEnds
+  PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity SkipInvisibleCells OpacityThreshold MaximumPeels
+    ExactSegmentEnds
   # Accurate / Fast / Fixed steps, not the tetrahedra's average scalar / partial pre-integration.
   UNSHARED IntegrationMode HexahedralIntegrationMode)

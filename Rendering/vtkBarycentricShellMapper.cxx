@@ -829,7 +829,6 @@ void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GradientMode: " << (this->GradientMode == VERTEX_GRADIENTS ? "VertexGradients" : "CellGradients")
      << "\n";
   os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
-  os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
 }
 
 bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)

@@ -147,13 +147,6 @@ public:
   ///@}
 
   ///@{
-  /// Leave out tetrahedra the transfer function makes invisible (default on).
-  vtkSetMacro(SkipInvisibleCells, bool);
-  vtkGetMacro(SkipInvisibleCells, bool);
-  vtkBooleanMacro(SkipInvisibleCells, bool);
-  ///@}
-
-  ///@{
   /// An image (point scalars, first component) to render instead of the mesh's own scalar, sampled
   /// (trilinearly) through the input's 3-component point texture coordinates, 0 to 1 across the
   /// image's points: the mesh carries the image, so deforming the mesh deforms the image (a
@@ -204,7 +197,6 @@ protected:
   int IsosurfaceLayers = 4;
   int GradientMode = VERTEX_GRADIENTS;
   char* GradientArrayName = nullptr;
-  bool SkipInvisibleCells = true;
 
 private:
   vtkBarycentricShellMapper(const vtkBarycentricShellMapper&) = delete;

@@ -1,6 +1,7 @@
 #include "vtkHexahedralRayCastMapper.h"
 
 #include "uvIsosurfaceList.h"
+#include "uvVisibleRegion.h"
 #include "vtkHexahedralRayCastPrograms.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
@@ -62,6 +63,88 @@ private:
   int Cell = -1;
   std::uint64_t MeshVersion = 0;
   glm::dvec3 Eye{ 0.0 };
+};
+
+/// The faces the walk takes: the whole mesh's, or with skipping the visible region's
+/// (uvVisibleRegion.h), whose entry faces are the front of the visible matter and whose boundary
+/// stops a ray where it leaves that matter. Cell ranges are computed once per mesh (and isosurface
+/// kind); the region is rebuilt, and its version bumped for the GPU copies, only when the set of
+/// visible cells changes.
+class WalkedFaces
+{
+public:
+  std::uint64_t Version = 0; ///< of Neighbours() and Boundary(), for the GPU copies
+  int RegionBuilds = 0;
+
+  /// True when the faces changed.
+  bool Update(const uvvtk::HexahedralMesh& mesh, bool skip, const std::vector<uv::TransferFunction::Node>& nodes,
+    const std::vector<uv::Isosurface>& isosurfaces)
+  {
+    const bool widen = !mesh.CellScalars.empty() && !isosurfaces.empty();
+    if (skip && (mesh.Version != this->RangesMeshVersion || widen != this->RangesWidened))
+    {
+      uv::HexahedralCellRanges(mesh.CellPoints, mesh.Points.Values, mesh.CellScalars, mesh.Faces.Neighbours, widen,
+        this->Low, this->High, uvvtk::ParallelFor);
+      this->RangesMeshVersion = mesh.Version;
+      this->RangesWidened = widen;
+      this->Visible.clear(); // the region must be rebuilt
+    }
+    bool changed = skip != this->Skip || mesh.Version != this->MeshVersion;
+    if (skip)
+    {
+      std::vector<double> isovalues;
+      for (const uv::Isosurface& surface : isosurfaces)
+        isovalues.push_back(surface.Value);
+      std::sort(isovalues.begin(), isovalues.end());
+      std::vector<unsigned char> visible =
+        uv::VisibleCells(this->Low, this->High, uv::ZeroExtinctionIntervals(nodes), isovalues, uvvtk::ParallelFor);
+      if (visible != this->Visible)
+      {
+        this->Region = uv::MakeVisibleRegion(mesh.Faces, visible, uvvtk::ParallelFor);
+        this->Visible = std::move(visible);
+        ++this->RegionBuilds;
+        changed = true;
+      }
+    }
+    else if (!this->Visible.empty())
+    {
+      this->Visible.clear();
+      this->Region = uv::VisibleRegion();
+    }
+    this->Skip = skip;
+    this->MeshVersion = mesh.Version;
+    this->Mesh = &mesh;
+    this->Version += changed ? 1 : 0;
+    return changed;
+  }
+
+  const std::vector<std::int32_t>& Neighbours() const
+  {
+    return this->Skip ? this->Region.Neighbours : this->Mesh->Faces.Neighbours;
+  }
+  const std::vector<std::int32_t>& Boundary() const
+  {
+    return this->Skip ? this->Region.Boundary : this->Mesh->Faces.Boundary;
+  }
+  std::size_t BoundaryCount() const { return this->Boundary().size() / 4; }
+  bool Skipping() const { return this->Skip; }
+  /// Whether rays may start in `cell` (the eye's): with skipping, only in a visible one.
+  bool Walks(int cell) const { return cell >= 0 && (!this->Skip || this->Visible[cell]); }
+  std::size_t VisibleCells() const { return this->Skip ? this->Region.VisibleCells : this->Mesh->CellCount(); }
+  std::size_t Bytes() const
+  {
+    return sizeof(float) * (this->Low.size() + this->High.size()) + this->Visible.size() +
+      sizeof(std::int32_t) * (this->Region.Neighbours.size() + this->Region.Boundary.size());
+  }
+
+private:
+  const uvvtk::HexahedralMesh* Mesh = nullptr;
+  bool Skip = false;
+  std::uint64_t MeshVersion = 0, RangesMeshVersion = 0;
+  bool RangesWidened = false;
+  std::vector<float> Low, High;
+  std::vector<unsigned char> Visible;
+  uv::VisibleRegion Region;
 };
 
 /// The GPU copies of the mesh, the transfer function and the isosurfaces.
@@ -345,8 +428,9 @@ public:
   uvvtk::HexahedralMesh Mesh;
   uvvtk::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
+  WalkedFaces Walked;
   EyeCell Eye;
-  int EyeCellOfFrame = -1; // perspective eye inside the mesh, or -1
+  int EyeCellOfFrame = -1; // perspective eye inside a walked cell, or -1
   bool WarnedNaN = false;
   int Peels = 0;
 
@@ -367,7 +451,7 @@ public:
     for (int peel = 0; peel < maximumPeels; ++peel)
     {
       bool entered = false;
-      if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Mesh.BoundaryCount(), peel == 0, entered))
+      if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Walked.BoundaryCount(), peel == 0, entered))
         return false;
       const bool fromEye = peel == 0 && this->EyeCellOfFrame >= 0;
       if (!entered && !fromEye)
@@ -395,6 +479,18 @@ vtkHexahedralRayCastMapper::~vtkHexahedralRayCastMapper() = default;
 vtkIdType vtkHexahedralRayCastMapper::GetNumberOfCells()
 {
   return static_cast<vtkIdType>(this->Impl->Mesh.CellCount());
+}
+vtkIdType vtkHexahedralRayCastMapper::GetNumberOfVisibleCells()
+{
+  return static_cast<vtkIdType>(this->Impl->Walked.VisibleCells());
+}
+vtkIdType vtkHexahedralRayCastMapper::GetNumberOfEntryFaces()
+{
+  return static_cast<vtkIdType>(this->Impl->Walked.BoundaryCount());
+}
+int vtkHexahedralRayCastMapper::GetNumberOfVisibleRegionBuilds()
+{
+  return this->Impl->Walked.RegionBuilds;
 }
 vtkIdType vtkHexahedralRayCastMapper::GetNumberOfBoundaryFaces()
 {
@@ -508,8 +604,11 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
   // A cell scalar's isosurfaces are faces between cells (the walk draws them as it crosses); the
   // volume is unlit anyway (the shader lights only isosurfaces).
   this->WarnCellScalarLimits(scalar, false, true);
+  impl.Walked.Update(impl.Mesh, this->SkipInvisibleCells, impl.TransferFunction.Nodes, impl.DrawnIsosurfaces);
   const glm::dvec3& center = impl.Mesh.Points.Center;
-  impl.EyeCellOfFrame = frame.Parallel ? -1 : impl.Eye.Update(impl.Mesh, frame.EyeInModel(center));
+  const int eyeCell = frame.Parallel ? -1 : impl.Eye.Update(impl.Mesh, frame.EyeInModel(center));
+  // An eye in an invisible cell: its rays start at the visible region's first entry face instead.
+  impl.EyeCellOfFrame = impl.Walked.Walks(eyeCell) ? eyeCell : -1;
   return true;
 }
 
@@ -520,8 +619,8 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
   const uvvtk::HexahedralMesh& mesh = impl.Mesh;
   impl.Gpu.CellPoints.Sync(window, mesh.CellPoints, 4, mesh.Version);
   impl.Gpu.Points.Sync(window, mesh.Points.Values, 4, mesh.Version);
-  impl.Gpu.Neighbours.Sync(window, mesh.Faces.Neighbours, 4, mesh.Version);
-  impl.Gpu.BoundaryFaces.Sync(window, mesh.Faces.Boundary, 4, mesh.Version);
+  impl.Gpu.Neighbours.Sync(window, impl.Walked.Neighbours(), 4, impl.Walked.Version);
+  impl.Gpu.BoundaryFaces.Sync(window, impl.Walked.Boundary(), 4, impl.Walked.Version);
   if (!mesh.CellScalars.empty())
     impl.Gpu.CellScalars.Sync(window, mesh.CellScalars, 1, mesh.Version);
   impl.Gpu.TransferFunction.Sync(window, impl.TransferFunction.Nodes);

@@ -25,9 +25,12 @@
  * cubic crosses an isovalue the surface is composited, Phong-lit from the vtkVolumeProperty and the
  * renderer's first light with the exact gradient of the cell's trilinear field (no gradient array).
  *
- * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.99); pixels no
- * boundary face covers cost nothing beyond the entry pass; a cell whose scalar range the transfer
- * function makes transparent (and holding no isovalue) costs one range test, no integration.
+ * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.99); with
+ * SkipInvisibleCells (default) the walk takes only the cells whose scalar range the transfer function
+ * makes visible or that hold an isovalue (after the iSBVR paper's culling surfaces, uvVisibleRegion.h):
+ * rays enter at the front of that region, end at its back, leap over invisible runs inside the mesh
+ * by peeling on to its next entry face, and rays that meet none cost only the entry pass. Without
+ * skipping a transparent cell costs one range test, no integration.
  *
  * The traversal reads transfer-function nodes from uniforms: a function with more than
  * uvgl::MaximumUniformNodes nodes is approximated by fewer (with a warning). A perspective eye inside
@@ -101,7 +104,8 @@ public:
   ///@}
 
   ///@{
-  /// Depth-peeling passes at most (non-convex meshes, holes); default 8.
+  /// Depth-peeling passes at most (non-convex meshes, holes); default 8. With skipping each run of
+  /// visible cells along a ray takes one: raise it where rays cross more runs than that.
   vtkSetClampMacro(MaximumPeels, int, 1, 64);
   vtkGetMacro(MaximumPeels, int);
   ///@}
@@ -114,6 +118,15 @@ public:
   vtkIdType GetNumberOfBoundaryFaces();
   int GetNumberOfPeels();
   int GetNumberOfMeshBuilds();
+  ///@}
+
+  ///@{
+  /// Skipping (SkipInvisibleCells): the cells the walk takes (every cell when off), the faces rays
+  /// enter them by (the visible region's boundary, or the mesh's), and how often the region was
+  /// rebuilt (only when a transfer-function or isovalue edit changes which cells are visible).
+  vtkIdType GetNumberOfVisibleCells();
+  vtkIdType GetNumberOfEntryFaces();
+  int GetNumberOfVisibleRegionBuilds();
   ///@}
 
   /// Cells, points, adjacency and boundary faces (not the screen-sized images).

@@ -183,7 +183,6 @@ void vtkPreIntegratedTetrahedraMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntegrationMode: "
      << (this->IntegrationMode == AVERAGE_SCALAR ? "AverageScalar" : "PartialPreIntegration") << "\n";
   os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
-  os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
 }
 
 bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)

@@ -80,14 +80,6 @@ public:
   ///@}
 
   ///@{
-  /// Leave out tetrahedra the transfer function makes invisible (default on). Off draws every
-  /// tetrahedron, for measuring what the skipping saves.
-  vtkSetMacro(SkipInvisibleCells, bool);
-  vtkGetMacro(SkipInvisibleCells, bool);
-  vtkBooleanMacro(SkipInvisibleCells, bool);
-  ///@}
-
-  ///@{
   /// What the last frames did, for tests: tetrahedra drawn in the last frame, visibility sorts,
   /// gradient computations, uploads of the mesh and of the transfer function, visible-list builds.
   vtkIdType GetNumberOfDrawnTetrahedra();
@@ -112,7 +104,6 @@ protected:
 
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   char* GradientArrayName = nullptr;
-  bool SkipInvisibleCells = true;
 
 private:
   vtkPreIntegratedTetrahedraMapper(const vtkPreIntegratedTetrahedraMapper&) = delete;

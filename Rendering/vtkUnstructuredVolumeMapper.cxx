@@ -209,4 +209,5 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KeepFloatImage: " << this->KeepFloatImage << "\n";
   os << indent << "ProjectionRoute: " << (this->ProjectionRoute == VERTEX_PULLING ? "VertexPulling" : "GeometryShader")
      << "\n";
+  os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
 }

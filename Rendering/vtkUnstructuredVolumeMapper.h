@@ -85,6 +85,17 @@ public:
   void SetProjectionRouteToGeometryShader() { this->SetProjectionRoute(GEOMETRY_SHADER); }
   ///@}
 
+  ///@{
+  /// Leave out the cells the transfer function makes invisible: those whose scalar range meets
+  /// only zero extinction and holds no isovalue (uvCellVisibility.h). The tetrahedral mappers draw
+  /// no such tetrahedron; the hexahedral ray caster walks only the visible cells, its rays entering
+  /// at the visible region's front, leaving at its back and leaping over invisible runs between
+  /// (uvVisibleRegion.h). Default on; the image does not change, off is for measuring what it saves.
+  vtkSetMacro(SkipInvisibleCells, bool);
+  vtkGetMacro(SkipInvisibleCells, bool);
+  vtkBooleanMacro(SkipInvisibleCells, bool);
+  ///@}
+
   /// Bytes of GPU buffers the mesh takes (not the screen-sized images), as of the last frame.
   virtual vtkIdType GetMeshMemoryInBytes() = 0;
 
@@ -120,6 +131,7 @@ protected:
 
   bool KeepFloatImage = false;
   int ProjectionRoute = VERTEX_PULLING;
+  bool SkipInvisibleCells = true;
 
 private:
   vtkUnstructuredVolumeMapper(const vtkUnstructuredVolumeMapper&) = delete;

@@ -42,12 +42,6 @@ void vtkBarycentricShellRepresentation::SetOpacityThreshold(double threshold)
   this->MarkModified();
 }
 
-void vtkBarycentricShellRepresentation::SetSkipInvisibleCells(int skip)
-{
-  this->ShellMapper->SetSkipInvisibleCells(skip != 0);
-  this->MarkModified();
-}
-
 void vtkBarycentricShellRepresentation::SetSegmentIntegration(int integration)
 {
   this->ShellMapper->SetSegmentIntegration(integration);

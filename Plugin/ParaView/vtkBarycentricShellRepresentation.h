@@ -30,7 +30,6 @@ public:
   void SetAutomaticSamplesAcross(int samples);
   void SetSlicesPerShell(int slices);
   void SetOpacityThreshold(double threshold);
-  void SetSkipInvisibleCells(int skip);
   void SetSegmentIntegration(int integration);
   void SetIsosurfaceLayers(int layers);
   void SetGradientMode(int mode);

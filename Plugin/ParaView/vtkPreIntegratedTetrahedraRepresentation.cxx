@@ -17,9 +17,3 @@ void vtkPreIntegratedTetrahedraRepresentation::SetIntegrationMode(int mode)
   this->PreIntegratedMapper->SetIntegrationMode(mode);
   this->MarkModified();
 }
-
-void vtkPreIntegratedTetrahedraRepresentation::SetSkipInvisibleCells(int skip)
-{
-  this->PreIntegratedMapper->SetSkipInvisibleCells(skip != 0);
-  this->MarkModified();
-}

@@ -25,7 +25,6 @@ public:
   ///@{
   /// Forwarded to vtkPreIntegratedTetrahedraMapper.
   void SetIntegrationMode(int mode);
-  void SetSkipInvisibleCells(int skip);
   ///@}
 
 protected:

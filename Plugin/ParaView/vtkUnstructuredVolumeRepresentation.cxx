@@ -71,6 +71,12 @@ void vtkUnstructuredVolumeRepresentation::SetProjectionRoute(int route)
   this->MarkModified();
 }
 
+void vtkUnstructuredVolumeRepresentation::SetSkipInvisibleCells(int skip)
+{
+  this->PinnedMapper->SetSkipInvisibleCells(skip != 0);
+  this->MarkModified();
+}
+
 void vtkUnstructuredVolumeRepresentation::UpdateMapperParameters()
 {
   this->Superclass::UpdateMapperParameters();

@@ -46,6 +46,9 @@ public:
   /// only where the mapper projects tetrahedra.
   void SetProjectionRoute(int route);
 
+  /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetSkipInvisibleCells).
+  void SetSkipInvisibleCells(int skip);
+
 protected:
   vtkUnstructuredVolumeRepresentation();
   ~vtkUnstructuredVolumeRepresentation() override;

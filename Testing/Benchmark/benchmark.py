@@ -40,7 +40,7 @@ from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoint
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkVersion
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkTable, vtkUnstructuredGrid
 from vtkmodules.vtkImagingCore import vtkImageConstantPad
-from vtkmodules.vtkFiltersCore import vtkImageAppend, vtkPointDataToCellData
+from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkImageAppend, vtkPointDataToCellData
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLImageDataWriter
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
@@ -77,6 +77,9 @@ MAPPERS = [
      "hexahedra"),
     # Accurate without early ray termination: what stopping at opacity 0.99 saves and costs.
     ("UV HexRayCast Accurate, no early stop", lambda: configured(vtkHexahedralRayCastMapper, OpacityThreshold=1.0),
+     "hexahedra"),
+    # Without skipping the cells the transfer function leaves invisible: what skipping saves.
+    ("UV HexRayCast Accurate, no skipping", lambda: configured(vtkHexahedralRayCastMapper, SkipInvisibleCells=False),
      "hexahedra"),
     # Barycentric shells from coarse to fine sampling (samples across the mesh's bounding box diagonal;
     # 128 is the default), the paper's geometry-shader route, and the same pipeline's
@@ -117,6 +120,16 @@ def wavelet_tets():
     return split.GetOutput()
 
 
+def wavelet_hexahedra():
+    """VTK's wavelet on 64^3 points as an unstructured grid of 250,047 hexahedra."""
+    wavelet = vtkRTAnalyticSource()
+    wavelet.SetWholeExtent(-32, 31, -32, 31, -32, 31)
+    append = vtkAppendFilter()
+    append.SetInputConnection(wavelet.GetOutputPort())
+    append.Update()
+    return append.GetOutput()
+
+
 def split_tets(load):
     """The 6-tet split of a mesh: renders the tets' own (piecewise-linear) field."""
     def loader():
@@ -144,6 +157,13 @@ def spikes(low, high):
     opacity.append((high, 0.0))
     colors.append((high, (0.9, 0.9, 0.9)))
     return opacity, colors
+
+
+def top_tenth(low, high):
+    """Only the top tenth of the range visible, ramping up: most of the mesh is empty space."""
+    start = low + 0.9 * (high - low)
+    return [(low, 0.0), (start, 0.0), (high, 0.8)], [(low, (0.2, 0.3, 0.9)), (start, (0.9, 0.8, 0.3)),
+                                                     (high, (0.9, 0.1, 0.1))]
 
 
 def on_cells(scalar):
@@ -185,6 +205,8 @@ def scenes(quick):
     if quick:
         return found[:2]
     found.append(("wavelet_tets", wavelet_tets, "RTData", smooth_ramp, 0.05))
+    # Empty space: the same wavelet's hexahedra with only the top tenth of the range visible.
+    found.append(("wavelet_hex_top_tenth", wavelet_hexahedra, "RTData", top_tenth, 0.05))
     found.append(("ml_twisted_hex_cells", with_cell_data(lambda: analytic(resolution, ml, twist, hexahedra)),
                   "cells:MarschnerLobb", smooth_ramp, 0.05))
     # Hex-dominant: wedge columns, pyramids and tetrahedra among jittered hexahedra (fixtures.hex_dominant).

@@ -1,0 +1,128 @@
+// The part of a hexahedral mesh a transfer function leaves visible, as a mesh of its own for the
+// ray caster's walk: the cells' face neighbours with every face towards an invisible cell made a
+// boundary face, and the region's boundary faces (the mesh's own faces of visible cells, and the
+// faces between a visible and an invisible cell). Rays then enter at the front of the visible
+// matter (space leaping), end behind it (exit-based leaping), cost nothing where no visible cell
+// lies on them (empty rays), and leap over invisible runs inside the mesh by peeling on to the
+// region's next entry face. These are the culling surfaces of Xue, Zhang and Crawfis's iSBVR,
+// made of whole cells as the paper "inflates" its isosurface, so nothing visible is culled: a cell
+// is visible when its scalar range meets non-zero extinction or holds an isovalue
+// (uvCellVisibility.h). VTK-free.
+#ifndef uvVisibleRegion_h
+#define uvVisibleRegion_h
+
+#include "uvCellVisibility.h"
+#include "uvHexahedralMesh.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace uv
+{
+/// Per cell, the range of its scalar: its corners' for a point scalar (a trilinear field, and a
+/// collapsed one, takes its extremes at the corners), or a cell scalar's value, widened to its face
+/// neighbours' values when `widenToNeighbours` (a cell scalar's isosurfaces lie on the faces between
+/// cells, so both cells beside such a face must stay). `pointValues` holds 4 floats per point, the
+/// scalar last; `neighbours` is HexahedralFaces::Neighbours.
+template <typename ParallelFor>
+void HexahedralCellRanges(const std::vector<std::uint32_t>& cellPoints, const std::vector<float>& pointValues,
+  const std::vector<float>& cellScalars, const std::vector<std::int32_t>& neighbours, bool widenToNeighbours,
+  std::vector<float>& low, std::vector<float>& high, ParallelFor&& parallelFor)
+{
+  const std::size_t cellCount = cellPoints.size() / 8;
+  low.resize(cellCount);
+  high.resize(cellCount);
+  parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c)
+    {
+      float a, b;
+      if (cellScalars.empty())
+      {
+        a = b = pointValues[4 * cellPoints[8 * c] + 3];
+        for (int k = 1; k < 8; ++k)
+        {
+          const float value = pointValues[4 * cellPoints[8 * c + k] + 3];
+          a = std::min(a, value);
+          b = std::max(b, value);
+        }
+      }
+      else
+      {
+        a = b = cellScalars[c];
+        for (int f = 0; f < 6 && widenToNeighbours; ++f)
+        {
+          const std::int32_t neighbour = neighbours[8 * c + f];
+          if (neighbour < 0)
+            continue;
+          a = std::min(a, cellScalars[neighbour / 8]);
+          b = std::max(b, cellScalars[neighbour / 8]);
+        }
+      }
+      low[c] = a;
+      high[c] = b;
+    }
+  });
+}
+
+struct VisibleRegion
+{
+  std::vector<std::int32_t> Neighbours; ///< as HexahedralFaces::Neighbours; -1 across the region's boundary
+  std::vector<std::int32_t> Boundary;   ///< as HexahedralFaces::Boundary: (cell, local face, 0, 0)
+  std::size_t VisibleCells = 0;
+
+  std::size_t BoundaryCount() const { return this->Boundary.size() / 4; }
+};
+
+/// The region of the cells flagged `visible` (one byte per cell, non-zero: visible). Invisible
+/// cells keep no neighbour. `parallelFor(count, function(begin, end))` runs the neighbour pass.
+template <typename ParallelFor>
+VisibleRegion MakeVisibleRegion(
+  const HexahedralFaces& faces, const std::vector<unsigned char>& visible, ParallelFor&& parallelFor)
+{
+  VisibleRegion region;
+  const std::size_t cellCount = visible.size();
+  region.Neighbours.assign(8 * cellCount, -1);
+  parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c)
+      for (int f = 0; visible[c] && f < 6; ++f)
+      {
+        const std::int32_t neighbour = faces.Neighbours[8 * c + f];
+        if (neighbour >= 0 && visible[neighbour / 8])
+          region.Neighbours[8 * c + f] = neighbour;
+      }
+  });
+  // The mesh's boundary faces of visible cells, then the faces the region cut (a face a visible
+  // cell shares with an invisible one).
+  for (std::size_t i = 0; i + 3 < faces.Boundary.size(); i += 4)
+    if (visible[faces.Boundary[i]])
+      region.Boundary.insert(region.Boundary.end(), faces.Boundary.begin() + i, faces.Boundary.begin() + i + 4);
+  for (std::size_t c = 0; c < cellCount; ++c)
+  {
+    if (!visible[c])
+      continue;
+    ++region.VisibleCells;
+    for (int f = 0; f < 6; ++f)
+      if (faces.Neighbours[8 * c + f] >= 0 && region.Neighbours[8 * c + f] < 0)
+        region.Boundary.insert(region.Boundary.end(), { static_cast<std::int32_t>(c), f, 0, 0 });
+  }
+  return region;
+}
+
+/// Per cell, whether it is visible: its range [low, high] meets non-zero extinction (`zeroSet`:
+/// ZeroExtinctionIntervals) or holds one of `sortedIsovalues`.
+template <typename ParallelFor>
+std::vector<unsigned char> VisibleCells(const std::vector<float>& low, const std::vector<float>& high,
+  const std::vector<std::pair<double, double>>& zeroSet, const std::vector<double>& sortedIsovalues,
+  ParallelFor&& parallelFor)
+{
+  std::vector<unsigned char> visible(low.size(), 0);
+  parallelFor(low.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c)
+      visible[c] = RoleOf(low[c], high[c], zeroSet, sortedIsovalues) != 0 ? 1 : 0;
+  });
+  return visible;
+}
+} // namespace uv
+
+#endif

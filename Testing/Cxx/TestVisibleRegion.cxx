@@ -1,0 +1,125 @@
+// The visible region the hexahedral ray caster walks when skipping (uvVisibleRegion.h): cell ranges,
+// visibility and the region's neighbours and entry faces, on a row of unit cubes.
+#include "uvVisibleRegion.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <set>
+#include <vector>
+
+namespace
+{
+void Serial(std::size_t count, const std::function<void(std::size_t, std::size_t)>& function)
+{
+  function(0, count);
+}
+
+/// nx unit cubes along x, each point's scalar its x.
+struct Row
+{
+  std::vector<std::uint32_t> CellPoints;
+  std::vector<float> PointData;
+  uv::HexahedralFaces Faces;
+
+  explicit Row(int nx)
+  {
+    auto id = [nx](int i, int j, int k) { return static_cast<std::uint32_t>(i + (nx + 1) * (j + 2 * k)); };
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i <= nx; ++i)
+          this->PointData.insert(this->PointData.end(), { float(i), float(j), float(k), float(i) });
+    for (int i = 0; i < nx; ++i)
+      this->CellPoints.insert(this->CellPoints.end(), { id(i, 0, 0), id(i + 1, 0, 0), id(i + 1, 1, 0),
+        id(i, 1, 0), id(i, 0, 1), id(i + 1, 0, 1), id(i + 1, 1, 1), id(i, 1, 1) });
+    this->Faces = uv::MakeHexahedralFaces(
+      this->CellPoints, {}, Serial, [](auto begin, auto end) { std::sort(begin, end); }, [](double) {});
+  }
+};
+
+std::set<std::pair<int, int>> FaceSet(const std::vector<std::int32_t>& boundary)
+{
+  std::set<std::pair<int, int>> faces;
+  for (std::size_t b = 0; b < boundary.size(); b += 4)
+    faces.insert({ boundary[b], boundary[b + 1] });
+  return faces;
+}
+
+const double Infinity = std::numeric_limits<double>::infinity();
+} // namespace
+
+TEST(VisibleRegion, PointScalarRangesAreTheCorners)
+{
+  const Row row(4);
+  std::vector<float> low, high;
+  uv::HexahedralCellRanges(row.CellPoints, row.PointData, {}, row.Faces.Neighbours, true, low, high, Serial);
+  for (int c = 0; c < 4; ++c)
+  {
+    EXPECT_EQ(low[c], float(c));
+    EXPECT_EQ(high[c], float(c + 1));
+  }
+}
+
+TEST(VisibleRegion, CellScalarRangesWidenToNeighboursForFaceIsosurfaces)
+{
+  const Row row(5);
+  const std::vector<float> cells = { 0, 10, 0, 0, 0 };
+  std::vector<float> low, high;
+  uv::HexahedralCellRanges(row.CellPoints, row.PointData, cells, row.Faces.Neighbours, false, low, high, Serial);
+  EXPECT_EQ(high, cells);
+  EXPECT_EQ(low, cells);
+  uv::HexahedralCellRanges(row.CellPoints, row.PointData, cells, row.Faces.Neighbours, true, low, high, Serial);
+  EXPECT_EQ(high, (std::vector<float>{ 10, 10, 10, 0, 0 }));
+  EXPECT_EQ(low, (std::vector<float>{ 0, 0, 0, 0, 0 }));
+}
+
+TEST(VisibleRegion, VisibleWhereTheRangeMeetsExtinctionOrHoldsAnIsovalue)
+{
+  const std::vector<float> low = { 0, 1, 2, 3, 4 }, high = { 1, 2, 3, 4, 5 };
+  const std::vector<std::pair<double, double>> zero = { { -Infinity, 2.5 }, { 4.5, Infinity } };
+  EXPECT_EQ(uv::VisibleCells(low, high, zero, {}, Serial), (std::vector<unsigned char>{ 0, 0, 1, 1, 1 }));
+  EXPECT_EQ(uv::VisibleCells(low, high, zero, { 0.5 }, Serial), (std::vector<unsigned char>{ 1, 0, 1, 1, 1 }));
+  const std::vector<std::pair<double, double>> nothing = { { -Infinity, Infinity } };
+  EXPECT_EQ(uv::VisibleCells(low, high, nothing, {}, Serial), (std::vector<unsigned char>(5, 0)));
+}
+
+TEST(VisibleRegion, FacesTowardsInvisibleCellsBecomeEntryFaces)
+{
+  const Row row(5);
+  const uv::VisibleRegion region = uv::MakeVisibleRegion(row.Faces, { 0, 0, 1, 1, 0 }, Serial);
+  EXPECT_EQ(region.VisibleCells, 2u);
+  // Face 3 (x = 1) of cell 2 meets face 5 (x = 0) of cell 3, both ways; the faces towards cells 1
+  // and 4 are cut, and the invisible cells keep no neighbour.
+  EXPECT_EQ(region.Neighbours[8 * 2 + 3], 8 * 3 + 5);
+  EXPECT_EQ(region.Neighbours[8 * 3 + 5], 8 * 2 + 3);
+  EXPECT_EQ(region.Neighbours[8 * 2 + 5], -1);
+  EXPECT_EQ(region.Neighbours[8 * 3 + 3], -1);
+  for (int c : { 0, 1, 4 })
+    for (int f = 0; f < 8; ++f)
+      EXPECT_EQ(region.Neighbours[8 * c + f], -1);
+  // The mesh's own boundary faces of cells 2 and 3 (four sides each) and the two cut faces.
+  const std::set<std::pair<int, int>> entries = FaceSet(region.Boundary);
+  EXPECT_EQ(region.BoundaryCount(), 10u);
+  EXPECT_EQ(entries.size(), 10u);
+  EXPECT_TRUE(entries.count({ 2, 5 }));
+  EXPECT_TRUE(entries.count({ 3, 3 }));
+  for (const auto& face : entries)
+  {
+    EXPECT_TRUE(face.first == 2 || face.first == 3);
+    EXPECT_EQ(region.Neighbours[8 * face.first + face.second], -1);
+  }
+}
+
+TEST(VisibleRegion, EverythingVisibleIsTheMeshAndNothingVisibleIsEmpty)
+{
+  const Row row(4);
+  const uv::VisibleRegion all = uv::MakeVisibleRegion(row.Faces, std::vector<unsigned char>(4, 1), Serial);
+  EXPECT_EQ(all.Neighbours, row.Faces.Neighbours);
+  EXPECT_EQ(FaceSet(all.Boundary), FaceSet(row.Faces.Boundary));
+  const uv::VisibleRegion none = uv::MakeVisibleRegion(row.Faces, std::vector<unsigned char>(4, 0), Serial);
+  EXPECT_EQ(none.BoundaryCount(), 0u);
+  EXPECT_EQ(none.VisibleCells, 0u);
+  EXPECT_EQ(*std::max_element(none.Neighbours.begin(), none.Neighbours.end()), -1);
+}
