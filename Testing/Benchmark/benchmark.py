@@ -109,25 +109,25 @@ def configured(factory, **settings):
 
 # ---------------------------------------------------------------------------------------------
 # Scenes
-def wavelet_tets():
-    """VTK's wavelet on 64^3 points, five tetrahedra per cell: 1.25 M tetrahedra."""
+def wavelet_through(conversion):
+    """VTK's wavelet on 64^3 points through `conversion` (a filter), updated."""
     wavelet = vtkRTAnalyticSource()
     wavelet.SetWholeExtent(-32, 31, -32, 31, -32, 31)
+    conversion.SetInputConnection(wavelet.GetOutputPort())
+    conversion.Update()
+    return conversion.GetOutput()
+
+
+def wavelet_tets():
+    """The wavelet, five tetrahedra per cell: 1.25 M tetrahedra."""
     split = vtkHexahedraToTetrahedra()
-    split.SetInputConnection(wavelet.GetOutputPort())
     split.SetSplitModeToFiveTetrahedra()
-    split.Update()
-    return split.GetOutput()
+    return wavelet_through(split)
 
 
 def wavelet_hexahedra():
-    """VTK's wavelet on 64^3 points as an unstructured grid of 250,047 hexahedra."""
-    wavelet = vtkRTAnalyticSource()
-    wavelet.SetWholeExtent(-32, 31, -32, 31, -32, 31)
-    append = vtkAppendFilter()
-    append.SetInputConnection(wavelet.GetOutputPort())
-    append.Update()
-    return append.GetOutput()
+    """The wavelet as an unstructured grid of 250,047 hexahedra."""
+    return wavelet_through(vtkAppendFilter())
 
 
 def split_tets(load):

@@ -1,5 +1,6 @@
 // The visible region the hexahedral ray caster walks when skipping (uvVisibleRegion.h): cell ranges,
 // visibility and the region's neighbours and entry faces, on a row of unit cubes.
+#include "uvTestHexahedralRow.h"
 #include "uvVisibleRegion.h"
 
 #include <gtest/gtest.h>
@@ -12,28 +13,16 @@
 
 namespace
 {
-void Serial(std::size_t count, const std::function<void(std::size_t, std::size_t)>& function)
-{
-  function(0, count);
-}
+using uvtest::Serial;
 
-/// nx unit cubes along x, each point's scalar its x.
-struct Row
+/// The test row with its faces.
+struct Row : uvtest::HexahedralRow
 {
-  std::vector<std::uint32_t> CellPoints;
-  std::vector<float> PointData;
   uv::HexahedralFaces Faces;
 
   explicit Row(int nx)
+    : uvtest::HexahedralRow(nx)
   {
-    auto id = [nx](int i, int j, int k) { return static_cast<std::uint32_t>(i + (nx + 1) * (j + 2 * k)); };
-    for (int k = 0; k < 2; ++k)
-      for (int j = 0; j < 2; ++j)
-        for (int i = 0; i <= nx; ++i)
-          this->PointData.insert(this->PointData.end(), { float(i), float(j), float(k), float(i) });
-    for (int i = 0; i < nx; ++i)
-      this->CellPoints.insert(this->CellPoints.end(), { id(i, 0, 0), id(i + 1, 0, 0), id(i + 1, 1, 0),
-        id(i, 1, 0), id(i, 0, 1), id(i + 1, 0, 1), id(i + 1, 1, 1), id(i, 1, 1) });
     this->Faces = uv::MakeHexahedralFaces(
       this->CellPoints, {}, Serial, [](auto begin, auto end) { std::sort(begin, end); }, [](double) {});
   }
