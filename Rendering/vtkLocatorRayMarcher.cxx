@@ -300,11 +300,19 @@ double ExtendToSampledShape(vtkCell* cell, double bounds[6])
 
 std::mutex BezierWedgeMutex;
 
+/// Whether VTK 9.1's InterpolateDerivs of this higher-order cell type is right (checked against
+/// differences of its shape functions): not for Lagrange and Bezier hexahedra (interleaved per
+/// node) nor Bezier tetrahedra and wedges (wrong).
+bool VtkDerivativesUsable(int type)
+{
+  return type != VTK_LAGRANGE_HEXAHEDRON && type != VTK_BEZIER_HEXAHEDRON && type != VTK_BEZIER_TETRAHEDRON &&
+    type != VTK_BEZIER_WEDGE;
+}
+
 /// d(weights)/d(pcoords) by central differences of VTK's own shape functions, in VTK's layout (all
-/// d/dr, then d/ds, then d/dt). VTK 9.1's InterpolateDerivs cannot serve: Lagrange and Bezier
-/// hexahedra interleave them per node, and Bezier tetrahedra and wedges give wrong ones (each checked
-/// against differences of the functions). Newton needs the Jacobian only to step; its fixed point is
-/// exact whatever the small error of the differences.
+/// d/dr, then d/ds, then d/dt), for the cells whose InterpolateDerivs cannot serve
+/// (VtkDerivativesUsable). Newton needs the Jacobian only to step; its fixed point is exact whatever
+/// the small error of the differences.
 void ShapeDerivativesByDifferences(vtkCell* cell, const double pcoords[3], double* derivatives, std::vector<double>& scratch)
 {
   const int n = cell->GetNumberOfPoints();
@@ -332,7 +340,10 @@ bool SolveParametricCoordinates(vtkCell* cell, const double x[3], double pcoords
   for (int iteration = 0; iteration < 40; ++iteration)
   {
     cell->InterpolateFunctions(pcoords, weights);
-    ShapeDerivativesByDifferences(cell, pcoords, derivatives.data(), scratch);
+    if (VtkDerivativesUsable(cell->GetCellType()))
+      cell->InterpolateDerivs(pcoords, derivatives.data());
+    else
+      ShapeDerivativesByDifferences(cell, pcoords, derivatives.data(), scratch);
     double residual[3] = { -x[0], -x[1], -x[2] }, columns[3][3] = {};
     for (int k = 0; k < n; ++k)
     {
@@ -479,9 +490,8 @@ struct MarchPixelsWorker
     std::unique_lock<std::mutex> serialised(BezierWedgeMutex, std::defer_lock);
     if (type == VTK_BEZIER_WEDGE)
       serialised.lock();
-    const bool vtkDerivatives = type != VTK_LAGRANGE_HEXAHEDRON && type != VTK_BEZIER_HEXAHEDRON &&
-      type != VTK_BEZIER_TETRAHEDRON && type != VTK_BEZIER_WEDGE;
-    const int status = vtkDerivatives ? cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) : -1;
+    const int status =
+      VtkDerivativesUsable(type) ? cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) : -1;
     if (status == 0 && cell->GetParametricDistance(pcoords) > 0.01)
       return false; // VTK's Newton converged well outside
     if (status == -1)
