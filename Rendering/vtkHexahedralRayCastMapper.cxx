@@ -90,14 +90,18 @@ public:
       this->Visible.clear(); // the region must be rebuilt
     }
     bool changed = skip != this->Skip || mesh.Version != this->MeshVersion;
-    if (skip)
+    std::vector<double> isovalues;
+    for (const uv::Isosurface& surface : isosurfaces)
+      isovalues.push_back(surface.Value);
+    std::sort(isovalues.begin(), isovalues.end());
+    std::vector<std::pair<double, double>> zeroSet = uv::ZeroExtinctionIntervals(nodes);
+    // Visibility is classified again only when the ranges, the zero set or the isovalues changed.
+    if (skip && (this->Visible.empty() || zeroSet != this->ZeroSet || isovalues != this->Isovalues))
     {
-      std::vector<double> isovalues;
-      for (const uv::Isosurface& surface : isosurfaces)
-        isovalues.push_back(surface.Value);
-      std::sort(isovalues.begin(), isovalues.end());
       std::vector<unsigned char> visible =
-        uv::VisibleCells(this->Low, this->High, uv::ZeroExtinctionIntervals(nodes), isovalues, uvvtk::ParallelFor);
+        uv::VisibleCells(this->Low, this->High, zeroSet, isovalues, uvvtk::ParallelFor);
+      this->ZeroSet = std::move(zeroSet);
+      this->Isovalues = std::move(isovalues);
       if (visible != this->Visible)
       {
         this->Region = uv::MakeVisibleRegion(mesh.Faces, visible, uvvtk::ParallelFor);
@@ -106,7 +110,7 @@ public:
         changed = true;
       }
     }
-    else if (!this->Visible.empty())
+    else if (!skip && !this->Visible.empty())
     {
       this->Visible.clear();
       this->Region = uv::VisibleRegion();
@@ -143,6 +147,8 @@ private:
   std::uint64_t MeshVersion = 0, RangesMeshVersion = 0;
   bool RangesWidened = false;
   std::vector<float> Low, High;
+  std::vector<std::pair<double, double>> ZeroSet; // what Visible was classified with
+  std::vector<double> Isovalues;
   std::vector<unsigned char> Visible;
   uv::VisibleRegion Region;
 };
