@@ -135,11 +135,6 @@ public:
   /// Whether rays may start in `cell` (the eye's): with skipping, only in a visible one.
   bool Walks(int cell) const { return cell >= 0 && (!this->Skip || this->Visible[cell]); }
   std::size_t VisibleCells() const { return this->Skip ? this->Region.VisibleCells : this->Mesh->CellCount(); }
-  std::size_t Bytes() const
-  {
-    return sizeof(float) * (this->Low.size() + this->High.size()) + this->Visible.size() +
-      sizeof(std::int32_t) * (this->Region.Neighbours.size() + this->Region.Boundary.size());
-  }
 
 private:
   const uvvtk::HexahedralMesh* Mesh = nullptr;

@@ -67,49 +67,48 @@ struct Cell
   int Corners() const { return this->Shape ? this->Shape->Corners : 4; }
 };
 
-/// The lattice indices of the nodes of a Lagrange or Bezier tetrahedron of `order` (1 to 3), in
-/// VTK's node order: the parametric coordinates VTK gives each node, times the order. Built once,
-/// from a VTK cell object, before any thread reads them.
+void SetOrderFromPoints(vtkHigherOrderTetra*, int) {} // a tetrahedron's order follows its points
+void SetOrderFromPoints(vtkHigherOrderWedge* wedge, int nodes)
+{
+  wedge->SetUniformOrderFromNumPoints(nodes);
+}
+
+/// Per order 1 to 3, the lattice indices of the nodes of a `Cell` in VTK's node order: the
+/// parametric coordinates VTK gives each node through `indexAt`. Made from a cell object once per
+/// cell kind, before any thread reads them.
+template <typename Cell>
+std::array<std::vector<uv::SimplexIndex>, 4> MakeNodeLattices(
+  int (*nodeCount)(int), uv::SimplexIndex (*indexAt)(int, const glm::dvec3&))
+{
+  std::array<std::vector<uv::SimplexIndex>, 4> made;
+  for (int n = 1; n <= 3; ++n)
+  {
+    const int nodes = nodeCount(n);
+    vtkNew<Cell> cell;
+    cell->GetPointIds()->SetNumberOfIds(nodes);
+    cell->GetPoints()->SetNumberOfPoints(nodes);
+    SetOrderFromPoints(cell, nodes);
+    cell->Initialize();
+    const double* pcoords = cell->GetParametricCoords();
+    for (int k = 0; k < nodes; ++k)
+      made[n].push_back(indexAt(n, glm::dvec3(pcoords[3 * k], pcoords[3 * k + 1], pcoords[3 * k + 2])));
+  }
+  return made;
+}
+
+/// A Lagrange or Bezier tetrahedron's nodes (the two share VTK's node order) by lattice index.
 const std::vector<uv::SimplexIndex>& TetrahedronLattice(int order)
 {
-  static const std::array<std::vector<uv::SimplexIndex>, 4> lattices = [] {
-    std::array<std::vector<uv::SimplexIndex>, 4> made;
-    for (int n = 1; n <= 3; ++n)
-    {
-      const int nodes = (n + 1) * (n + 2) * (n + 3) / 6;
-      vtkNew<vtkLagrangeTetra> tetrahedron;
-      tetrahedron->GetPointIds()->SetNumberOfIds(nodes);
-      tetrahedron->GetPoints()->SetNumberOfPoints(nodes);
-      tetrahedron->Initialize();
-      const double* pcoords = tetrahedron->GetParametricCoords();
-      for (int k = 0; k < nodes; ++k)
-        made[n].push_back(uv::SimplexIndexAt(n, glm::dvec3(pcoords[3 * k], pcoords[3 * k + 1], pcoords[3 * k + 2])));
-    }
-    return made;
-  }();
+  static const auto lattices = MakeNodeLattices<vtkLagrangeTetra>(
+    [](int n) { return (n + 1) * (n + 2) * (n + 3) / 6; }, uv::SimplexIndexAt);
   return lattices[order];
 }
 
-/// The lattice indices (triangle index, layer) of the nodes of a Bezier wedge of `order` (1 to 3),
-/// in VTK's node order, as TetrahedronLattice.
+/// A Bezier wedge's nodes by (triangle index, layer).
 const std::vector<uv::SimplexIndex>& WedgeLattice(int order)
 {
-  static const std::array<std::vector<uv::SimplexIndex>, 4> lattices = [] {
-    std::array<std::vector<uv::SimplexIndex>, 4> made;
-    for (int n = 1; n <= 3; ++n)
-    {
-      const int nodes = (n + 1) * (n + 2) / 2 * (n + 1);
-      vtkNew<vtkBezierWedge> wedge;
-      wedge->GetPointIds()->SetNumberOfIds(nodes);
-      wedge->GetPoints()->SetNumberOfPoints(nodes);
-      wedge->SetUniformOrderFromNumPoints(nodes);
-      wedge->Initialize();
-      const double* pcoords = wedge->GetParametricCoords();
-      for (int k = 0; k < nodes; ++k)
-        made[n].push_back(uv::WedgeIndexAt(n, glm::dvec3(pcoords[3 * k], pcoords[3 * k + 1], pcoords[3 * k + 2])));
-    }
-    return made;
-  }();
+  static const auto lattices =
+    MakeNodeLattices<vtkBezierWedge>([](int n) { return (n + 1) * (n + 2) / 2 * (n + 1); }, uv::WedgeIndexAt);
   return lattices[order];
 }
 
