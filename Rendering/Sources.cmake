@@ -19,7 +19,7 @@ endforeach ()
 # mapper's passes and program catalogue (vtkBarycentricShell*.h, vtk*Programs.h).
 set(uv_rendering_private_headers)
 foreach (header IN ITEMS
-    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvCurvedCell uvSimplexBasis uvHexahedralMesh uvHexahedronRay uvVisibleRegion
+    uvBarycentricShell uvCellVisibility uvChebyshevSeries uvCurvedCell uvLatticeBasis uvHexahedralMesh uvHexahedronRay uvVisibleRegion
     uvImageErrorMetrics
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
     uvScalarNormalisation uvShellBuckets uvVisibilitySort

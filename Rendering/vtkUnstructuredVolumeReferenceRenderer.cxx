@@ -6,7 +6,7 @@
 #include "uvLinearCellSplit.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
-#include "uvSimplexBasis.h"
+#include "uvLatticeBasis.h"
 #include "vtkUnstructuredVolumeScalar.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
 
@@ -20,7 +20,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
-#include "vtkLagrangeInterpolation.h"
+#include "vtkLagrangeHexahedron.h"
 #include "vtkLagrangeTetra.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -28,7 +28,6 @@
 #include "vtkPNGWriter.h"
 #include "vtkCellData.h"
 #include "vtkPointData.h"
-#include "vtkBezierInterpolation.h"
 #include "vtkBezierTetra.h"
 #include "vtkBezierWedge.h"
 #include "vtkBiQuadraticQuadraticHexahedron.h"
@@ -72,6 +71,10 @@ void SetOrderFromPoints(vtkHigherOrderWedge* wedge, int nodes)
 {
   wedge->SetUniformOrderFromNumPoints(nodes);
 }
+void SetOrderFromPoints(vtkHigherOrderHexahedron* hexahedron, int nodes)
+{
+  hexahedron->SetUniformOrderFromNumPoints(nodes);
+}
 
 /// Per order 1 to 3, the lattice indices of the nodes of a `Cell` in VTK's node order: the
 /// parametric coordinates VTK gives each node through `indexAt`. Made from a cell object once per
@@ -104,7 +107,7 @@ const std::vector<uv::SimplexIndex>& TetrahedronLattice(int order)
   return lattices[order];
 }
 
-/// A Bezier wedge's nodes by (triangle index, layer).
+/// A Lagrange or Bezier wedge's nodes (the two share VTK's node order) by (triangle index, layer).
 const std::vector<uv::SimplexIndex>& WedgeLattice(int order)
 {
   static const auto lattices =
@@ -112,21 +115,25 @@ const std::vector<uv::SimplexIndex>& WedgeLattice(int order)
   return lattices[order];
 }
 
-/// VTK 9.1's Lagrange and Bezier hexahedra give their derivatives per node (d/dr, d/ds, d/dt of node
-/// 0, then of node 1, ...), not all d/dr first as every other cell and uvCurvedCell.h: reorders
-/// `count` nodes' in place.
-void DeinterleaveDerivatives(double* derivatives, int count)
+/// A Lagrange or Bezier hexahedron's nodes (the two share VTK's node order) by (i, j, k).
+const std::vector<uv::SimplexIndex>& HexahedronLattice(int order)
 {
-  double blocked[3 * uv::CurvedCell<int>::MaximumNodes];
-  for (int k = 0; k < count; ++k)
-    for (int axis = 0; axis < 3; ++axis)
-      blocked[axis * count + k] = derivatives[3 * k + axis];
-  std::copy(blocked, blocked + 3 * count, derivatives);
+  static const auto lattices = MakeNodeLattices<vtkLagrangeHexahedron>(
+    [](int n) { return (n + 1) * (n + 1) * (n + 1); }, uv::HexahedronIndexAt);
+  return lattices[order];
 }
 
-/// The shape functions of VTK's higher-order 3D cells, through VTK's own static functions or, where
-/// VTK 9.1 has none or its derivatives are wrong (Lagrange and Bezier tetrahedra, Bezier wedges),
-/// uvSimplexBasis.h: no cell object, as the reference calls them from every thread at once.
+uv::SimplexBasisKind BasisKind(int type)
+{
+  const bool lagrange =
+    type == VTK_LAGRANGE_HEXAHEDRON || type == VTK_LAGRANGE_WEDGE || type == VTK_LAGRANGE_TETRAHEDRON;
+  return lagrange ? uv::SimplexBasisKind::Lagrange : uv::SimplexBasisKind::Bernstein;
+}
+
+/// The shape functions of VTK's higher-order 3D cells: VTK's own static functions for its quadratic
+/// cells; for Lagrange and Bezier cells uvLatticeBasis.h (VTK 9.1's derivatives of those are
+/// interleaved or wrong, and its static wedge and hexahedron functions slow). No cell object, as the
+/// reference calls them from every thread at once.
 struct CurvedShapeFunctions
 {
   int Type = VTK_EMPTY_CELL;
@@ -157,34 +164,19 @@ struct CurvedShapeFunctions
       UV_STATIC_SHAPE(VTK_TRIQUADRATIC_PYRAMID, vtkTriQuadraticPyramid)
 #undef UV_STATIC_SHAPE
       case VTK_LAGRANGE_HEXAHEDRON:
-        vtkLagrangeInterpolation::Tensor3ShapeFunctions(this->Order, p, weights);
-        if (derivatives)
-        {
-          vtkLagrangeInterpolation::Tensor3ShapeDerivatives(this->Order, p, derivatives);
-          DeinterleaveDerivatives(derivatives, this->Nodes);
-        }
+      case VTK_BEZIER_HEXAHEDRON:
+        uv::EvaluateHexahedronBasis(BasisKind(this->Type), this->Order[0], HexahedronLattice(this->Order[0]), xi,
+          weights, derivatives);
         return;
       case VTK_LAGRANGE_WEDGE:
-        vtkLagrangeInterpolation::WedgeShapeFunctions(this->Order, this->Nodes, p, weights);
-        if (derivatives)
-          vtkLagrangeInterpolation::WedgeShapeDerivatives(this->Order, this->Nodes, p, derivatives);
-        return;
-      case VTK_BEZIER_HEXAHEDRON:
-        vtkBezierInterpolation::Tensor3ShapeFunctions(this->Order, p, weights);
-        if (derivatives)
-        {
-          vtkBezierInterpolation::Tensor3ShapeDerivatives(this->Order, p, derivatives);
-          DeinterleaveDerivatives(derivatives, this->Nodes);
-        }
-        return;
       case VTK_BEZIER_WEDGE:
-        uv::EvaluateBernsteinWedge(this->Order[0], WedgeLattice(this->Order[0]), xi, weights, derivatives);
+        uv::EvaluateWedgeBasis(BasisKind(this->Type), this->Order[0], WedgeLattice(this->Order[0]), xi, weights,
+          derivatives);
         return;
       case VTK_LAGRANGE_TETRAHEDRON:
       case VTK_BEZIER_TETRAHEDRON:
-        uv::EvaluateSimplexBasis(this->Type == VTK_LAGRANGE_TETRAHEDRON ? uv::SimplexBasisKind::Lagrange
-                                                                        : uv::SimplexBasisKind::Bernstein,
-          this->Order[0], TetrahedronLattice(this->Order[0]), xi, weights, derivatives);
+        uv::EvaluateSimplexBasis(BasisKind(this->Type), this->Order[0], TetrahedronLattice(this->Order[0]), xi,
+          weights, derivatives);
         return;
       default:
         return;

@@ -25,9 +25,9 @@
  * Pentagonal and hexagonal prisms and polyhedra are rendered as vtkHexahedraToTetrahedra splits them
  * (the field every mapper draws for them). Higher-order cells (quadratic, triquadratic and
  * biquadratic tetrahedra, hexahedra, wedges and pyramids; Lagrange and Bezier tetrahedra, hexahedra
- * and wedges up to order 3) are rendered exactly through VTK's own shape functions, or for Lagrange
- * and Bezier tetrahedra the same bases written out (uvSimplexBasis.h; VTK 9.1 has only per-cell-object
- * ones), in uvCurvedCell.h: each curved face met by Newton, the field by the inverse isoparametric
+ * and wedges up to order 3) are rendered exactly through VTK's own shape functions (quadratic cells)
+ * or, for Lagrange and Bezier cells, the same bases written out (uvLatticeBasis.h; VTK 9.1's are
+ * slow, per cell object, or give wrong derivatives), in uvCurvedCell.h: each curved face met by Newton, the field by the inverse isoparametric
  * map. Rational Bezier cells (a RationalWeights point array), Lagrange and Bezier pyramids (no VTK 9.1
  * class interpolates them) and other 3D cells are an error; 2D and 1D cells are ignored with a warning.
  * Cells touching a non-finite scalar are left out (transparent) with a warning.

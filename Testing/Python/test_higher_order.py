@@ -201,14 +201,14 @@ class ReferenceAgainstMarcher(unittest.TestCase):
 
     def test_generated_lagrange_and_bezier_cells(self):
         """VTK's Lagrange and Bezier cells, whose shape functions the marcher takes from VTK's cell
-        objects and the reference from static functions or uvSimplexBasis.h (tetrahedra)."""
+        objects and the reference from uvLatticeBasis.h."""
         # Fewer pixels and steps than for the other meshes: the marcher's Newton runs through VTK's
         # de Casteljau evaluation (slow) and, for Bezier wedges, one thread at a time.
         for cell_type, order in ((VTK_LAGRANGE_TETRAHEDRON, 3), (VTK_BEZIER_TETRAHEDRON, 2), (VTK_LAGRANGE_HEXAHEDRON, 2),
                                  (VTK_BEZIER_HEXAHEDRON, 3), (VTK_LAGRANGE_WEDGE, 2), (VTK_BEZIER_WEDGE, 2)):
             with self.subTest(cell=LATTICE_CELLS[cell_type].__name__, order=order):
                 self.compare(lattice_cells(cell_type, order, 0.08, lambda x, y, z: x * x + y * z + 0.5 * z),
-                             "field", pixels=8, steps=2000)
+                             "field", pixels=6, steps=1000)
 
     def test_real_meshes_point_data(self):
         for name, loader, array in shared_data.HIGHER_ORDER_MESHES:

@@ -4,7 +4,7 @@ every real mesh in ../shared/data that the reference takes (skipped when absent)
 distortions and nearly degenerate cells; then each GPU mapper against the marcher at fewer pixels.
 
 Per mesh: a 96x96 image, a three-node colour map with an opacity ramp whose unit distance is 5% of
-the mesh's diagonal. At 2000 random pixels, the largest difference in premultiplied RGBA between
+the mesh's diagonal. At 1200 random pixels, the largest difference in premultiplied RGBA between
 the reference and the marcher must stay below BOUND. The marcher's own error is estimated by
 halving its step (second order: error(N) ~ |I(N/2) - I(N)| / 3) and must be below a quarter of
 BOUND, so that a difference above BOUND is the reference's."""
@@ -26,7 +26,7 @@ from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, VTK_LINE, VTK_POLY_LI
                                            VTK_TRIANGLE_STRIP, VTK_VERTEX, VTK_VOXEL, VTK_WEDGE, vtkUnstructuredGrid)
 
 SIZE = 96
-PIXELS = 2000
+PIXELS = 1200
 STEPS = 1000
 BOUND = 1e-3
 

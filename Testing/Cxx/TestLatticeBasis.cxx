@@ -1,7 +1,7 @@
-// uvSimplexBasis.h: the Lagrange and Bernstein bases of tetrahedra of order 1 to 4 on the
-// equispaced lattice, checked by their defining properties (VTK's own cells are compared with the
-// reference's use of them in Testing/Python/test_higher_order.py).
-#include "uvSimplexBasis.h"
+// uvLatticeBasis.h: the Lagrange and Bernstein bases of tetrahedra (order 1 to 4), wedges and
+// hexahedra (order 1 to 3) on the equispaced lattice, checked by their defining properties (VTK's
+// own cells are compared with the reference's use of them in Testing/Python/test_higher_order.py).
+#include "uvLatticeBasis.h"
 
 #include <gtest/gtest.h>
 
@@ -43,7 +43,7 @@ std::vector<glm::dvec3> InsidePoints(int count)
 constexpr uv::SimplexBasisKind Kinds[] = { uv::SimplexBasisKind::Lagrange, uv::SimplexBasisKind::Bernstein };
 }
 
-TEST(SimplexBasis, LatticeSizesAndIndicesOfVtkParametricCoordinates)
+TEST(LatticeBasis, LatticeSizesAndIndicesOfVtkParametricCoordinates)
 {
   for (int order = 1; order <= 4; ++order)
   {
@@ -54,7 +54,7 @@ TEST(SimplexBasis, LatticeSizesAndIndicesOfVtkParametricCoordinates)
   }
 }
 
-TEST(SimplexBasis, PartitionOfUnityAndLinearPrecision)
+TEST(LatticeBasis, PartitionOfUnityAndLinearPrecision)
 {
   // Both bases sum to one and reproduce x = xi from nodes at their lattice positions (the Bernstein
   // basis from control points there), so a straight cell's map is the identity.
@@ -79,7 +79,7 @@ TEST(SimplexBasis, PartitionOfUnityAndLinearPrecision)
     }
 }
 
-TEST(SimplexBasis, LagrangeInterpolatesAtItsNodes)
+TEST(LatticeBasis, LagrangeInterpolatesAtItsNodes)
 {
   for (int order = 1; order <= 4; ++order)
   {
@@ -94,7 +94,7 @@ TEST(SimplexBasis, LagrangeInterpolatesAtItsNodes)
   }
 }
 
-TEST(SimplexBasis, BernsteinIsNonNegativeAndInterpolatesOnlyAtCorners)
+TEST(LatticeBasis, BernsteinIsNonNegativeAndInterpolatesOnlyAtCorners)
 {
   const int order = 3;
   const std::vector<uv::SimplexIndex> nodes = Lattice(order);
@@ -114,7 +114,7 @@ TEST(SimplexBasis, BernsteinIsNonNegativeAndInterpolatesOnlyAtCorners)
   EXPECT_NEAR(*std::max_element(w.begin(), w.end()), 1.0, 1e-12);
 }
 
-TEST(SimplexBasis, DerivativesMatchCentralDifferences)
+TEST(LatticeBasis, DerivativesMatchCentralDifferences)
 {
   const double h = 1e-6;
   for (const uv::SimplexBasisKind kind : Kinds)
@@ -139,40 +139,75 @@ TEST(SimplexBasis, DerivativesMatchCentralDifferences)
     }
 }
 
-TEST(SimplexBasis, BernsteinWedgeSumsToOneReproducesPositionsAndDifferentiates)
+/// A wedge's or hexahedron's basis: sums to one, reproduces the parametric position from nodes at
+/// their lattice positions, is a delta at the nodes when Lagrange, and its derivatives match central
+/// differences.
+template <typename Evaluate, typename Position>
+void CheckPrismBasis(uv::SimplexBasisKind kind, int order, const std::vector<uv::SimplexIndex>& nodes,
+  const Evaluate& evaluate, const Position& position)
 {
-  for (int order = 1; order <= 3; ++order)
+  const std::size_t n = nodes.size();
+  std::vector<double> w(n), d(3 * n), plus(n), minus(n);
+  for (const glm::dvec3& sample : InsidePoints(20))
   {
-    std::vector<uv::SimplexIndex> nodes; // (triangle index, layer)
-    for (int a = 0; a <= order; ++a)
-      for (int b = 0; a + b <= order; ++b)
-        for (int k = 0; k <= order; ++k)
-          nodes.push_back({ a, b, order - a - b, k });
-    const std::size_t n = nodes.size();
-    EXPECT_EQ(static_cast<int>(n), (order + 1) * (order + 2) / 2 * (order + 1));
-    std::vector<double> w(n), d(3 * n), plus(n), minus(n);
-    for (const glm::dvec3& sample : InsidePoints(20))
+    const glm::dvec3 xi(sample.x, sample.y, 2.0 * sample.z); // any height in [0, 1]
+    evaluate(kind, order, nodes, xi, w.data(), d.data());
+    double sum = 0.0;
+    glm::dvec3 mapped(0.0);
+    for (std::size_t k = 0; k < n; ++k)
     {
-      const glm::dvec3 xi(sample.x, sample.y, 2.0 * sample.z); // any height in [0, 1]
-      uv::EvaluateBernsteinWedge(order, nodes, xi, w.data(), d.data());
-      double sum = 0.0;
-      glm::dvec3 mapped(0.0);
+      sum += w[k];
+      mapped += w[k] * position(nodes[k]) / double(order);
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+    EXPECT_NEAR(glm::length(mapped - xi), 0.0, 1e-12);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      glm::dvec3 step(0.0);
+      step[axis] = 1e-6;
+      evaluate(kind, order, nodes, xi + step, plus.data(), nullptr);
+      evaluate(kind, order, nodes, xi - step, minus.data(), nullptr);
       for (std::size_t k = 0; k < n; ++k)
-      {
-        sum += w[k];
-        mapped += w[k] * glm::dvec3(nodes[k][0], nodes[k][1], nodes[k][3]) / double(order);
-      }
-      EXPECT_NEAR(sum, 1.0, 1e-12);
-      EXPECT_NEAR(glm::length(mapped - xi), 0.0, 1e-12);
-      for (int axis = 0; axis < 3; ++axis)
-      {
-        glm::dvec3 step(0.0);
-        step[axis] = 1e-6;
-        uv::EvaluateBernsteinWedge(order, nodes, xi + step, plus.data(), nullptr);
-        uv::EvaluateBernsteinWedge(order, nodes, xi - step, minus.data(), nullptr);
-        for (std::size_t k = 0; k < n; ++k)
-          EXPECT_NEAR(d[axis * n + k], (plus[k] - minus[k]) / 2e-6, 1e-6);
-      }
+        EXPECT_NEAR(d[axis * n + k], (plus[k] - minus[k]) / 2e-6, 1e-6);
     }
   }
+  for (std::size_t node = 0; kind == uv::SimplexBasisKind::Lagrange && node < n; ++node)
+  {
+    evaluate(kind, order, nodes, position(nodes[node]) / double(order), w.data(), nullptr);
+    for (std::size_t k = 0; k < n; ++k)
+      EXPECT_NEAR(w[k], k == node ? 1.0 : 0.0, 1e-12);
+  }
+}
+
+TEST(LatticeBasis, WedgesSumToOneReproducePositionsInterpolateAndDifferentiate)
+{
+  for (uv::SimplexBasisKind kind : Kinds)
+    for (int order = 1; order <= 3; ++order)
+    {
+      std::vector<uv::SimplexIndex> nodes; // (triangle index, layer)
+      for (int a = 0; a <= order; ++a)
+        for (int b = 0; a + b <= order; ++b)
+          for (int k = 0; k <= order; ++k)
+            nodes.push_back({ a, b, order - a - b, k });
+      EXPECT_EQ(static_cast<int>(nodes.size()), (order + 1) * (order + 2) / 2 * (order + 1));
+      CheckPrismBasis(kind, order, nodes, uv::EvaluateWedgeBasis,
+        [](const uv::SimplexIndex& i) { return glm::dvec3(i[0], i[1], i[3]); });
+    }
+}
+
+TEST(LatticeBasis, HexahedraSumToOneReproducePositionsInterpolateAndDifferentiate)
+{
+  for (uv::SimplexBasisKind kind : Kinds)
+    for (int order = 1; order <= 3; ++order)
+    {
+      std::vector<uv::SimplexIndex> nodes;
+      for (int k = order; k >= 0; --k) // any node order
+        for (int j = 0; j <= order; ++j)
+          for (int i = 0; i <= order; ++i)
+            nodes.push_back({ i, j, k, 0 });
+      CheckPrismBasis(kind, order, nodes, uv::EvaluateHexahedronBasis,
+        [](const uv::SimplexIndex& i) { return glm::dvec3(i[0], i[1], i[2]); });
+      EXPECT_EQ(uv::HexahedronIndexAt(order, glm::dvec3(order, 0.0, 1.0) / double(order)),
+        (uv::SimplexIndex{ order, 0, 1, 0 }));
+    }
 }
