@@ -19,7 +19,8 @@ uv_representation_entry(
   PROXY PreIntegratedTetrahedraRepresentation
   MENU "Volume (Pre-integrated Tetrahedra)"
   GROUP "Pre-integrated Tetrahedra"
-  PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells ProjectionRoute)
+  PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells OpacityThreshold ProjectionRoute
+  UNSHARED OpacityThreshold TetrahedraOpacityThreshold)
 
 uv_representation_entry(
   PROXY BarycentricShellRepresentation

@@ -25,7 +25,7 @@ foreach (header IN ITEMS
     uvScalarNormalisation uvShellBuckets uvVisibilitySort
     vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms
     vtkBarycentricShellBlendPass vtkBarycentricShellCellDrawer vtkBarycentricShellCellProjectionPass
-    vtkBarycentricShellImageTexture vtkBarycentricShellIsosurfacePeelPass vtkBarycentricShellMaskPass
+    vtkBarycentricShellImageTexture vtkBarycentricShellIsosurfacePeelPass vtkUnstructuredVolumeOpacityMask
     vtkBarycentricShellOpaqueDistancePass vtkBarycentricShellPrograms vtkBarycentricShellSlicePass
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
     vtkUnstructuredVolumeHexahedralMesh vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL

@@ -108,14 +108,6 @@ public:
   ///@}
 
   ///@{
-  /// Pixels stop being shaded once their opacity reaches this (default 0.999; 1 disables). The light
-  /// a stopped pixel leaves out is at most 1 - threshold; the default is above the hexahedral
-  /// mapper's 0.99, whose loss the benchmark found larger than the error of fine sampling.
-  vtkSetClampMacro(OpacityThreshold, double, 0.0, 1.0);
-  vtkGetMacro(OpacityThreshold, double);
-  ///@}
-
-  ///@{
   /// SHELLS mode: how many isosurface crossings per pixel are drawn at most, nearest first (1 to 8,
   /// default 4). Crossings beyond are left out (behind translucent surfaces only).
   vtkSetClampMacro(IsosurfaceLayers, int, 1, 8);
@@ -192,7 +184,6 @@ protected:
   double SampleDistance = 0.0;
   int AutomaticSamplesAcross = 128;
   int SlicesPerShell = 7;
-  double OpacityThreshold = 0.999;
   int SegmentIntegration = AUTOMATIC;
   int IsosurfaceLayers = 4;
   int GradientMode = VERTEX_GRADIENTS;

@@ -473,6 +473,7 @@ public:
 vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
   : Impl(new Internals)
 {
+  this->OpacityThreshold = 0.99;
 }
 
 vtkHexahedralRayCastMapper::~vtkHexahedralRayCastMapper() = default;
@@ -538,7 +539,6 @@ void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntegrationMode: " << modes[this->IntegrationMode] << "\n";
   os << indent << "FixedSteps: " << this->FixedSteps << "\n";
   os << indent << "ExactSegmentEnds: " << this->ExactSegmentEnds << "\n";
-  os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
   os << indent << "MaximumPeels: " << this->MaximumPeels << "\n";
 }
 

@@ -98,12 +98,6 @@ public:
   ///@}
 
   ///@{
-  /// Early ray termination: a ray stops when its opacity reaches this (default 0.99; 1 disables).
-  vtkSetClampMacro(OpacityThreshold, double, 0.0, 1.0);
-  vtkGetMacro(OpacityThreshold, double);
-  ///@}
-
-  ///@{
   /// Depth-peeling passes at most (non-convex meshes, holes); default 8. With skipping each run of
   /// visible cells along a ray takes one: raise it where rays cross more runs than that.
   vtkSetClampMacro(MaximumPeels, int, 1, 64);
@@ -149,7 +143,6 @@ protected:
   int IntegrationMode = ACCURATE;
   int FixedSteps = 8;
   bool ExactSegmentEnds = true;
-  double OpacityThreshold = 0.99;
   int MaximumPeels = 8;
 
 private:

@@ -3,11 +3,14 @@
 #include "uvCellVisibility.h"
 #include "uvHexahedralMesh.h"
 #include "uvIsosurfaceList.h"
+#include "uvOpacityMaskFS.h"
+#include "uvFullScreenTriangleVS.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
 #include "vtkUnstructuredVolumeIndexBuffer.h"
+#include "vtkUnstructuredVolumeOpacityMask.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 #include "vtkUnstructuredVolumeTetrahedralMesh.h"
 #include "vtkUnstructuredVolumeTexture.h"
@@ -16,6 +19,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkSMPTools.h"
@@ -26,6 +30,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -38,6 +43,14 @@ void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
 {
   const glm::mat4 single(m);
   program->SetUniformMatrix4x4(name, const_cast<float*>(glm::value_ptr(single)));
+}
+
+/// Tetrahedra drawn between two refreshes of the opacity mask when compositing front to back: a
+/// refresh is one full-screen pass, so at most about 64 of them a frame, and none more often than
+/// every 4096 tetrahedra.
+std::size_t MaskedBatchSize(std::size_t count)
+{
+  return std::max<std::size_t>(4096, (count + 63) / 64);
 }
 
 /// Triangle t of the tetrahedron in draw place q is (5q+4, 5q+t, 5q+(t+1)%4): fixed for a count.
@@ -82,9 +95,14 @@ public:
   vtkUnstructuredVolumeIndexBuffer OrderIndices, FanIndices;
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
+  vtkUnstructuredVolumeOpacityMask Mask;
+
+  // This frame's compositing: front to back under the opacity mask, or back to front.
+  bool FrontToBack = false;
 
   vtkIdType DrawnTetrahedra = 0;
-  int MeshUploads = 0, TransferFunctionUploads = 0;
+  int MeshUploads = 0, TransferFunctionUploads = 0, MaskRefreshes = 0;
+  std::uint64_t ShadedFragments = 0;
 
   void Release()
   {
@@ -95,6 +113,16 @@ public:
     this->FanIndices.Release();
     this->Nodes.Release();
     this->Isosurfaces.Release();
+    this->Mask.Release();
+  }
+
+  /// Draws the tetrahedra in draw places [first, first + count) of the order.
+  void DrawPlaces(bool pulling, std::size_t first, std::size_t count)
+  {
+    if (pulling)
+      this->FanIndices.Draw(GL_TRIANGLES, 12 * count, 12 * first);
+    else
+      this->OrderIndices.Draw(GL_POINTS, count, first);
   }
 
   /// Which tetrahedra are drawn: those with some extinction in their range or an isovalue in it
@@ -131,6 +159,7 @@ vtkPreIntegratedTetrahedraMapper::vtkPreIntegratedTetrahedraMapper()
   : Impl(new Internals)
 {
   this->SetGradientArrayName("Gradients");
+  this->OpacityThreshold = 0.999;
 }
 
 vtkPreIntegratedTetrahedraMapper::~vtkPreIntegratedTetrahedraMapper()
@@ -162,6 +191,18 @@ int vtkPreIntegratedTetrahedraMapper::GetNumberOfVisibleListBuilds()
 {
   return this->Impl->Visible.Builds;
 }
+bool vtkPreIntegratedTetrahedraMapper::GetDrewFrontToBack()
+{
+  return this->Impl->FrontToBack;
+}
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfOpacityMaskRefreshes()
+{
+  return this->Impl->MaskRefreshes;
+}
+vtkIdType vtkPreIntegratedTetrahedraMapper::GetNumberOfShadedFragments()
+{
+  return static_cast<vtkIdType>(this->Impl->ShadedFragments);
+}
 
 vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
 {
@@ -183,12 +224,15 @@ void vtkPreIntegratedTetrahedraMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntegrationMode: "
      << (this->IntegrationMode == AVERAGE_SCALAR ? "AverageScalar" : "PartialPreIntegration") << "\n";
   os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
+  os << indent << "CountShadedFragments: " << this->CountShadedFragments << "\n";
 }
 
 bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
 {
   Internals& impl = *this->Impl;
   impl.DrawnTetrahedra = 0;
+  impl.ShadedFragments = 0;
+  impl.MaskRefreshes = 0;
   // The mesh, when the input or its scalar changed.
   vtkUnstructuredGridBase* input = this->GetInput();
   vtkVolumeProperty* property = frame.Property;
@@ -250,9 +294,12 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
       vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
   }
 
-  // Visibility order: back to front by centroid distance, when the view or the list changed.
+  // Visibility order by centroid distance, when the view or the list changed: front to back when
+  // pixels that became opaque can stop being shaded (skipping on and a threshold below 1), else
+  // back to front, which needs no mask passes.
+  impl.FrontToBack = this->SkipInvisibleCells && this->OpacityThreshold < 1.0;
   impl.Order.Update(impl.Mesh, impl.Visible.Drawn, frame.EyeInModel(impl.Mesh.Center),
-    frame.ViewInModel(impl.Mesh.Center), frame.Parallel);
+    frame.ViewInModel(impl.Mesh.Center), frame.Parallel, impl.FrontToBack);
   return true;
 }
 
@@ -290,23 +337,38 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
   const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target)
 {
   Internals& impl = *this->Impl;
-  vtkOpenGLState* state = frame.Window->GetState();
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  vtkShaderProgram* program = this->ReadyTetrahedraProgram(frame, target);
+  if (!program)
+  {
+    vtkErrorMacro("the projected-tetrahedra shaders failed to compile or link");
+    return false;
+  }
+  target.GetNoAttributes()->Bind();
+  bool drawn = true;
+  if (impl.FrontToBack)
+    drawn = this->DrawFrontToBack(frame, target, program);
+  else
+    this->DrawBackToFront(frame);
+  target.GetNoAttributes()->Release();
+  this->UnbindTetrahedraResources(target);
+  impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.Order.size());
+  return drawn;
+}
 
-  const bool pulling = this->ProjectionRoute == VERTEX_PULLING;
+/// The projection program for this frame's options, bound, with its uniforms and textures.
+vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
+  const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target)
+{
+  Internals& impl = *this->Impl;
   vtkPreIntegratedTetrahedraPrograms::Options options;
-  options.VertexPulling = pulling;
+  options.VertexPulling = this->ProjectionRoute == VERTEX_PULLING;
   options.Gradients = impl.NeedGradients;
   options.NodeTexture = uvgl::NodesNeedTexture(impl.TransferFunction.Nodes);
   options.CellSurfaces = impl.DrawCellSurfaces;
   vtkShaderProgram* program =
     uvgl::ReadyProgram(frame.Window, vtkPreIntegratedTetrahedraPrograms::Sources(options));
   if (!program)
-  {
-    vtkErrorMacro("the projected-tetrahedra shaders failed to compile or link");
-    return false;
-  }
+    return nullptr;
 
   const glm::dvec3 center = impl.Mesh.Center;
   SetMatrix(program, "modelToEye", frame.ModelToEye(center));
@@ -339,30 +401,85 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
     impl.PointGradients.Bind(program, "pointGradients");
   if (impl.DrawCellSurfaces)
     impl.NeighbourValues.Bind(program, "neighbourValues");
-
-  const std::size_t count = impl.Order.Order.size();
-  target.GetNoAttributes()->Bind();
-  if (pulling)
-  {
+  if (options.VertexPulling)
     impl.DrawOrder.Bind(program, "drawOrder");
-    impl.FanIndices.Draw(GL_TRIANGLES, 12 * count);
-    impl.DrawOrder.Unbind();
-  }
-  else
-  {
-    impl.OrderIndices.Draw(GL_POINTS, count);
-  }
-  target.GetNoAttributes()->Release();
+  return program;
+}
 
+void vtkPreIntegratedTetrahedraMapper::UnbindTetrahedraResources(vtkUnstructuredVolumeFloatTarget& target)
+{
+  Internals& impl = *this->Impl;
   impl.TetrahedronPoints.Unbind();
   impl.Points.Unbind();
   impl.Nodes.Unbind();
   impl.Isosurfaces.Unbind();
-  sceneDepth->Deactivate();
+  target.GetSceneDepth()->Deactivate();
   if (impl.NeedGradients)
     impl.PointGradients.Unbind();
   if (impl.DrawCellSurfaces)
     impl.NeighbourValues.Unbind();
-  impl.DrawnTetrahedra = static_cast<vtkIdType>(count);
+  if (this->ProjectionRoute == VERTEX_PULLING)
+    impl.DrawOrder.Unbind();
+}
+
+/// Every tetrahedron of the order, composited over what is behind it (ONE, ONE_MINUS_SRC_ALPHA).
+void vtkPreIntegratedTetrahedraMapper::DrawBackToFront(const vtkUnstructuredVolumeFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  vtkOpenGLState* state = frame.Window->GetState();
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  const std::size_t count = impl.Order.Order.size();
+  const bool pulling = this->ProjectionRoute == VERTEX_PULLING;
+  if (this->CountShadedFragments)
+    impl.ShadedFragments = uvgl::SamplesPassed([&] { impl.DrawPlaces(pulling, 0, count); });
+  else
+    impl.DrawPlaces(pulling, 0, count);
+}
+
+/// The order front to back in batches, composited under what is in front (ONE_MINUS_DST_ALPHA,
+/// ONE: the same sum as back to front), the opacity mask refreshed between batches so that the
+/// depth test discards the fragments of pixels already opaque before they are shaded.
+bool vtkPreIntegratedTetrahedraMapper::DrawFrontToBack(
+  const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target, vtkShaderProgram* program)
+{
+  Internals& impl = *this->Impl;
+  vtkOpenGLState* state = frame.Window->GetState();
+  const uvgl::ProgramSources maskSources{ uvgl::ShaderSource(uvFullScreenTriangleVS, ""),
+    uvgl::ShaderSource(uvOpacityMaskFS, ""), "" };
+  vtkShaderProgram* mask = uvgl::ReadyProgram(frame.Window, maskSources);
+  if (!mask)
+  {
+    vtkErrorMacro("the opacity-mask shaders failed to compile or link");
+    return false;
+  }
+  mask->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
+  impl.Mask.Resize(frame.Window, frame.Width, frame.Height);
+  impl.Mask.AttachAndClear(target, state); // nothing is opaque yet
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS); // the tetrahedra's fragments lie at depth 0.5: masked ones fail
+  state->vtkglDepthMask(GL_FALSE);
+
+  const std::size_t count = impl.Order.Order.size(), batch = MaskedBatchSize(count);
+  const bool pulling = this->ProjectionRoute == VERTEX_PULLING;
+  vtkOpenGLShaderCache* shaders = frame.Window->GetShaderCache();
+  for (std::size_t first = 0; first < count; first += batch)
+  {
+    const std::size_t n = std::min(batch, count - first);
+    shaders->ReadyShaderProgram(program);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+    if (this->CountShadedFragments)
+      impl.ShadedFragments += uvgl::SamplesPassed([&] { impl.DrawPlaces(pulling, first, n); });
+    else
+      impl.DrawPlaces(pulling, first, n);
+    if (first + n < count)
+    {
+      shaders->ReadyShaderProgram(mask);
+      impl.Mask.RunAlone(state, mask, target.GetColor());
+      ++impl.MaskRefreshes;
+    }
+  }
+  state->vtkglDisable(GL_DEPTH_TEST);
   return true;
 }

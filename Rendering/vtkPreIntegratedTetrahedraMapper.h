@@ -41,8 +41,16 @@
  * through it is constant and integrated exactly. Tetrahedra touching a NaN scalar are not drawn (one
  * warning). An empty grid draws nothing.
  *
- * Tetrahedra whose whole scalar range has zero opacity and holds no isovalue are never drawn; the
- * list of the rest is rebuilt only when a transfer-function edit changes the zero-opacity set.
+ * Skipping (SkipInvisibleCells, default on): tetrahedra whose whole scalar range has zero opacity
+ * and holds no isovalue are never drawn; the list of the rest is rebuilt only when a transfer-
+ * function edit changes the zero-opacity set. With skipping on and an OpacityThreshold below 1
+ * (default 0.999), the order is composited front to back instead (the same sum, under rather than
+ * over) in batches, and between batches an opacity mask marks the pixels whose opacity reached the
+ * threshold, so the depth test discards their later fragments before they are shaded (the iSBVR
+ * paper's pseudo early ray termination). That choice is automatic: front to back is never slower
+ * by more than its mask passes (one full-screen pass per batch, at most about 64 a frame) and
+ * saves the shading of every fragment behind opaque matter; back to front is kept where nothing
+ * can be saved (threshold 1) or skipping is off. Its error is at most 1 - OpacityThreshold.
  */
 #ifndef vtkPreIntegratedTetrahedraMapper_h
 #define vtkPreIntegratedTetrahedraMapper_h
@@ -51,6 +59,8 @@
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+
+class vtkShaderProgram;
 
 class VTKUNSTRUCTUREDVOLUME_EXPORT vtkPreIntegratedTetrahedraMapper : public vtkUnstructuredVolumeMapper
 {
@@ -90,6 +100,17 @@ public:
   int GetNumberOfVisibleListBuilds();
   ///@}
 
+  ///@{
+  /// Early termination (see the class description): whether the last frame composited front to
+  /// back, the opacity-mask refreshes it ran, and, with CountShadedFragments on (default off: an
+  /// occlusion query per batch, each waited for), the fragments that passed the mask and were shaded.
+  bool GetDrewFrontToBack();
+  int GetNumberOfOpacityMaskRefreshes();
+  vtkIdType GetNumberOfShadedFragments();
+  vtkSetMacro(CountShadedFragments, bool);
+  vtkGetMacro(CountShadedFragments, bool);
+  ///@}
+
   /// Ids, points, gradients, order and fan indices (not the screen-sized images).
   vtkIdType GetMeshMemoryInBytes() override;
 
@@ -102,6 +123,14 @@ protected:
   bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) override;
   void ReleaseMapperGraphics() override;
 
+  vtkShaderProgram* ReadyTetrahedraProgram(
+    const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);
+  void UnbindTetrahedraResources(vtkUnstructuredVolumeFloatTarget& target);
+  void DrawBackToFront(const vtkUnstructuredVolumeFrame& frame);
+  bool DrawFrontToBack(
+    const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target, vtkShaderProgram* program);
+
+  bool CountShadedFragments = false;
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   char* GradientArrayName = nullptr;
 

@@ -31,11 +31,12 @@ public:
     return true;
   }
 
-  /// Draws the first `count` indices as `mode` (GL_POINTS, GL_TRIANGLES).
-  void Draw(GLenum mode, std::size_t count)
+  /// Draws `count` indices from index `first` as `mode` (GL_POINTS, GL_TRIANGLES).
+  void Draw(GLenum mode, std::size_t count, std::size_t first = 0)
   {
     this->Buffer->Bind();
-    glDrawElements(mode, static_cast<GLsizei>(count), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(mode, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+      reinterpret_cast<const void*>(first * sizeof(std::uint32_t)));
     this->Buffer->Release();
   }
 

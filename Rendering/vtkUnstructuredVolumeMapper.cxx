@@ -210,4 +210,5 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ProjectionRoute: " << (this->ProjectionRoute == VERTEX_PULLING ? "VertexPulling" : "GeometryShader")
      << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
+  os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
 }

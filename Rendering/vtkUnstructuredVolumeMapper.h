@@ -90,10 +90,21 @@ public:
   /// only zero extinction and holds no isovalue (uvCellVisibility.h). The tetrahedral mappers draw
   /// no such tetrahedron; the hexahedral ray caster walks only the visible cells, its rays entering
   /// at the visible region's front, leaving at its back and leaping over invisible runs between
-  /// (uvVisibleRegion.h). Default on; the image does not change, off is for measuring what it saves.
+  /// (uvVisibleRegion.h). The tetrahedra mapper also composites front to back then, so that pixels
+  /// past OpacityThreshold stop being shaded (its image changes by at most 1 - OpacityThreshold;
+  /// the others' not at all). Default on; off is for measuring what it saves.
   vtkSetMacro(SkipInvisibleCells, bool);
   vtkGetMacro(SkipInvisibleCells, bool);
   vtkBooleanMacro(SkipInvisibleCells, bool);
+  ///@}
+
+  ///@{
+  /// Early ray termination: a pixel's ray stops once its accumulated opacity reaches this (1: never).
+  /// The hexahedral caster stops each ray (default 0.99), the shells mask pixels between shells
+  /// (default 0.999), the tetrahedra mapper between batches of its front-to-back order, with
+  /// SkipInvisibleCells on (default 0.999). What is left out weighs at most 1 - threshold.
+  vtkSetClampMacro(OpacityThreshold, double, 0.0, 1.0);
+  vtkGetMacro(OpacityThreshold, double);
   ///@}
 
   /// Bytes of GPU buffers the mesh takes (not the screen-sized images), as of the last frame.
@@ -132,6 +143,7 @@ protected:
   bool KeepFloatImage = false;
   int ProjectionRoute = VERTEX_PULLING;
   bool SkipInvisibleCells = true;
+  double OpacityThreshold = 1.0;
 
 private:
   vtkUnstructuredVolumeMapper(const vtkUnstructuredVolumeMapper&) = delete;

@@ -438,12 +438,20 @@ public:
 
   void Invalidate() { this->Valid = false; }
 
-  /// Eye and view direction in the mesh's recentred frame. True when it sorted.
+  /// Eye and view direction in the mesh's recentred frame; back to front, or front to back as its
+  /// exact reverse (so that compositing either way sums the same terms). True when the order changed.
   bool Update(const TetrahedralMesh& mesh, const std::vector<std::uint32_t>& cells, const glm::dvec3& eye,
-    const glm::dvec3& direction, bool parallel)
+    const glm::dvec3& direction, bool parallel, bool frontToBack = false)
   {
     if (this->Valid && eye == this->Eye && direction == this->Direction && parallel == this->Parallel)
-      return false;
+    {
+      if (frontToBack == this->FrontToBack)
+        return false;
+      std::reverse(this->Order.begin(), this->Order.end());
+      this->FrontToBack = frontToBack;
+      ++this->Version;
+      return true;
+    }
     const std::size_t n = cells.size();
     this->Keys.resize(n);
     this->Order = cells;
@@ -464,6 +472,9 @@ public:
       });
     };
     uv::RadixSortPairs(this->Keys, this->Order, this->ScratchKeys, this->ScratchOrder, parallelChunks);
+    if (frontToBack)
+      std::reverse(this->Order.begin(), this->Order.end());
+    this->FrontToBack = frontToBack;
     this->Eye = eye;
     this->Direction = direction;
     this->Parallel = parallel;
@@ -476,7 +487,7 @@ public:
 private:
   std::vector<std::uint32_t> Keys, ScratchKeys, ScratchOrder;
   glm::dvec3 Eye{ 0.0 }, Direction{ 0.0 };
-  bool Parallel = false, Valid = false;
+  bool Parallel = false, Valid = false, FrontToBack = false;
 };
 
 } // namespace uvvtk

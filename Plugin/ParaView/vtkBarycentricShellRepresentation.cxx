@@ -36,12 +36,6 @@ void vtkBarycentricShellRepresentation::SetSlicesPerShell(int slices)
   this->MarkModified();
 }
 
-void vtkBarycentricShellRepresentation::SetOpacityThreshold(double threshold)
-{
-  this->ShellMapper->SetOpacityThreshold(threshold);
-  this->MarkModified();
-}
-
 void vtkBarycentricShellRepresentation::SetSegmentIntegration(int integration)
 {
   this->ShellMapper->SetSegmentIntegration(integration);

@@ -80,12 +80,6 @@ void vtkHexahedralRayCastRepresentation::SetFixedSteps(int steps)
   this->MarkModified();
 }
 
-void vtkHexahedralRayCastRepresentation::SetOpacityThreshold(double threshold)
-{
-  this->HexahedralMapper->SetOpacityThreshold(threshold);
-  this->MarkModified();
-}
-
 void vtkHexahedralRayCastRepresentation::SetMaximumPeels(int peels)
 {
   this->HexahedralMapper->SetMaximumPeels(peels);

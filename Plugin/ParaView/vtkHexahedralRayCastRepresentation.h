@@ -29,7 +29,6 @@ public:
   /// Forwarded to vtkHexahedralRayCastMapper.
   void SetIntegrationMode(int mode);
   void SetFixedSteps(int steps);
-  void SetOpacityThreshold(double threshold);
   void SetMaximumPeels(int peels);
   void SetExactSegmentEnds(int exact);
   ///@}

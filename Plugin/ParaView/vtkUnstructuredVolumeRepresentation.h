@@ -49,6 +49,9 @@ public:
   /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetSkipInvisibleCells).
   void SetSkipInvisibleCells(int skip);
 
+  /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetOpacityThreshold).
+  void SetOpacityThreshold(double threshold);
+
 protected:
   vtkUnstructuredVolumeRepresentation();
   ~vtkUnstructuredVolumeRepresentation() override;

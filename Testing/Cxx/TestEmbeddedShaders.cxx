@@ -6,7 +6,7 @@
 #include "uvBarycentricCellProjectionFS.h"
 #include "uvBarycentricShellBlendFS.h"
 #include "uvBarycentricShellIsosurfaceFS.h"
-#include "uvBarycentricShellMaskFS.h"
+#include "uvOpacityMaskFS.h"
 #include "uvBarycentricShellSliceFS.h"
 #include "vtkBarycentricShellPrograms.h"
 #include "vtkHexahedralRayCastPrograms.h"
@@ -94,7 +94,7 @@ TEST_F(EmbeddedShaders, EveryBarycentricShellProgramLinks)
       // Isosurfaces are always lit, by one of the two gradients.
       if (all[k].VertexGradients || all[k].CellGradients)
         EXPECT_NE(programs.OverCells(uvBarycentricShellIsosurfaceFS), nullptr) << variant;
-      for (const char* fragment : { uvBarycentricShellBlendFS, uvBarycentricShellMaskFS })
+      for (const char* fragment : { uvBarycentricShellBlendFS, uvOpacityMaskFS })
         EXPECT_NE(programs.FullScreen(fragment), nullptr) << variant;
       EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << variant;
     }

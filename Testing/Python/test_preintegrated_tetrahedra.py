@@ -188,8 +188,9 @@ class SkippingTests(SceneTestCase):
         image = scene.render()
         self.assertEqual(m.GetNumberOfVisibleListBuilds(), builds + 1)
         self.assertLess(m.GetNumberOfDrawnTetrahedra(), 0.6 * drawn_all)
-        # Skipping changes nothing in the image.
+        # Skipping changes nothing in the image (no pixel is opaque enough to stop being shaded).
         kept = copy_image(image)
+        self.assertLess(max_alpha(image), m.GetOpacityThreshold())
         m.SkipInvisibleCellsOff()
         self.assertLess(rmse(scene.render(), kept)[1], 1e-6)
         self.assertEqual(m.GetNumberOfDrawnTetrahedra(), drawn_all)
@@ -199,6 +200,68 @@ class SkippingTests(SceneTestCase):
         scene.render()
         self.assertEqual(m.GetNumberOfGradientComputations(), 1)
         self.assertEqual(scene.events.errors, 0)
+
+
+def max_alpha(image):
+    alphas = image.GetPointData().GetScalars()
+    return max(alphas.GetComponent(i, 3) for i in range(alphas.GetNumberOfTuples()))
+
+
+class EarlyTerminationTests(SceneTestCase):
+    """With skipping on, the order is composited front to back in batches under an opacity mask
+    (pseudo early ray termination). 24,576 tetrahedra: six batches, five mask refreshes."""
+
+    def scene(self, unit_distance, **settings):
+        mesh = analytic(16)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        prop.SetScalarOpacityUnitDistance(unit_distance)
+        camera = camera_for(mesh)
+        return mesh, prop, camera, Scene(mesh, prop, camera, 96, CountShadedFragments=True, **settings)
+
+    def render_both_ways(self, scene):
+        """The image and shaded fragments with skipping on, then off (back to front, no mask)."""
+        m = scene.mapper
+        on = copy_image(scene.render())
+        self.assertTrue(m.GetDrewFrontToBack())
+        self.assertEqual(m.GetNumberOfOpacityMaskRefreshes(), 5)
+        shaded_on = m.GetNumberOfShadedFragments()
+        m.SkipInvisibleCellsOff()
+        off = copy_image(scene.render())
+        self.assertFalse(m.GetDrewFrontToBack())
+        self.assertEqual(m.GetNumberOfOpacityMaskRefreshes(), 0)
+        m.SkipInvisibleCellsOn()
+        self.assertEqual(scene.events.errors, 0)
+        return on, shaded_on, off, m.GetNumberOfShadedFragments()
+
+    def test_front_to_back_sums_what_back_to_front_does(self):
+        # Translucent: no pixel reaches the threshold, so nothing is culled and the two orders
+        # composite the same terms; they differ only by float rounding.
+        for route in (0, 1):
+            mesh, prop, camera, scene = self.scene(1.0, ProjectionRoute=route)
+            on, shaded_on, off, shaded_off = self.render_both_ways(scene)
+            self.assertLess(max_alpha(on), 0.999)
+            self.assertEqual(shaded_on, shaded_off)
+            self.assertGreater(shaded_on, 0)
+            self.assertLess(rmse(on, off)[1], 1e-6, route)
+
+    def test_opaque_pixels_stop_being_shaded(self):
+        # Nearly opaque matter: most fragments lie behind pixels that are already opaque.
+        mesh, prop, camera, scene = self.scene(0.01)
+        on, shaded_on, off, shaded_off = self.render_both_ways(scene)
+        culled = 1.0 - shaded_on / shaded_off
+        error, worst = rmse(on, reference(mesh, prop, camera, 96))
+        print(f"\n  {100 * culled:.0f}% of fragments culled; against the reference RMSE {error:.2g}, max {worst:.2g}",
+              end="")
+        self.assertGreater(culled, 0.3)
+        # What a stopped pixel leaves out weighs at most 1 - threshold.
+        self.assertLessEqual(rmse(on, off)[1], 1.0 - scene.mapper.GetOpacityThreshold() + 1e-6)
+        self.assertLess(error, 1e-3)
+
+    def test_threshold_one_keeps_back_to_front(self):
+        mesh, prop, camera, scene = self.scene(0.01, OpacityThreshold=1.0)
+        scene.render()
+        self.assertFalse(scene.mapper.GetDrewFrontToBack())
+        self.assertEqual(scene.mapper.GetNumberOfOpacityMaskRefreshes(), 0)
 
 
 class IsovalueNormalisationTests(SceneTestCase):
