@@ -25,7 +25,8 @@ fraction = float(sys.argv[6]) if len(sys.argv) > 6 else 0.0
 # Each representation: its menu entry and the panel's settings the test drives.
 ENTRY, SETTINGS = {
     "preintegrated": ("Volume (Pre-integrated Tetrahedra)",
-                      {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8, "IntegrationMode": "Partial pre-integration"}),
+                      {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8, "IntegrationMode": "Partial pre-integration",
+                       "TetrahedraOpacityThreshold": 0.999}),
     "hexahedral": ("Volume (Hexahedral Ray Cast)",
                    {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8,
                     "HexahedralIntegrationMode": "Accurate", "OpacityThreshold": 0.99}),
