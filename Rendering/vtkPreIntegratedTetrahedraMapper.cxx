@@ -45,6 +45,11 @@ void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
   program->SetUniformMatrix4x4(name, const_cast<float*>(glm::value_ptr(single)));
 }
 
+/// Front to back pays for its mask passes and, on CPU rasterisers, for a slower blend and order
+/// (the benchmark measured both orders) only where pixels become opaque: it is chosen when at least
+/// this share of the covered pixels reached the opacity threshold in the last frame.
+constexpr double FrontToBackOpaqueShare = 0.25;
+
 /// Tetrahedra drawn between two refreshes of the opacity mask when compositing front to back: a
 /// refresh is one full-screen pass, so at most about 64 of them a frame, and none more often than
 /// every 4096 tetrahedra.
@@ -97,8 +102,10 @@ public:
   vtkUnstructuredVolumeTexture Isosurfaces;
   vtkUnstructuredVolumeOpacityMask Mask;
 
-  // This frame's compositing: front to back under the opacity mask, or back to front.
+  // This frame's compositing: front to back under the opacity mask, or back to front; chosen by the
+  // share of covered pixels the last frame left opaque (negative: not measured yet).
   bool FrontToBack = false;
+  double OpaqueShare = -1.0;
 
   vtkIdType DrawnTetrahedra = 0;
   int MeshUploads = 0, TransferFunctionUploads = 0, MaskRefreshes = 0;
@@ -190,6 +197,10 @@ int vtkPreIntegratedTetrahedraMapper::GetNumberOfTransferFunctionUploads()
 int vtkPreIntegratedTetrahedraMapper::GetNumberOfVisibleListBuilds()
 {
   return this->Impl->Visible.Builds;
+}
+double vtkPreIntegratedTetrahedraMapper::GetOpaquePixelShare()
+{
+  return this->Impl->OpaqueShare;
 }
 bool vtkPreIntegratedTetrahedraMapper::GetDrewFrontToBack()
 {
@@ -297,7 +308,7 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   // Visibility order by centroid distance, when the view or the list changed: front to back when
   // pixels that became opaque can stop being shaded (skipping on and a threshold below 1), else
   // back to front, which needs no mask passes.
-  impl.FrontToBack = this->SkipInvisibleCells && this->OpacityThreshold < 1.0;
+  impl.FrontToBack = this->ChooseFrontToBack();
   impl.Order.Update(impl.Mesh, impl.Visible.Drawn, frame.EyeInModel(impl.Mesh.Center),
     frame.ViewInModel(impl.Mesh.Center), frame.Parallel, impl.FrontToBack);
   return true;
@@ -349,6 +360,8 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
     drawn = this->DrawFrontToBack(frame, target, program);
   else
     this->DrawBackToFront(frame);
+  if (drawn && this->OrderIsChosen())
+    drawn = this->MeasureOpaqueShare(frame, target);
   target.GetNoAttributes()->Release();
   this->UnbindTetrahedraResources(target);
   impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.Order.size());
@@ -422,6 +435,62 @@ void vtkPreIntegratedTetrahedraMapper::UnbindTetrahedraResources(vtkUnstructured
     impl.DrawOrder.Unbind();
 }
 
+/// Whether the order depends on the scene: skipping on, a threshold below 1, and more than one
+/// batch of tetrahedra (a single batch has no mask to refresh).
+bool vtkPreIntegratedTetrahedraMapper::OrderIsChosen()
+{
+  const std::size_t count = this->Impl->Visible.Drawn.size();
+  return this->SkipInvisibleCells && this->OpacityThreshold < 1.0 && count > MaskedBatchSize(count);
+}
+
+/// Front to back where the order is chosen and the last frame left enough pixels opaque, or has not
+/// been measured (the first frame, or the first after the order began to depend on the scene).
+bool vtkPreIntegratedTetrahedraMapper::ChooseFrontToBack()
+{
+  Internals& impl = *this->Impl;
+  if (!this->OrderIsChosen())
+  {
+    impl.OpaqueShare = -1.0;
+    return false;
+  }
+  return impl.OpaqueShare < 0.0 || impl.OpaqueShare >= FrontToBackOpaqueShare;
+}
+
+/// The share of the covered pixels whose opacity reached the threshold, by two mask passes counted
+/// with occlusion queries (their result is waited for, once a frame), for the next frame's order.
+bool vtkPreIntegratedTetrahedraMapper::MeasureOpaqueShare(
+  const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target)
+{
+  Internals& impl = *this->Impl;
+  vtkShaderProgram* mask = this->ReadyMaskProgram(frame);
+  if (!mask)
+    return false;
+  vtkOpenGLState* state = frame.Window->GetState();
+  impl.Mask.Resize(frame.Window, frame.Width, frame.Height);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  GLuint counted[2] = { 0, 0 };
+  const float thresholds[2] = { static_cast<float>(this->OpacityThreshold), 1e-6f }; // opaque, covered
+  for (int k = 0; k < 2; ++k)
+  {
+    mask->SetUniformf("opacityThreshold", thresholds[k]);
+    counted[k] = uvgl::SamplesPassed([&] { impl.Mask.RunAlone(state, mask, target.GetColor()); });
+  }
+  state->vtkglDisable(GL_DEPTH_TEST);
+  impl.OpaqueShare = counted[1] > 0 ? double(counted[0]) / counted[1] : 0.0;
+  return true;
+}
+
+/// The opacity-mask program, bound; null (reported) when it does not compile.
+vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyMaskProgram(const vtkUnstructuredVolumeFrame& frame)
+{
+  const uvgl::ProgramSources maskSources{ uvgl::ShaderSource(uvFullScreenTriangleVS, ""),
+    uvgl::ShaderSource(uvOpacityMaskFS, ""), "" };
+  vtkShaderProgram* mask = uvgl::ReadyProgram(frame.Window, maskSources);
+  if (!mask)
+    vtkErrorMacro("the opacity-mask shaders failed to compile or link");
+  return mask;
+}
+
 /// Every tetrahedron of the order, composited over what is behind it (ONE, ONE_MINUS_SRC_ALPHA).
 void vtkPreIntegratedTetrahedraMapper::DrawBackToFront(const vtkUnstructuredVolumeFrame& frame)
 {
@@ -445,14 +514,9 @@ bool vtkPreIntegratedTetrahedraMapper::DrawFrontToBack(
 {
   Internals& impl = *this->Impl;
   vtkOpenGLState* state = frame.Window->GetState();
-  const uvgl::ProgramSources maskSources{ uvgl::ShaderSource(uvFullScreenTriangleVS, ""),
-    uvgl::ShaderSource(uvOpacityMaskFS, ""), "" };
-  vtkShaderProgram* mask = uvgl::ReadyProgram(frame.Window, maskSources);
+  vtkShaderProgram* mask = this->ReadyMaskProgram(frame);
   if (!mask)
-  {
-    vtkErrorMacro("the opacity-mask shaders failed to compile or link");
     return false;
-  }
   mask->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
   impl.Mask.Resize(frame.Window, frame.Width, frame.Height);
   impl.Mask.AttachAndClear(target, state); // nothing is opaque yet

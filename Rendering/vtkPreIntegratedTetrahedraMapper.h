@@ -47,10 +47,13 @@
  * (default 0.999), the order is composited front to back instead (the same sum, under rather than
  * over) in batches, and between batches an opacity mask marks the pixels whose opacity reached the
  * threshold, so the depth test discards their later fragments before they are shaded (the iSBVR
- * paper's pseudo early ray termination). That choice is automatic: front to back is never slower
- * by more than its mask passes (one full-screen pass per batch, at most about 64 a frame) and
- * saves the shading of every fragment behind opaque matter; back to front is kept where nothing
- * can be saved (threshold 1) or skipping is off. Its error is at most 1 - OpacityThreshold.
+ * paper's pseudo early ray termination). Its error is at most 1 - OpacityThreshold. The order is
+ * chosen per frame: front to back costs its mask passes (one full-screen pass per batch, at most
+ * about 64 a frame) and, on CPU rasterisers, a slower blend and traversal of the order, and saves
+ * only where pixels become opaque; so each frame counts (two occlusion-queried mask passes) the
+ * share of the covered pixels it left opaque, and the next frame goes front to back when that share
+ * is at least a quarter (the first frame does, to measure it). Back to front is kept where nothing
+ * can be saved: threshold 1, skipping off, or a mesh of one batch (4096 tetrahedra or fewer).
  */
 #ifndef vtkPreIntegratedTetrahedraMapper_h
 #define vtkPreIntegratedTetrahedraMapper_h
@@ -102,9 +105,12 @@ public:
 
   ///@{
   /// Early termination (see the class description): whether the last frame composited front to
-  /// back, the opacity-mask refreshes it ran, and, with CountShadedFragments on (default off: an
-  /// occlusion query per batch, each waited for), the fragments that passed the mask and were shaded.
+  /// back, the share of covered pixels it left opaque (what the next frame's order is chosen by; -1
+  /// where the order is not chosen), the opacity-mask refreshes it ran, and, with
+  /// CountShadedFragments on (default off: an occlusion query per batch, each waited for), the
+  /// fragments that passed the mask and were not discarded.
   bool GetDrewFrontToBack();
+  double GetOpaquePixelShare();
   int GetNumberOfOpacityMaskRefreshes();
   vtkIdType GetNumberOfShadedFragments();
   vtkSetMacro(CountShadedFragments, bool);
@@ -129,6 +135,10 @@ protected:
   void DrawBackToFront(const vtkUnstructuredVolumeFrame& frame);
   bool DrawFrontToBack(
     const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target, vtkShaderProgram* program);
+  bool OrderIsChosen();
+  bool ChooseFrontToBack();
+  bool MeasureOpaqueShare(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);
+  vtkShaderProgram* ReadyMaskProgram(const vtkUnstructuredVolumeFrame& frame);
 
   bool CountShadedFragments = false;
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;

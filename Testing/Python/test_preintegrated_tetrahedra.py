@@ -209,7 +209,8 @@ def max_alpha(image):
 
 class EarlyTerminationTests(SceneTestCase):
     """With skipping on, the order is composited front to back in batches under an opacity mask
-    (pseudo early ray termination). 24,576 tetrahedra: six batches, five mask refreshes."""
+    (pseudo early ray termination) where the last frame left at least a quarter of the covered pixels
+    opaque, and in the first frame. 24,576 tetrahedra: six batches, five mask refreshes."""
 
     def scene(self, unit_distance, **settings):
         mesh = analytic(16)
@@ -243,6 +244,14 @@ class EarlyTerminationTests(SceneTestCase):
             self.assertEqual(shaded_on, shaded_off)
             self.assertGreater(shaded_on, 0)
             self.assertLess(rmse(on, off)[1], 1e-6, route)
+            # Nothing was opaque: after a frame that measures it again (skipping was off), the next
+            # frames go back to front, with the same image.
+            scene.render()
+            self.assertTrue(scene.mapper.GetDrewFrontToBack())
+            scene.render()
+            self.assertFalse(scene.mapper.GetDrewFrontToBack())
+            self.assertEqual(scene.mapper.GetOpaquePixelShare(), 0.0)
+            self.assertLess(rmse(copy_image(scene.render()), off)[1], 1e-6, route)
 
     def test_opaque_pixels_stop_being_shaded(self):
         # Nearly opaque matter: most fragments lie behind pixels that are already opaque.
@@ -256,12 +265,18 @@ class EarlyTerminationTests(SceneTestCase):
         # What a stopped pixel leaves out weighs at most 1 - threshold.
         self.assertLessEqual(rmse(on, off)[1], 1.0 - scene.mapper.GetOpacityThreshold() + 1e-6)
         self.assertLess(error, 1e-3)
+        # Most covered pixels are opaque: the next frames stay front to back.
+        scene.render()
+        self.assertGreater(scene.mapper.GetOpaquePixelShare(), 0.25)
+        scene.render()
+        self.assertTrue(scene.mapper.GetDrewFrontToBack())
 
     def test_threshold_one_keeps_back_to_front(self):
         mesh, prop, camera, scene = self.scene(0.01, OpacityThreshold=1.0)
         scene.render()
         self.assertFalse(scene.mapper.GetDrewFrontToBack())
         self.assertEqual(scene.mapper.GetNumberOfOpacityMaskRefreshes(), 0)
+        self.assertEqual(scene.mapper.GetOpaquePixelShare(), -1.0)
 
 
 class IsovalueNormalisationTests(SceneTestCase):
