@@ -64,18 +64,19 @@ float EntryParameter(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d
 
 void main()
 {
-  vec3 origin, direction;
-  EyeRay(PixelNdc(gl_FragCoord.xy, viewportSize), clipToModel, origin, direction);
-  vec3 a, b, c, d;
-  int corners = BoundaryPatch(a, b, c, d);
-  // A later peel starts where the last walk stopped (uvHexahedralTraverseFS.glsl's stopKind). Where
-  // it left the mesh through a boundary face, or lost the ray at an edge, a face entered right there
+  // A later peel starts where the last walk stopped (uvHexahedralTraverseFS.glsl's stopKind); a ray
+  // that stopped for good (opaque, or no entry) is done before its face is fetched. Where the walk
+  // left the mesh through a boundary face, or lost the ray at an edge, a face entered right there
   // counts too: the other side of an internal wall of the mesh (two layers of cells on coincident,
   // unshared points), whose crossing rounds to either side of the stop -- but not the face the lost
   // walk entered by, which would lose it again.
   vec4 exit = texelFetch(previousExit, ivec2(gl_FragCoord.xy), 0);
-  if (firstPeel == 0 && exit.g > 1.5 && boundaryFace == int(exit.b))
+  if (firstPeel == 0 && (!(exit.r < 3.0e38) || (exit.g > 1.5 && boundaryFace == int(exit.b))))
     discard;
+  vec3 origin, direction;
+  EyeRay(PixelNdc(gl_FragCoord.xy, viewportSize), clipToModel, origin, direction);
+  vec3 a, b, c, d;
+  int corners = BoundaryPatch(a, b, c, d);
   float wall = exit.g > 0.5 ? 1e-5 * (1.0 + abs(exit.r)) : 0.0;
   float after = firstPeel == 1 ? -3.0e38 : exit.r - wall;
   float t = EntryParameter(origin, direction, a, b, c, d, corners, after);
