@@ -219,12 +219,12 @@ class EarlyTerminationTests(SceneTestCase):
         camera = camera_for(mesh)
         return mesh, prop, camera, Scene(mesh, prop, camera, 96, CountShadedFragments=True, **settings)
 
-    def render_both_ways(self, scene):
+    def render_both_ways(self, scene, refreshes=5):
         """The image and shaded fragments with skipping on, then off (back to front, no mask)."""
         m = scene.mapper
         on = copy_image(scene.render())
         self.assertTrue(m.GetDrewFrontToBack())
-        self.assertEqual(m.GetNumberOfOpacityMaskRefreshes(), 5)
+        self.assertEqual(m.GetNumberOfOpacityMaskRefreshes(), refreshes)
         shaded_on = m.GetNumberOfShadedFragments()
         m.SkipInvisibleCellsOff()
         off = copy_image(scene.render())
@@ -270,6 +270,20 @@ class EarlyTerminationTests(SceneTestCase):
         self.assertGreater(scene.mapper.GetOpaquePixelShare(), 0.25)
         scene.render()
         self.assertTrue(scene.mapper.GetDrewFrontToBack())
+
+    def test_camera_inside_with_isosurfaces_both_routes(self):
+        # Tetrahedra crossing the near plane (ray-cast over their rectangles) and lit isosurfaces in
+        # front-to-back batches: within the threshold's bound of back to front, on either route.
+        mesh = analytic(12)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        prop = uvrender.volume_property((low, high))
+        prop.SetScalarOpacityUnitDistance(0.02)
+        for route in (0, 1):
+            scene = Scene(mesh, prop, inside_camera(), 96, ProjectionRoute=route)
+            scene.mapper.AddIsosurface(low + 0.6 * (high - low), 1.0, 0.8, 0.3, 0.7)
+            on, _, off, _ = self.render_both_ways(scene, refreshes=2)
+            self.assertGreater(max_alpha(on), 0.999)
+            self.assertLessEqual(rmse(on, off)[1], 1.0 - scene.mapper.GetOpacityThreshold() + 1e-6, route)
 
     def test_threshold_one_keeps_back_to_front(self):
         mesh, prop, camera, scene = self.scene(0.01, OpacityThreshold=1.0)
