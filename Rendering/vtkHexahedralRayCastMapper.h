@@ -26,7 +26,9 @@
  * renderer's first light with the exact gradient of the cell's trilinear field (no gradient array).
  *
  * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.99); with
- * SkipInvisibleCells (default) the walk takes only the cells whose scalar range the transfer function
+ * SkipInvisibleCells (default off here: on voxel data such as neghip its region walk loses part of
+ * some rays at the region's edges, and the many peels it needs there cost more than they save) the
+ * walk takes only the cells whose scalar range the transfer function
  * makes visible or that hold an isovalue (after the iSBVR paper's culling surfaces, uvVisibleRegion.h):
  * rays enter at the front of that region, end at its back, leap over invisible runs inside the mesh
  * by peeling on to its next entry face, and rays that meet none cost only the entry pass. Without

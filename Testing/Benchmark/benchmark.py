@@ -17,8 +17,9 @@ writes Testing/Benchmark/README.md (or the path given): how and where the run wa
 table, and its ratios against VTK's mappers, so that the published numbers are always one run's.
 
 Mappers register in MAPPERS below: a name, a factory, and the input it takes: "tets" (the scene's
-mesh split into tetrahedra) or "hexahedra" (the mesh itself; run on scenes of the cells the hexahedral
-walk takes: hexahedra, voxels, wedges, pyramids, tetrahedra).
+mesh split into tetrahedra), "hexahedra" (the mesh itself; run on scenes of the cells the hexahedral
+walk takes: hexahedra, voxels, wedges, pyramids, tetrahedra) or "image" (image-data scenes only: the
+image itself, whose voxels the other mappers take).
 """
 import argparse
 import csv
@@ -45,7 +46,8 @@ from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLImageDataWriter
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
                                          vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
-from vtkmodules.vtkRenderingVolume import (vtkProjectedTetrahedraMapper, vtkUnstructuredGridVolumeRayCastMapper,
+from vtkmodules.vtkRenderingVolume import (vtkGPUVolumeRayCastMapper, vtkProjectedTetrahedraMapper,
+                                           vtkUnstructuredGridVolumeRayCastMapper,
                                            vtkUnstructuredGridVolumeZSweepMapper)
 from vtkmodules.vtkViewsContext2D import vtkContextView
 import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401
@@ -57,12 +59,16 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
 from fixtures import analytic, hex_dominant  # noqa: E402
-from shared_data import SHARED, bluntfin, can, disk_out_ref, legacy, openfoam_cavity_cells  # noqa: E402
+from shared_data import (SHARED, bluntfin, bucky_image, can, disk_out_ref, image_as_voxels, legacy,  # noqa: E402
+                         neghip_image, openfoam_cavity_cells)
 REFERENCE_VERSION = "3"  # bump when the reference renderer's output changes (2: no lost cells, superposition; 3: rounding overlaps touch)
 
 # ---------------------------------------------------------------------------------------------
-# Mappers: (name, factory, input: "tets" or "hexahedra"). This project's mappers register here as they land.
+# Mappers: (name, factory, input: "tets", "hexahedra" or "image"). This project's mappers register here as
+# they land.
 MAPPERS = [
+    # Image-data scenes only: VTK's GPU ray caster on the image itself (the others take its voxels).
+    ("VTK GPUVolumeRayCast", vtkGPUVolumeRayCastMapper, "image"),
     ("VTK ProjectedTetrahedra", vtkProjectedTetrahedraMapper, "tets"),
     ("VTK UGVolumeRayCast", vtkUnstructuredGridVolumeRayCastMapper, "tets"),
     ("VTK UGZSweep", vtkUnstructuredGridVolumeZSweepMapper, "tets"),
@@ -78,9 +84,9 @@ MAPPERS = [
     # Accurate without early ray termination: what stopping at opacity 0.99 saves and costs.
     ("UV HexRayCast Accurate, no early stop", lambda: configured(vtkHexahedralRayCastMapper, OpacityThreshold=1.0),
      "hexahedra"),
-    # Without skipping (SkipInvisibleCells off): what skipping saves; skipping_table() pairs each
-    # "<mapper>, no skipping" with "<mapper>".
-    ("UV HexRayCast Accurate, no skipping", lambda: configured(vtkHexahedralRayCastMapper, SkipInvisibleCells=False),
+    # Against the default's SkipInvisibleCells: what skipping saves; skipping_table() pairs each
+    # "<mapper>, no skipping" or "<mapper>, skipping" with "<mapper>" (the hexahedral default is off).
+    ("UV HexRayCast Accurate, skipping", lambda: configured(vtkHexahedralRayCastMapper, SkipInvisibleCells=True),
      "hexahedra"),
     ("UV PreIntegratedTetrahedra, no skipping",
      lambda: configured(vtkPreIntegratedTetrahedraMapper, SkipInvisibleCells=False), "tets"),
@@ -227,6 +233,9 @@ def scenes(quick):
             ("spx_tets", lambda: legacy("spx", "spx.vtk"), None, smooth_ramp, 0.05),
             ("lox_post_tets", lambda: legacy("lox_post", "post.vtk"), "Pressure", smooth_ramp, 0.05),
             ("openfoam_cavity_cells_hex", openfoam_cavity_cells, "cells:p", smooth_ramp, 0.05),
+            # Image data (the loader returns the image; the mappers but VTK's GPU ray caster take its voxels).
+            ("bucky_voxels", bucky_image, "density", top_tenth, 0.05),
+            ("neghip_voxels", neghip_image, "density", smooth_ramp, 0.02),
         ]
         # The quadratic cylinder: the reference renders its quadratic tetrahedra exactly, the mappers
         # draw vtkHigherOrderSubdivision's linear cells at each level (error against level).
@@ -530,7 +539,7 @@ def markdown_table(rows):
     return "\n".join(lines) + "\n"
 
 
-SKIPPING_OFF = ", no skipping"
+SKIPPING_OFF, SKIPPING_ON = ", no skipping", ", skipping"
 
 
 def skipping_table(rows):
@@ -541,11 +550,13 @@ def skipping_table(rows):
     lines = ["| scene | mapper | frame with / without skipping (s) | speedup | work skipped | model bound "
              "| RMSE with / without |",
              "|---|---|---|---|---|---|---|"]
-    for off in (r for r in rows if r["mapper"].endswith(SKIPPING_OFF)):
-        name = off["mapper"][:-len(SKIPPING_OFF)]
-        on = next((r for r in rows if r["scene"] == off["scene"] and r["mapper"] == name), None)
-        if on is None:
+    for variant in (r for r in rows if r["mapper"].endswith((SKIPPING_OFF, SKIPPING_ON))):
+        suffix = SKIPPING_OFF if variant["mapper"].endswith(SKIPPING_OFF) else SKIPPING_ON
+        name = variant["mapper"][:-len(suffix)]
+        default = next((r for r in rows if r["scene"] == variant["scene"] and r["mapper"] == name), None)
+        if default is None:
             continue
+        on, off = (default, variant) if suffix == SKIPPING_OFF else (variant, default)
         shares = {unit: 1.0 - on["work"][unit] / off["work"][unit] for unit in on["work"] if off["work"].get(unit)}
         skipped = "; ".join(f"{100 * alpha:.0f}% of {unit}" for unit, alpha in shares.items())
         alpha = max(shares.values(), default=0.0)
@@ -729,7 +740,9 @@ def main():
     for scene, load, scalar, maker, unit_fraction, *level in scenes(args.quick):
         if wanted_scenes and scene not in wanted_scenes:
             continue
-        mesh = load()
+        mesh, scene_image = load(), None
+        if mesh.IsA("vtkImageData"):
+            scene_image, mesh = mesh, image_as_voxels(mesh)
         prop, opacity_nodes, color_nodes = volume_property(mesh, scalar, maker, unit_fraction)
         cameras = orbit(mesh, views)
         drawn = subdivided(mesh, level[0] if level else None)
@@ -752,10 +765,10 @@ def main():
         walkable = (10, 11, 12, 13, 14)  # tetrahedra, voxels, hexahedra, wedges, pyramids
         hexahedral = all(drawn.GetCellType(c) in walkable for c in range(drawn.GetNumberOfCells()))
         for name, factory, takes in mappers:
-            if takes == "hexahedra" and not hexahedral:
+            if (takes == "hexahedra" and not hexahedral) or (takes == "image" and scene_image is None):
                 continue
             preparation, frames, memory, images, mesh_bytes, work = run_mapper(
-                name, factory, tets if takes == "tets" else drawn, scalar, prop, cameras, size)
+                name, factory, {"tets": tets, "hexahedra": drawn, "image": scene_image}[takes], scalar, prop, cameras, size)
             errors = []
             for k, (image, reference) in enumerate(zip(images, references)):
                 metrics = vtkVolumeImageErrorMetrics()

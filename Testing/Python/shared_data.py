@@ -8,7 +8,7 @@ from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkArrayCalculator
 from vtkmodules.vtkIOExodus import vtkExodusIIReader
 from vtkmodules.vtkCommonCore import vtkDoubleArray
 from vtkmodules.vtkIOGeometry import vtkOpenFOAMReader
-from vtkmodules.vtkIOImage import vtkImageReader2
+from vtkmodules.vtkIOImage import vtkImageReader2, vtkSLCReader
 from vtkmodules.vtkIOLegacy import vtkDataSetReader
 from vtkmodules.vtkIOXML import vtkXMLStructuredGridReader, vtkXMLUnstructuredGridReader
 
@@ -126,6 +126,11 @@ def openfoam_cavity_cells():
 
 def bucky():
     """NVIDIA's 32^3 uint8 Bucky ball as 29791 voxels; "density"."""
+    return image_as_voxels(bucky_image())
+
+
+def bucky_image():
+    """NVIDIA's 32^3 uint8 Bucky ball as image data; "density"."""
     reader = vtkImageReader2()
     reader.SetFileName(path("bucky", "Bucky_32x32x32_uint8.raw"))
     reader.SetDataScalarTypeToUnsignedChar()
@@ -134,7 +139,24 @@ def bucky():
     reader.SetFileDimensionality(3)
     reader.Update()
     reader.GetOutput().GetPointData().GetScalars().SetName("density")
-    return _unstructured(reader)
+    return reader.GetOutput()
+
+
+def neghip_image():
+    """The negative-potential high-protein volume (SLC), 66^3 uint8 points as image data; "density"."""
+    reader = vtkSLCReader()
+    reader.SetFileName(path("neghip", "neghip.slc"))
+    reader.Update()
+    reader.GetOutput().GetPointData().GetScalars().SetName("density")
+    return reader.GetOutput()
+
+
+def image_as_voxels(image):
+    """Image data as a vtkUnstructuredGrid of voxels."""
+    to_grid = vtkAppendFilter()
+    to_grid.SetInputData(image)
+    to_grid.Update()
+    return to_grid.GetOutput()
 
 
 def xml_grid(*parts):

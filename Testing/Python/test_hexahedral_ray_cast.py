@@ -304,7 +304,7 @@ def sparse_property(low, high, unit, visible_from=0.55):
 
 
 class SkippingTests(SceneTestCase):
-    """SkipInvisibleCells (on by default) walks only the cells the transfer function leaves visible,
+    """SkipInvisibleCells (off by default) walks only the cells the transfer function leaves visible,
     entering at that region's front and peeling over invisible runs: the image is the full walk's
     within float rounding (the walk's sum is cut where it leaves the region), the region is rebuilt
     only when an edit changes which cells are visible, and the eye may sit in an invisible cell.
@@ -372,6 +372,8 @@ class SkippingTests(SceneTestCase):
         low, high = mesh.GetPointData().GetScalars().GetRange()
         prop = sparse_property(low, high, 0.05)
         scene = HexScene(mesh, prop, camera_for(mesh), 48)
+        self.assertFalse(scene.mapper.GetSkipInvisibleCells())  # the hexahedral mapper's default
+        scene.mapper.SkipInvisibleCellsOn()
         scene.render()
         self.assertEqual(scene.mapper.GetNumberOfVisibleRegionBuilds(), 1)
         visible = scene.mapper.GetNumberOfVisibleCells()
