@@ -6,8 +6,9 @@
  * (uvOpacityMaskFS.glsl, colour writes off); the passes after it draw with the depth test LESS at a
  * depth above 0, so the hardware's depth test discards their fragments on those pixels before they
  * are shaded. Owns the mask, a depth texture the mapper attaches to the framebuffers it draws into,
- * and a framebuffer holding only the mask, for mappers whose accumulated image is the colour of the
- * framebuffer they draw into (reading it there would be a feedback loop). (OpenGL layer; not wrapped.)
+ * and (made on first use) a framebuffer holding only the mask, for mappers whose accumulated image
+ * is the colour of the framebuffer they draw into (reading it there would be a feedback loop).
+ * (OpenGL layer; not wrapped.)
  */
 #ifndef vtkUnstructuredVolumeOpacityMask_h
 #define vtkUnstructuredVolumeOpacityMask_h
@@ -31,14 +32,8 @@ public:
       return;
     this->Depth->SetContext(window);
     this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    this->MaskOnly->SetContext(window);
-    this->MaskOnly->SaveCurrentBindingsAndBuffers();
-    this->MaskOnly->Bind();
-    this->MaskOnly->AddDepthAttachment(this->Depth);
-    window->GetState()->vtkglDrawBuffer(GL_NONE); // complete under OpenGL 3.2 without colour
-    window->GetState()->vtkglReadBuffer(GL_NONE);
-    this->MaskOnly->RestorePreviousBindingsAndBuffers();
     this->Context = window;
+    this->MaskOnlyReady = false; // made by the first RunAlone at this size
     this->Width = width;
     this->Height = height;
   }
@@ -74,9 +69,17 @@ public:
   /// blending is left off).
   void RunAlone(vtkOpenGLState* state, vtkShaderProgram* program, vtkTextureObject* accumulated)
   {
+    if (!this->MaskOnlyReady)
+      this->MaskOnly->SetContext(this->Context);
     this->MaskOnly->SaveCurrentBindingsAndBuffers();
     this->MaskOnly->Bind();
-    state->vtkglDrawBuffer(GL_NONE);
+    if (!this->MaskOnlyReady)
+    {
+      this->MaskOnly->AddDepthAttachment(this->Depth);
+      this->MaskOnlyReady = true;
+    }
+    state->vtkglDrawBuffer(GL_NONE); // complete under OpenGL 3.2 without colour
+    state->vtkglReadBuffer(GL_NONE);
     this->Run(state, program, accumulated);
     this->MaskOnly->RestorePreviousBindingsAndBuffers();
   }
@@ -89,6 +92,7 @@ public:
       this->MaskOnly->ReleaseGraphicsResources(this->Context);
     }
     this->Context = nullptr;
+    this->MaskOnlyReady = false;
     this->Width = this->Height = 0;
   }
 
@@ -96,6 +100,7 @@ private:
   vtkNew<vtkTextureObject> Depth;
   vtkNew<vtkOpenGLFramebufferObject> MaskOnly;
   vtkOpenGLRenderWindow* Context = nullptr;
+  bool MaskOnlyReady = false;
   int Width = 0, Height = 0;
 };
 

@@ -28,7 +28,6 @@
 #include "vtkPNGWriter.h"
 #include "vtkCellData.h"
 #include "vtkPointData.h"
-#include "vtkBezierTetra.h"
 #include "vtkBezierWedge.h"
 #include "vtkBiQuadraticQuadraticHexahedron.h"
 #include "vtkBiQuadraticQuadraticWedge.h"
@@ -138,7 +137,7 @@ struct CurvedShapeFunctions
 {
   int Type = VTK_EMPTY_CELL;
   int Nodes = 0;
-  int Order[3] = { 0, 0, 0 }; // Lagrange and Bezier cells
+  int Order = 0; // Lagrange and Bezier cells (uniform in every direction)
 
   explicit operator bool() const { return this->Type != VTK_EMPTY_CELL; }
 
@@ -165,17 +164,17 @@ struct CurvedShapeFunctions
 #undef UV_STATIC_SHAPE
       case VTK_LAGRANGE_HEXAHEDRON:
       case VTK_BEZIER_HEXAHEDRON:
-        uv::EvaluateHexahedronBasis(BasisKind(this->Type), this->Order[0], HexahedronLattice(this->Order[0]), xi,
+        uv::EvaluateHexahedronBasis(BasisKind(this->Type), this->Order, HexahedronLattice(this->Order), xi,
           weights, derivatives);
         return;
       case VTK_LAGRANGE_WEDGE:
       case VTK_BEZIER_WEDGE:
-        uv::EvaluateWedgeBasis(BasisKind(this->Type), this->Order[0], WedgeLattice(this->Order[0]), xi, weights,
+        uv::EvaluateWedgeBasis(BasisKind(this->Type), this->Order, WedgeLattice(this->Order), xi, weights,
           derivatives);
         return;
       case VTK_LAGRANGE_TETRAHEDRON:
       case VTK_BEZIER_TETRAHEDRON:
-        uv::EvaluateSimplexBasis(BasisKind(this->Type), this->Order[0], TetrahedronLattice(this->Order[0]), xi,
+        uv::EvaluateSimplexBasis(BasisKind(this->Type), this->Order, TetrahedronLattice(this->Order), xi,
           weights, derivatives);
         return;
       default:
@@ -224,7 +223,7 @@ CurvedShapeFunctions CurvedShapeFunctionsOf(int type, vtkIdType nodes, uv::CellF
     {
       shape.Type = type;
       shape.Nodes = static_cast<int>(nodes);
-      shape.Order[0] = shape.Order[1] = shape.Order[2] = order;
+      shape.Order = order;
       family = hexahedron ? uv::CellFamily::Hexahedron : wedge ? uv::CellFamily::Wedge : uv::CellFamily::Tetrahedron;
     }
   }

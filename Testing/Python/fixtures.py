@@ -166,21 +166,27 @@ def load_shared(test, loader):
 
 # ---------------------------------------------------------------------------------------------
 # Transfer functions
-def spike_property(low, high, unit):
-    """One thin opaque spike at 60% of the range, over a faint ramp."""
+def property_from_nodes(opacity_nodes, color_nodes, unit):
+    """A vtkVolumeProperty of (scalar, opacity) and (scalar, (r, g, b)) nodes and opacity unit distance."""
     opacity = vtkPiecewiseFunction()
-    centre, width = low + 0.6 * (high - low), 0.02 * (high - low)
-    for s, a in ((low, 0.0), (centre - width, 0.02), (centre, 0.95), (centre + width, 0.02), (high, 0.05)):
+    for s, a in opacity_nodes:
         opacity.AddPoint(s, a)
     colors = vtkColorTransferFunction()
-    colors.AddRGBPoint(low, 0.1, 0.3, 0.9)
-    colors.AddRGBPoint(centre, 1.0, 0.7, 0.1)
-    colors.AddRGBPoint(high, 0.9, 0.1, 0.1)
+    for s, rgb in color_nodes:
+        colors.AddRGBPoint(s, *rgb)
     prop = vtkVolumeProperty()
     prop.SetColor(colors)
     prop.SetScalarOpacity(opacity)
     prop.SetScalarOpacityUnitDistance(unit)
     return prop
+
+
+def spike_property(low, high, unit):
+    """One thin opaque spike at 60% of the range, over a faint ramp."""
+    centre, width = low + 0.6 * (high - low), 0.02 * (high - low)
+    return property_from_nodes(
+        ((low, 0.0), (centre - width, 0.02), (centre, 0.95), (centre + width, 0.02), (high, 0.05)),
+        ((low, (0.1, 0.3, 0.9)), (centre, (1.0, 0.7, 0.1)), (high, (0.9, 0.1, 0.1))), unit)
 
 
 def transparent_property(color=(0.9, 0.6, 0.2)):

@@ -10,17 +10,18 @@ import shared_data  # noqa: E402
 import uvrender  # noqa: E402
 from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic_hexahedra, as_polyhedra,  # noqa: E402
                       camera_for, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
-                      load_shared, plane_scene_setup, reference, rmse, thin_shell_property, transparent_property)
+                      load_shared, plane_scene_setup, property_from_nodes, reference, rmse, thin_shell_property,
+                      transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,  # noqa: E402
                                 vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
                                 vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, VTK_LINE, VTK_PYRAMID, VTK_QUAD,  # noqa: E402
-                                           VTK_TETRA, VTK_VERTEX, VTK_WEDGE, vtkPiecewiseFunction, vtkStructuredGrid, vtkUnstructuredGrid)
+                                           VTK_TETRA, VTK_VERTEX, VTK_WEDGE, vtkStructuredGrid, vtkUnstructuredGrid)
 from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkPointDataToCellData  # noqa: E402
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkCamera, vtkColorTransferFunction, vtkVolumeProperty  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkCamera  # noqa: E402
 
 
 def single_hexahedron(values, shear=0.0, rotate=0.0):
@@ -43,24 +44,15 @@ def single_hexahedron(values, shear=0.0, rotate=0.0):
 
 def six_spikes(unit):
     """The paper's transfer function: six thin spikes over [0, 1]."""
-    opacity = vtkPiecewiseFunction()
-    colors = vtkColorTransferFunction()
     palette = ((1, 0.2, 0.2), (1, 0.7, 0.1), (0.3, 1, 0.3), (0.2, 0.8, 1), (0.4, 0.3, 1), (1, 0.3, 0.9))
-    opacity.AddPoint(0.0, 0.0)
-    colors.AddRGBPoint(0.0, 0.5, 0.5, 0.5)
+    opacity, colors = [(0.0, 0.0)], [(0.0, (0.5, 0.5, 0.5))]
     for k, rgb in enumerate(palette):
         centre = (k + 1) / 7.0
-        opacity.AddPoint(centre - 0.01, 0.0)
-        opacity.AddPoint(centre, 0.9)
-        opacity.AddPoint(centre + 0.01, 0.0)
-        colors.AddRGBPoint(centre, *rgb)
-    opacity.AddPoint(1.0, 0.0)
-    colors.AddRGBPoint(1.0, 0.5, 0.5, 0.5)
-    prop = vtkVolumeProperty()
-    prop.SetColor(colors)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(unit)
-    return prop
+        opacity += [(centre - 0.01, 0.0), (centre, 0.9), (centre + 0.01, 0.0)]
+        colors.append((centre, rgb))
+    opacity.append((1.0, 0.0))
+    colors.append((1.0, (0.5, 0.5, 0.5)))
+    return property_from_nodes(opacity, colors, unit)
 
 
 class SingleHexahedronTests(SceneTestCase):
@@ -289,18 +281,9 @@ class IsosurfaceTests(SceneTestCase):
 
 def sparse_property(low, high, unit, visible_from=0.55):
     """Nothing below `visible_from` of the range, a ramp above it: most cells are invisible."""
-    opacity = vtkPiecewiseFunction()
     start = low + visible_from * (high - low)
-    for value, alpha in ((low, 0.0), (start, 0.0), (start + 0.1 * (high - low), 0.3), (high, 0.8)):
-        opacity.AddPoint(value, alpha)
-    colors = vtkColorTransferFunction()
-    colors.AddRGBPoint(low, 0.2, 0.3, 0.9)
-    colors.AddRGBPoint(high, 1.0, 0.6, 0.1)
-    prop = vtkVolumeProperty()
-    prop.SetColor(colors)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(unit)
-    return prop
+    return property_from_nodes(((low, 0.0), (start, 0.0), (start + 0.1 * (high - low), 0.3), (high, 0.8)),
+                               ((low, (0.2, 0.3, 0.9)), (high, (1.0, 0.6, 0.1))), unit)
 
 
 class SkippingTests(SceneTestCase):
