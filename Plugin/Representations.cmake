@@ -38,4 +38,4 @@ uv_representation_entry(
   PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity SkipInvisibleCells OpacityThreshold MaximumPeels
     ExactSegmentEnds
   # Accurate / Fast / Fixed steps, not the tetrahedra's average scalar / partial pre-integration.
-  UNSHARED IntegrationMode HexahedralIntegrationMode SkipInvisibleCells HexahedralSkipInvisibleCells)
+  UNSHARED IntegrationMode HexahedralIntegrationMode)

@@ -1,13 +1,14 @@
-// The part of a hexahedral mesh a transfer function leaves visible, as a mesh of its own for the
-// ray caster's walk: the cells' face neighbours with every face towards an invisible cell made a
-// boundary face, and the region's boundary faces (the mesh's own faces of visible cells, and the
-// faces between a visible and an invisible cell). Rays then enter at the front of the visible
-// matter (space leaping), end behind it (exit-based leaping), cost nothing where no visible cell
-// lies on them (empty rays), and leap over invisible runs inside the mesh by peeling on to the
-// region's next entry face. These are the culling surfaces of Xue, Zhang and Crawfis's iSBVR,
-// made of whole cells as the paper "inflates" its isosurface, so nothing visible is culled: a cell
-// is visible when its scalar range meets non-zero extinction or holds an isovalue
-// (uvCellVisibility.h). VTK-free.
+// The part of a hexahedral mesh a transfer function leaves visible, for the ray caster: its
+// boundary faces (the mesh's own faces of visible cells, and the faces between a visible and an
+// invisible cell). Rays enter at the front of the visible matter (space leaping), end a few
+// invisible cells after leaving it (exit-based leaping), cost nothing where no visible cell lies on
+// them (empty rays), and leap over invisible runs inside the mesh by peeling on to the region's
+// next entry face. These are the culling surfaces of Xue, Zhang and Crawfis's iSBVR, made of whole
+// cells as the paper "inflates" its isosurface, so nothing visible is culled: a cell is visible when
+// its scalar range meets non-zero extinction or holds an isovalue (uvCellVisibility.h). The walk
+// itself keeps the mesh's own neighbours: where a ray only grazes an invisible cell between visible
+// ones, rasterisation may put its pixel on the other side of the fold's edge, so no entry face would
+// pick the ray up again; walking on through the grazed cell keeps it. VTK-free.
 #ifndef uvVisibleRegion_h
 #define uvVisibleRegion_h
 
@@ -67,44 +68,32 @@ void HexahedralCellRanges(const std::vector<std::uint32_t>& cellPoints, const st
 
 struct VisibleRegion
 {
-  std::vector<std::int32_t> Neighbours; ///< as HexahedralFaces::Neighbours; -1 across the region's boundary
   std::vector<std::int32_t> Boundary;   ///< as HexahedralFaces::Boundary: (cell, local face, 0, 0)
   std::size_t VisibleCells = 0;
 
   std::size_t BoundaryCount() const { return this->Boundary.size() / 4; }
 };
 
-/// The region of the cells flagged `visible` (one byte per cell, non-zero: visible). Invisible
-/// cells keep no neighbour. `parallelFor(count, function(begin, end))` runs the neighbour pass.
-template <typename ParallelFor>
-VisibleRegion MakeVisibleRegion(
-  const HexahedralFaces& faces, const std::vector<unsigned char>& visible, ParallelFor&& parallelFor)
+/// The region of the cells flagged `visible` (one byte per cell, non-zero: visible).
+inline VisibleRegion MakeVisibleRegion(const HexahedralFaces& faces, const std::vector<unsigned char>& visible)
 {
   VisibleRegion region;
-  const std::size_t cellCount = visible.size();
-  region.Neighbours.assign(8 * cellCount, -1);
-  parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t c = begin; c < end; ++c)
-      for (int f = 0; visible[c] && f < 6; ++f)
-      {
-        const std::int32_t neighbour = faces.Neighbours[8 * c + f];
-        if (neighbour >= 0 && visible[neighbour / 8])
-          region.Neighbours[8 * c + f] = neighbour;
-      }
-  });
   // The mesh's boundary faces of visible cells, then the faces the region cut (a face a visible
   // cell shares with an invisible one).
   for (std::size_t i = 0; i + 3 < faces.Boundary.size(); i += 4)
     if (visible[faces.Boundary[i]])
       region.Boundary.insert(region.Boundary.end(), faces.Boundary.begin() + i, faces.Boundary.begin() + i + 4);
-  for (std::size_t c = 0; c < cellCount; ++c)
+  for (std::size_t c = 0; c < visible.size(); ++c)
   {
     if (!visible[c])
       continue;
     ++region.VisibleCells;
     for (int f = 0; f < 6; ++f)
-      if (faces.Neighbours[8 * c + f] >= 0 && region.Neighbours[8 * c + f] < 0)
+    {
+      const std::int32_t neighbour = faces.Neighbours[8 * c + f];
+      if (neighbour >= 0 && !visible[neighbour / 8])
         region.Boundary.insert(region.Boundary.end(), { static_cast<std::int32_t>(c), f, 0, 0 });
+    }
   }
   return region;
 }

@@ -37,6 +37,12 @@ vtkStandardNewMacro(vtkHexahedralRayCastMapper);
 
 namespace
 {
+/// With skipping, how many cells outside the visible region a ray walks through before it leaves the
+/// ray to the next peel's entry faces. Not zero: where a ray only grazes an edge or a corner of an
+/// invisible cell between visible ones, the region's faces fold, and rasterising the fold's edge may
+/// round either way, so no entry face would pick the ray up again.
+constexpr int InvisibleCellsWalked = 4;
+
 void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
 {
   const glm::mat4 single(m);
@@ -65,15 +71,14 @@ private:
   glm::dvec3 Eye{ 0.0 };
 };
 
-/// The faces the walk takes: the whole mesh's, or with skipping the visible region's
-/// (uvVisibleRegion.h), whose entry faces are the front of the visible matter and whose boundary
-/// stops a ray where it leaves that matter. Cell ranges are computed once per mesh (and isosurface
-/// kind); the region is rebuilt, and its version bumped for the GPU copies, only when the set of
-/// visible cells changes.
-class WalkedFaces
+/// The faces where rays enter: the whole mesh's boundary, or with skipping the visible region's
+/// (uvVisibleRegion.h), the front of the visible matter. Cell ranges are computed once per mesh
+/// (and isosurface kind); the region is rebuilt, and its version bumped for the GPU copy, only when
+/// the set of visible cells changes.
+class EntryFaces
 {
 public:
-  std::uint64_t Version = 0; ///< of Neighbours() and Boundary(), for the GPU copies
+  std::uint64_t Version = 0; ///< of Boundary(), for the GPU copy
   int RegionBuilds = 0;
 
   /// True when the faces changed.
@@ -104,7 +109,10 @@ public:
       this->Isovalues = std::move(isovalues);
       if (visible != this->Visible)
       {
-        this->Region = uv::MakeVisibleRegion(mesh.Faces, visible, uvvtk::ParallelFor);
+        this->Region = uv::MakeVisibleRegion(mesh.Faces, visible);
+        this->VisibleBits.assign((visible.size() + 31) / 32, 0u);
+        for (std::size_t cell = 0; cell < visible.size(); ++cell)
+          this->VisibleBits[cell / 32] |= visible[cell] ? 1u << (cell % 32) : 0u;
         this->Visible = std::move(visible);
         ++this->RegionBuilds;
         changed = true;
@@ -113,6 +121,7 @@ public:
     else if (!skip && !this->Visible.empty())
     {
       this->Visible.clear();
+      this->VisibleBits.clear();
       this->Region = uv::VisibleRegion();
     }
     this->Skip = skip;
@@ -122,15 +131,13 @@ public:
     return changed;
   }
 
-  const std::vector<std::int32_t>& Neighbours() const
-  {
-    return this->Skip ? this->Region.Neighbours : this->Mesh->Faces.Neighbours;
-  }
   const std::vector<std::int32_t>& Boundary() const
   {
     return this->Skip ? this->Region.Boundary : this->Mesh->Faces.Boundary;
   }
   std::size_t BoundaryCount() const { return this->Boundary().size() / 4; }
+  /// With skipping, the region's cells, one bit each (32 to a word), for the GPU copy.
+  const std::vector<std::uint32_t>& VisibleCellBits() const { return this->VisibleBits; }
   bool Skipping() const { return this->Skip; }
   /// Whether rays may start in `cell` (the eye's): with skipping, only in a visible one.
   bool Walks(int cell) const { return cell >= 0 && (!this->Skip || this->Visible[cell]); }
@@ -145,6 +152,7 @@ private:
   std::vector<std::pair<double, double>> ZeroSet; // what Visible was classified with
   std::vector<double> Isovalues;
   std::vector<unsigned char> Visible;
+  std::vector<std::uint32_t> VisibleBits;
   uv::VisibleRegion Region;
 };
 
@@ -153,13 +161,14 @@ struct GpuResources
 {
   vtkUnstructuredVolumeBufferTexture CellPoints, Points, Neighbours, BoundaryFaces;
   vtkUnstructuredVolumeBufferTexture CellScalars; // cell data only
+  vtkUnstructuredVolumeBufferTexture VisibleCells; // skipping only
   vtkUnstructuredVolumeTransferFunctionTexture TransferFunction;
   vtkUnstructuredVolumeTexture Isosurfaces;
 
   void Release()
   {
     for (vtkUnstructuredVolumeBufferTexture* texture : { &this->CellPoints, &this->Points, &this->Neighbours,
-           &this->BoundaryFaces, &this->CellScalars })
+           &this->BoundaryFaces, &this->CellScalars, &this->VisibleCells })
       texture->Release();
     this->TransferFunction.Release();
     this->Isosurfaces.Release();
@@ -251,8 +260,34 @@ struct PassFrame
     return pass;
   }
 
+  /// The eye rays (uvHexahedronLib.glsl's EyeRay): near-plane point and direction at ndc (0, 0)
+  /// and their change per unit of ndc x and y, in double, then rounded.
   void SetRayUniforms(vtkShaderProgram* program) const
   {
+    const auto unproject = [this](double x, double y, double z) {
+      const glm::dvec4 p = this->ClipToModel * glm::dvec4(x, y, z, 1.0);
+      return glm::dvec3(p) / p.w;
+    };
+    float nearPlane[3][3], rayDirection[3][3];
+    const double ndc[3][2] = { { 0.0, 0.0 }, { 1.0, 0.0 }, { 0.0, 1.0 } };
+    const glm::dvec3 near0 = unproject(0.0, 0.0, -1.0), far0 = unproject(0.0, 0.0, 1.0);
+    for (int k = 0; k < 3; ++k)
+    {
+      glm::dvec3 nearPoint = unproject(ndc[k][0], ndc[k][1], -1.0);
+      glm::dvec3 direction = unproject(ndc[k][0], ndc[k][1], 1.0) - nearPoint;
+      if (k > 0)
+      {
+        nearPoint -= near0;
+        direction -= far0 - near0;
+      }
+      for (int i = 0; i < 3; ++i)
+      {
+        nearPlane[k][i] = static_cast<float>(nearPoint[i]);
+        rayDirection[k][i] = static_cast<float>(direction[i]);
+      }
+    }
+    program->SetUniform3fv("nearPlane", 3, nearPlane);
+    program->SetUniform3fv("rayDirection", 3, rayDirection);
     SetMatrix(program, "clipToModel", this->ClipToModel);
     program->SetUniform2f("viewportSize", this->Viewport);
   }
@@ -331,6 +366,8 @@ struct TraversalSettings
   int EyeCell = -1;     // the cell holding the eye on the first peel, or -1
   int IsosurfaceCount = 0;
   bool CellScalars = false;    // the mesh's scalar is per cell (uploaded to GpuResources::CellScalars)
+  bool SkipInvisibleCells = false; // rays enter and leave at the visible region (GpuResources::VisibleCells)
+  bool LastPeel = false;           // no peel is left to pick a ray up
 };
 
 /// Per peel, full screen: walks each ray from its entry through the cells, integrating them, and
@@ -346,9 +383,9 @@ public:
     images.Framebuffer->AddColorAttachment(0, into);
     images.Framebuffer->AddColorAttachment(1, images.Exit);
     images.Framebuffer->ActivateDrawBuffers(2);
-    const bool cellScalars = settings.CellScalars;
-    vtkShaderProgram* program =
-      this->Ready(pass.Frame->Window, { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars });
+    const bool cellScalars = settings.CellScalars, skip = settings.SkipInvisibleCells;
+    vtkShaderProgram* program = this->Ready(
+      pass.Frame->Window, { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip });
     if (program)
     {
       images.Entry->Activate();
@@ -363,6 +400,8 @@ public:
       gpu.Points.Bind(program, "pointData");
       if (cellScalars)
         gpu.CellScalars.Bind(program, "cellScalars");
+      if (skip)
+        gpu.VisibleCells.Bind(program, "visibleCells");
       gpu.TransferFunction.Bind(program);
       gpu.Isosurfaces.Bind(program, "isosurfaces");
       SetUniforms(program, pass, settings);
@@ -376,6 +415,8 @@ public:
         texture->Unbind();
       if (cellScalars)
         gpu.CellScalars.Unbind();
+      if (skip)
+        gpu.VisibleCells.Unbind();
       gpu.TransferFunction.Unbind();
       gpu.Isosurfaces.Unbind();
     }
@@ -414,6 +455,9 @@ private:
     program->SetUniformi("exactEnds", settings.ExactEnds ? 1 : 0);
     program->SetUniformf("opacityThreshold", settings.OpacityThreshold);
     program->SetUniformi("maximumCells", settings.MaximumCells);
+    // The last peel walks on through invisible runs: no peel is left to pick the ray up.
+    if (settings.SkipInvisibleCells)
+      program->SetUniformi("invisibleCellLimit", settings.LastPeel ? settings.MaximumCells : InvisibleCellsWalked);
     program->SetUniformi("eyeCell", settings.EyeCell);
     const float eye[3] = { static_cast<float>(pass.EyeModel.x), static_cast<float>(pass.EyeModel.y),
       static_cast<float>(pass.EyeModel.z) };
@@ -429,7 +473,7 @@ public:
   uvvtk::HexahedralMesh Mesh;
   uvvtk::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
-  WalkedFaces Walked;
+  EntryFaces Entries;
   EyeCell Eye;
   int EyeCellOfFrame = -1; // perspective eye inside a walked cell, or -1
   bool WarnedNaN = false;
@@ -452,13 +496,14 @@ public:
     for (int peel = 0; peel < maximumPeels; ++peel)
     {
       bool entered = false;
-      if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Walked.BoundaryCount(), peel == 0, entered))
+      if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Entries.BoundaryCount(), peel == 0, entered))
         return false;
       const bool fromEye = peel == 0 && this->EyeCellOfFrame >= 0;
       if (!entered && !fromEye)
         break; // no ray enters the mesh again
       ++this->Peels;
       settings.EyeCell = fromEye ? this->EyeCellOfFrame : -1;
+      settings.LastPeel = peel == maximumPeels - 1;
       if (!this->Traverse.Draw(pass, this->Images, this->Gpu, settings, target.GetSceneDepth(), accumulation[last],
             accumulation[1 - last]))
         return false;
@@ -474,9 +519,6 @@ vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
   : Impl(new Internals)
 {
   this->OpacityThreshold = 0.99;
-  // Off until the region walk is exact everywhere: it loses part of some rays at the region's edges
-  // on voxel data (the benchmark's neghip scene), where the full walk does not.
-  this->SkipInvisibleCells = false;
 }
 
 vtkHexahedralRayCastMapper::~vtkHexahedralRayCastMapper() = default;
@@ -487,15 +529,15 @@ vtkIdType vtkHexahedralRayCastMapper::GetNumberOfCells()
 }
 vtkIdType vtkHexahedralRayCastMapper::GetNumberOfVisibleCells()
 {
-  return static_cast<vtkIdType>(this->Impl->Walked.VisibleCells());
+  return static_cast<vtkIdType>(this->Impl->Entries.VisibleCells());
 }
 vtkIdType vtkHexahedralRayCastMapper::GetNumberOfEntryFaces()
 {
-  return static_cast<vtkIdType>(this->Impl->Walked.BoundaryCount());
+  return static_cast<vtkIdType>(this->Impl->Entries.BoundaryCount());
 }
 int vtkHexahedralRayCastMapper::GetNumberOfVisibleRegionBuilds()
 {
-  return this->Impl->Walked.RegionBuilds;
+  return this->Impl->Entries.RegionBuilds;
 }
 vtkIdType vtkHexahedralRayCastMapper::GetNumberOfBoundaryFaces()
 {
@@ -608,11 +650,11 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
   // A cell scalar's isosurfaces are faces between cells (the walk draws them as it crosses); the
   // volume is unlit anyway (the shader lights only isosurfaces).
   this->WarnCellScalarLimits(scalar, false, true);
-  impl.Walked.Update(impl.Mesh, this->SkipInvisibleCells, impl.TransferFunction.Nodes, impl.DrawnIsosurfaces);
+  impl.Entries.Update(impl.Mesh, this->SkipInvisibleCells, impl.TransferFunction.Nodes, impl.DrawnIsosurfaces);
   const glm::dvec3& center = impl.Mesh.Points.Center;
   const int eyeCell = frame.Parallel ? -1 : impl.Eye.Update(impl.Mesh, frame.EyeInModel(center));
   // An eye in an invisible cell: its rays start at the visible region's first entry face instead.
-  impl.EyeCellOfFrame = impl.Walked.Walks(eyeCell) ? eyeCell : -1;
+  impl.EyeCellOfFrame = impl.Entries.Walks(eyeCell) ? eyeCell : -1;
   return true;
 }
 
@@ -623,8 +665,10 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
   const uvvtk::HexahedralMesh& mesh = impl.Mesh;
   impl.Gpu.CellPoints.Sync(window, mesh.CellPoints, 4, mesh.Version);
   impl.Gpu.Points.Sync(window, mesh.Points.Values, 4, mesh.Version);
-  impl.Gpu.Neighbours.Sync(window, impl.Walked.Neighbours(), 4, impl.Walked.Version);
-  impl.Gpu.BoundaryFaces.Sync(window, impl.Walked.Boundary(), 4, impl.Walked.Version);
+  impl.Gpu.Neighbours.Sync(window, mesh.Faces.Neighbours, 4, mesh.Version);
+  impl.Gpu.BoundaryFaces.Sync(window, impl.Entries.Boundary(), 4, impl.Entries.Version);
+  if (impl.Entries.Skipping())
+    impl.Gpu.VisibleCells.Sync(window, impl.Entries.VisibleCellBits(), 1, impl.Entries.Version);
   if (!mesh.CellScalars.empty())
     impl.Gpu.CellScalars.Sync(window, mesh.CellScalars, 1, mesh.Version);
   impl.Gpu.TransferFunction.Sync(window, impl.TransferFunction.Nodes);
@@ -644,6 +688,7 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.ExactEnds = this->ExactSegmentEnds;
   settings.OpacityThreshold = static_cast<float>(this->OpacityThreshold);
   settings.MaximumCells = static_cast<int>(std::min<std::size_t>(impl.Mesh.CellCount() + 8, 1 << 20));
+  settings.SkipInvisibleCells = impl.Entries.Skipping();
   settings.IsosurfaceCount = static_cast<int>(impl.DrawnIsosurfaces.size());
   settings.CellScalars = !impl.Mesh.CellScalars.empty();
 

@@ -26,12 +26,11 @@
  * renderer's first light with the exact gradient of the cell's trilinear field (no gradient array).
  *
  * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.99); with
- * SkipInvisibleCells (default off here: on voxel data such as neghip its region walk loses part of
- * some rays at the region's edges, and the many peels it needs there cost more than they save) the
- * walk takes only the cells whose scalar range the transfer function
- * makes visible or that hold an isovalue (after the iSBVR paper's culling surfaces, uvVisibleRegion.h):
- * rays enter at the front of that region, end at its back, leap over invisible runs inside the mesh
- * by peeling on to its next entry face, and rays that meet none cost only the entry pass. Without
+ * SkipInvisibleCells (default) rays enter only where the cells the transfer function makes visible
+ * (or that hold an isovalue) start (after the iSBVR paper's culling surfaces, uvVisibleRegion.h): at
+ * the front of that region; past its back, and over an invisible run inside the mesh, they walk a few
+ * invisible cells and leave the rest to the next peel's entry faces. Rays that meet the region nowhere
+ * cost only the entry pass. The image is the full walk's. Without
  * skipping a transparent cell costs one range test, no integration.
  *
  * The traversal reads transfer-function nodes from uniforms: a function with more than

@@ -30,10 +30,12 @@ struct vtkHexahedralRayCastPrograms
   {
     bool NodeTexture = false; // more transfer-function nodes than fit in uniforms
     bool CellScalars = false; // one scalar per cell (cell data), constant inside it
+    bool SkipInvisibleCells = false; // rays leave the visible region to the next peel
 
     bool operator==(const TraversalOptions& other) const
     {
-      return this->NodeTexture == other.NodeTexture && this->CellScalars == other.CellScalars;
+      return this->NodeTexture == other.NodeTexture && this->CellScalars == other.CellScalars &&
+        this->SkipInvisibleCells == other.SkipInvisibleCells;
     }
   };
 
@@ -53,6 +55,8 @@ struct vtkHexahedralRayCastPrograms
     std::string defines = uvgl::TransferFunctionDefines(options.NodeTexture);
     if (options.CellScalars)
       defines += "#define UV_CELL_SCALARS\n";
+    if (options.SkipInvisibleCells)
+      defines += "#define UV_SKIP_INVISIBLE_CELLS\n";
     sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
       { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
         { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
@@ -64,7 +68,8 @@ struct vtkHexahedralRayCastPrograms
     std::vector<TraversalOptions> all;
     for (bool nodeTexture : { false, true })
       for (bool cellScalars : { false, true })
-        all.push_back({ nodeTexture, cellScalars });
+        for (bool skip : { false, true })
+          all.push_back({ nodeTexture, cellScalars, skip });
     return all;
   }
 };

@@ -92,7 +92,7 @@ public:
   /// at the visible region's front, leaving at its back and leaping over invisible runs between
   /// (uvVisibleRegion.h). The tetrahedra mapper also composites front to back then, so that pixels
   /// past OpacityThreshold stop being shaded (its image changes by at most 1 - OpacityThreshold;
-  /// the others' not at all). Default on, but for the hexahedral ray caster (see its description).
+  /// the others' not at all). Default on; off is for measuring what it saves.
   vtkSetMacro(SkipInvisibleCells, bool);
   vtkGetMacro(SkipInvisibleCells, bool);
   vtkBooleanMacro(SkipInvisibleCells, bool);

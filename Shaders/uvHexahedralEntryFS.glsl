@@ -7,7 +7,8 @@ in vec3 modelPosition;
 flat in int boundaryFace;
 flat in vec3 outwardNormal;
 
-uniform mat4 clipToModel;
+uniform vec3 nearPlane[3];    // the rays (EyeRay)
+uniform vec3 rayDirection[3];
 uniform mat4 modelToClip;
 uniform isamplerBuffer boundaryFaces;
 uniform vec2 viewportSize;
@@ -74,7 +75,7 @@ void main()
   if (firstPeel == 0 && (!(exit.r < 3.0e38) || (exit.g > 1.5 && boundaryFace == int(exit.b))))
     discard;
   vec3 origin, direction;
-  EyeRay(PixelNdc(gl_FragCoord.xy, viewportSize), clipToModel, origin, direction);
+  EyeRay(PixelNdc(gl_FragCoord.xy, viewportSize), nearPlane, rayDirection, origin, direction);
   vec3 a, b, c, d;
   int corners = BoundaryPatch(a, b, c, d);
   float wall = exit.g > 0.5 ? 1e-5 * (1.0 + abs(exit.r)) : 0.0;

@@ -23,13 +23,20 @@ uniform isamplerBuffer cellNeighbours; // per cell 6 values (2 texels): neighbou
 #ifdef UV_CELL_SCALARS
 uniform samplerBuffer cellScalars;      // cell data: one normalised value per cell, constant in it
 #endif
-uniform mat4 clipToModel;
+uniform mat4 clipToModel;       // for the opaque geometry's depth
+uniform vec3 nearPlane[3];      // the rays (EyeRay)
+uniform vec3 rayDirection[3];
 uniform vec2 viewportSize;
 uniform int integrationMode;    // 0 accurate, 1 fast, 2 fixed steps
 uniform int fixedSteps;
 uniform int exactEnds;           // 1: segment ends by the isoparametric inverse (curved cells)
 uniform float opacityThreshold; // early ray termination
 uniform int maximumCells;       // bound on the walk (also guards against cycles)
+#ifdef UV_SKIP_INVISIBLE_CELLS
+uniform usamplerBuffer visibleCells; // the visible region's cells (whose entry faces are drawn), a bit each
+uniform int invisibleCellLimit; // cells outside it in a row after which the walk leaves the ray to
+                                // the next peel's entry faces
+#endif
 uniform int eyeCell;            // first peel, perspective: the cell holding the eye, or -1
 uniform vec3 eyeModel;
 uniform sampler2D isosurfaces;  // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
@@ -769,14 +776,29 @@ bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ah
 }
 
 /// Walks the ray from parameter t in `cell` (entered through `enterFace`, -1: none) cell by cell,
-/// integrating each, until it is opaque enough, meets opaque geometry (opaqueT) or leaves the mesh.
-/// Returns where the next peel should pick the ray up (noExit: nowhere).
+/// integrating each, until it is opaque enough, meets opaque geometry (opaqueT), leaves the mesh,
+/// or, with skipping, has crossed more than invisibleCellLimit cells outside the visible region in a
+/// row (the next peel's entry faces pick it up where the region starts again). Returns where the
+/// next peel should pick the ray up (noExit: nowhere).
 float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, float t)
 {
   float exitParameter = noExit;
+  int invisibleRun = 0; // cells outside the visible region in a row
   for (int step = 0; step < maximumCells; ++step)
   {
     LoadCell(cell);
+#ifdef UV_SKIP_INVISIBLE_CELLS
+    // Region membership, not CellVisible: the next peel enters where the region does, and its
+    // cells include those beside a cell-data isosurface.
+    bool inRegion = ((texelFetch(visibleCells, cell / 32).r >> uint(cell % 32)) & 1u) != 0u;
+    invisibleRun = inRegion ? 0 : invisibleRun + 1;
+    if (invisibleRun > invisibleCellLimit)
+    {
+      exitParameter = t;
+      stopKind = LEFT_THROUGH_BOUNDARY;
+      break;
+    }
+#endif
     float exitT;
     int exitFace = FindExit(origin, direction, t, enterFace, exitT);
     if (exitFace < 0)
@@ -824,7 +846,7 @@ float CastRay(ivec2 pixel, vec4 start, bool fromEye)
 {
   vec2 ndc = PixelNdc(gl_FragCoord.xy, viewportSize);
   vec3 origin, direction;
-  EyeRay(ndc, clipToModel, origin, direction);
+  EyeRay(ndc, nearPlane, rayDirection, origin, direction);
   // Opaque geometry ends the ray.
   float depth = texelFetch(opaqueDepth, pixel, 0).r;
   vec4 opaque = clipToModel * vec4(ndc, 2.0 * depth - 1.0, 1.0);

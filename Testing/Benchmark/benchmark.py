@@ -85,9 +85,9 @@ MAPPERS = [
     ("UV HexRayCast Accurate, no early stop", lambda: configured(vtkHexahedralRayCastMapper, OpacityThreshold=1.0),
      "hexahedra"),
     # Against the default's SkipInvisibleCells: what skipping saves; skipping_table() pairs each
-    # "<mapper>, no skipping" or "<mapper>, skipping" with "<mapper>" (the hexahedral default is off).
-    ("UV HexRayCast Accurate, skipping", lambda: configured(vtkHexahedralRayCastMapper, SkipInvisibleCells=True),
-     "hexahedra"),
+    # "<mapper>, no skipping" (or "<mapper>, skipping", for a mapper whose default is off) with "<mapper>".
+    ("UV HexRayCast Accurate, no skipping",
+     lambda: configured(vtkHexahedralRayCastMapper, SkipInvisibleCells=False), "hexahedra"),
     ("UV PreIntegratedTetrahedra, no skipping",
      lambda: configured(vtkPreIntegratedTetrahedraMapper, SkipInvisibleCells=False), "tets"),
     ("UV BarycentricShells 128, no skipping",

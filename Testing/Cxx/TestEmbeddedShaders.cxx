@@ -104,11 +104,11 @@ TEST_F(EmbeddedShaders, EveryHexahedralRayCastProgramLinks)
 {
   this->ExpectLinks(vtkHexahedralRayCastPrograms::Entry(), "hexahedral entry program");
   const auto all = vtkHexahedralRayCastPrograms::AllTraversalOptions();
-  EXPECT_EQ(all.size(), 4u);
+  EXPECT_EQ(all.size(), 8u);
   for (const auto& options : all)
     this->ExpectLinks(vtkHexahedralRayCastPrograms::Traversal(options),
       std::string("hexahedral traversal program") + (options.NodeTexture ? ", node texture" : "") +
-        (options.CellScalars ? ", cell scalars" : ""));
+        (options.CellScalars ? ", cell scalars" : "") + (options.SkipInvisibleCells ? ", skipping" : ""));
 }
 
 TEST_F(EmbeddedShaders, CompositePassCopiesAFloatImage)

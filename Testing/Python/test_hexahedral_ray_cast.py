@@ -10,6 +10,7 @@ import shared_data  # noqa: E402
 import uvrender  # noqa: E402
 from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic_hexahedra, as_polyhedra,  # noqa: E402
                       camera_for, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
+                      largest_difference,
                       load_shared, plane_scene_setup, property_from_nodes, reference, rmse, thin_shell_property,
                       transparent_property)
 
@@ -287,30 +288,27 @@ def sparse_property(low, high, unit, visible_from=0.55):
 
 
 class SkippingTests(SceneTestCase):
-    """SkipInvisibleCells (off by default) walks only the cells the transfer function leaves visible,
-    entering at that region's front and peeling over invisible runs: the image is the full walk's
-    within float rounding (the walk's sum is cut where it leaves the region), the region is rebuilt
-    only when an edit changes which cells are visible, and the eye may sit in an invisible cell.
-    Known limit: a ray passing within rounding of an edge of the region can be lost where the full
-    walk relocates it through the invisible neighbour (measured: one pixel of 9216, the eye inside a
-    regular grid); OFF_PIXELS bounds how many pixels may differ by more than BOUND."""
+    """SkipInvisibleCells walks only the cells the transfer function leaves visible, entering at that
+    region's front and peeling over invisible runs: the image is the full walk's within float
+    rounding (the walk's sum is cut where it leaves the region), on every pixel, the region is
+    rebuilt only when an edit changes which cells are visible, and the eye may sit in an invisible
+    cell."""
 
-    BOUND = 2e-5  # RGBA difference from the full walk
-    OFF_PIXELS = 2
+    BOUND = 2e-5  # RGBA difference from the full walk, on every pixel
 
-    def compare(self, mesh, prop, camera, size=96, isovalues=()):
+    def compare(self, mesh, prop, camera, size=96, isovalues=(), bound=BOUND, **settings):
         images = []
         for skip in (False, True):
-            scene = HexScene(mesh, prop, camera, size, SkipInvisibleCells=skip)
+            scene = HexScene(mesh, prop, camera, size, SkipInvisibleCells=skip, **settings)
             for value in isovalues:
                 scene.mapper.AddIsosurface(value, 1.0, 0.9, 0.3, 0.6)
             images.append(copy_image(scene.render()))
             self.assertEqual(scene.events.errors, 0)
         full, skipped = (image.GetPointData().GetScalars() for image in images)
         self.assertGreater(full.GetRange(3)[1], 0.05)  # something is drawn
-        off = sum(1 for p in range(full.GetNumberOfTuples())
-                  if max(abs(a - b) for a, b in zip(full.GetTuple4(p), skipped.GetTuple4(p))) > self.BOUND)
-        self.assertLessEqual(off, self.OFF_PIXELS)
+        off = [p for p in range(full.GetNumberOfTuples())
+               if max(abs(a - b) for a, b in zip(full.GetTuple4(p), skipped.GetTuple4(p))) > bound]
+        self.assertEqual(off, [])
         return scene.mapper
 
     def test_sparse_transfer_function_on_a_twisted_grid(self):
@@ -318,6 +316,25 @@ class SkippingTests(SceneTestCase):
         mapper = self.compare(mesh, six_spikes(0.05), camera_for(mesh))
         self.assertLess(mapper.GetNumberOfVisibleCells(), mapper.GetNumberOfCells())
         self.assertGreater(mapper.GetNumberOfPeels(), 1)  # rays leapt over invisible runs
+
+    def test_the_last_peel_walks_on_through_invisible_runs(self):
+        # Columns of visible matter across a convex grid: most rays cross several, each a peel with
+        # skipping (three here), one without; fewer peels allowed must still give the whole image.
+        mesh = analytic_hexahedra(24)
+        points, bounds = mesh.GetPoints(), mesh.GetBounds()
+        columns = vtkDoubleArray()
+        columns.SetName("columns")
+        for i in range(points.GetNumberOfPoints()):
+            x, y, _ = points.GetPoint(i)
+            u, v = (x - bounds[0]) / (bounds[1] - bounds[0]), (y - bounds[2]) / (bounds[3] - bounds[2])
+            columns.InsertNextValue(math.cos(4 * math.pi * u) * math.cos(4 * math.pi * v))
+        mesh.GetPointData().SetScalars(columns)
+        low, high = columns.GetRange()
+        for peels in (1, 2):
+            with self.subTest(peels=peels):
+                mapper = self.compare(mesh, sparse_property(low, high, 0.05, 0.8), camera_for(mesh),
+                                      MaximumPeels=peels)
+                self.assertEqual(mapper.GetNumberOfPeels(), peels)
 
     def test_eye_in_an_invisible_cell(self):
         mesh = analytic_hexahedra(10)
@@ -350,13 +367,28 @@ class SkippingTests(SceneTestCase):
             with self.subTest(name):
                 self.compare(mesh, sparse_property(low, high, 0.03 * mesh.GetLength()), camera_for(mesh))
 
+    def test_rays_grazing_invisible_voxels_between_visible_ones(self):
+        # neghip's voxels under a ramp: its visible region folds along edges of invisible voxels, where
+        # a ray grazing such an edge leaves the region without crossing an entry face the rasteriser
+        # gives it; the walk must carry it on through the invisible voxel. Where a ray grazes an edge
+        # of four voxels, the walk and the next peel may take it through different ones for a sliver
+        # within the faces' slack: a looser bound.
+        image = load_shared(self, shared_data.neghip_image)
+        low, high = image.GetPointData().GetScalars().GetRange()
+        mesh = shared_data.image_as_voxels(image)
+        prop = property_from_nodes(((low, 0.0), (low + 0.2 * (high - low), 0.02), (high, 0.6)),
+                                   ((low, (0.2, 0.3, 0.8)), (high, (0.7, 0.1, 0.1))), 2.0)
+        for azimuth in (0.0, 37.0, 74.0, 111.0):
+            with self.subTest(azimuth=azimuth):
+                mapper = self.compare(mesh, prop, camera_for(mesh, azimuth=azimuth), size=128, bound=1e-4)
+        self.assertLess(mapper.GetNumberOfVisibleCells(), mapper.GetNumberOfCells())
+
     def test_region_rebuilt_only_when_visibility_changes(self):
         mesh = analytic_hexahedra(6)
         low, high = mesh.GetPointData().GetScalars().GetRange()
         prop = sparse_property(low, high, 0.05)
         scene = HexScene(mesh, prop, camera_for(mesh), 48)
-        self.assertFalse(scene.mapper.GetSkipInvisibleCells())  # the hexahedral mapper's default
-        scene.mapper.SkipInvisibleCellsOn()
+        self.assertTrue(scene.mapper.GetSkipInvisibleCells())  # the default
         scene.render()
         self.assertEqual(scene.mapper.GetNumberOfVisibleRegionBuilds(), 1)
         visible = scene.mapper.GetNumberOfVisibleCells()
@@ -463,6 +495,24 @@ class StressTests(SceneTestCase):
             self.assertEqual(scene.events.errors, 0)
             self.assertTrue(finite_image(image))
             self.assertLess(rmse(image, reference(mesh, prop, camera, 64))[0], 5e-3)
+
+    def test_far_plane_far_beyond_the_near_plane(self):
+        # The rays must not come from unprojecting through a float matrix: with the far plane 1e6
+        # near distances away its depth rows lose the direction, and rays miss the shared edges of
+        # the grid's faces (lost beyond them). The image is the one with a tight clipping range, within
+        # what rays starting at other points round to where they graze edges.
+        mesh = analytic_hexahedra(24)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        length = mesh.GetLength()
+        images = []
+        for near, far in ((1e-5 * length, 10 * length), (length, 4 * length)):
+            camera = camera_for(mesh, azimuth=37.0)
+            camera.SetClippingRange(near, far)
+            scene = HexScene(mesh, prop, camera, 96)
+            scalars = scene.render().GetPointData().GetScalars()
+            images.append([scalars.GetTuple4(p) for p in range(scalars.GetNumberOfTuples())])
+            self.assertEqual(scene.events.errors, 0)
+        self.assertLess(largest_difference(*images), 1e-3)
 
     def test_tangled_hexahedron_is_told_and_rendered_finite(self):
         mesh = single_hexahedron([0.1, 0.9, 0.4, 0.6, 0.8, 0.2, 1.0, 0.3])
