@@ -19,7 +19,7 @@ uv_representation_entry(
   PROXY PreIntegratedTetrahedraRepresentation
   MENU "Volume (Pre-integrated Tetrahedra)"
   GROUP "Pre-integrated Tetrahedra"
-  PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells OpacityThreshold ProjectionRoute
+  PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance OpacityThreshold ProjectionRoute
   UNSHARED OpacityThreshold TetrahedraOpacityThreshold)
 
 uv_representation_entry(
@@ -27,7 +27,7 @@ uv_representation_entry(
   MENU "Volume (Barycentric Shells)"
   GROUP "Barycentric Shells"
   PROPERTIES RenderMode SampleDistance AutomaticSamplesAcross Isovalues IsosurfaceOpacity SkipInvisibleCells
-    SlicesPerShell OpacityThreshold IsosurfaceLayers SegmentIntegration ProjectionRoute GradientMode
+    TransferFunctionTolerance SlicesPerShell OpacityThreshold IsosurfaceLayers SegmentIntegration ProjectionRoute GradientMode
   # The shells stop at 0.999, the hexahedral rays at 0.99: one shared value would change one default.
   UNSHARED OpacityThreshold ShellOpacityThreshold)
 
@@ -35,7 +35,7 @@ uv_representation_entry(
   PROXY HexahedralRayCastRepresentation
   MENU "Volume (Hexahedral Ray Cast)"
   GROUP "Hexahedral Ray Cast"
-  PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity SkipInvisibleCells OpacityThreshold MaximumPeels
+  PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance OpacityThreshold MaximumPeels
     ExactSegmentEnds
   # Accurate / Fast / Fixed steps, not the tetrahedra's average scalar / partial pre-integration.
   UNSHARED IntegrationMode HexahedralIntegrationMode)

@@ -302,7 +302,9 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
     this->Now.ScalarOffset = range[0];
     this->Now.ScalarScale = range[1] > range[0] ? 1.0 / (range[1] - range[0]) : 1.0;
   }
-  this->TransferFunction.Update(frame.Property, this->Now.ScalarOffset, this->Now.ScalarScale);
+  this->TransferFunction.Update(
+    frame.Property, this->Now.ScalarOffset, this->Now.ScalarScale, self->GetTransferFunctionTolerance());
+  self->NumberOfTransferFunctionNodes = static_cast<int>(this->TransferFunction.Nodes.size());
   if (this->TransferFunction.Nodes.empty())
   {
     vtkErrorWithObjectMacro(self, "the volume property has no scalar opacity function");

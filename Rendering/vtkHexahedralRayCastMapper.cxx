@@ -621,11 +621,12 @@ bool vtkHexahedralRayCastMapper::UpdateTransferFunction(vtkVolumeProperty* prope
   const uv::ScalarNormalisation& normalisation = impl.Mesh.Points.Normalisation;
   // The traversal reads its nodes from uniforms only.
   if (impl.TransferFunction.Update(property, normalisation.Offset, normalisation.Scale,
-        static_cast<std::size_t>(uvgl::MaximumUniformNodes)) &&
+        this->TransferFunctionTolerance, static_cast<std::size_t>(uvgl::MaximumUniformNodes)) &&
     impl.TransferFunction.Resampled)
   {
     vtkWarningMacro("more than " << uvgl::MaximumUniformNodes << " transfer-function nodes: resampled to that many");
   }
+  this->NumberOfTransferFunctionNodes = static_cast<int>(impl.TransferFunction.Nodes.size());
   if (impl.TransferFunction.Nodes.empty())
   {
     vtkErrorMacro("the volume property has no scalar opacity function");

@@ -274,7 +274,9 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   // Transfer function and isosurfaces, normalised like the scalar (a cell scalar's are faces between
   // cells).
   const bool onCells = this->WarnCellScalarLimits(scalar, property->GetShade() != 0, true);
-  impl.TransferFunction.Update(property, impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale);
+  impl.TransferFunction.Update(
+    property, impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale, this->TransferFunctionTolerance);
+  this->NumberOfTransferFunctionNodes = static_cast<int>(impl.TransferFunction.Nodes.size());
   if (impl.TransferFunction.Nodes.empty())
   {
     vtkErrorMacro("the volume property has no scalar opacity function");

@@ -99,6 +99,18 @@ public:
   ///@}
 
   ///@{
+  /// Transfer-function nodes within this of the straight line between the nodes kept around them
+  /// are dropped before the mappers cut segments at nodes (uvTransferFunctionSimplification.h):
+  /// colour within it in each channel and extinction within it relatively, at every scalar, so a
+  /// segment's colour and opacity change by at most about twice it. A sampled colour map (256 nodes)
+  /// then costs what its curvature needs. Default 1e-3, under a display's 1/255; 0 keeps every node
+  /// (reference-grade images). GetNumberOfTransferFunctionNodes: the nodes the last frame used.
+  vtkSetClampMacro(TransferFunctionTolerance, double, 0.0, 0.1);
+  vtkGetMacro(TransferFunctionTolerance, double);
+  vtkGetMacro(NumberOfTransferFunctionNodes, int);
+  ///@}
+
+  ///@{
   /// Early ray termination: a pixel's ray stops once its accumulated opacity reaches this (1: never).
   /// The hexahedral caster stops each ray (default 0.99), the shells mask pixels between shells
   /// (default 0.999), the tetrahedra mapper between batches of its front-to-back order, with
@@ -144,6 +156,8 @@ protected:
   int ProjectionRoute = VERTEX_PULLING;
   bool SkipInvisibleCells = true;
   double OpacityThreshold = 1.0;
+  double TransferFunctionTolerance = 1e-3;
+  int NumberOfTransferFunctionNodes = 0; ///< set by the mapper when it rebuilds its nodes
 
 private:
   vtkUnstructuredVolumeMapper(const vtkUnstructuredVolumeMapper&) = delete;

@@ -4,6 +4,7 @@
 #define vtkUnstructuredVolumeTransferFunction_h
 
 #include "uvOpticalModel.h"
+#include "uvTransferFunctionSimplification.h"
 
 #include "vtkColorTransferFunction.h"
 #include "vtkPiecewiseFunction.h"
@@ -132,19 +133,25 @@ inline std::vector<uv::TransferFunction::Node> TransferFunctionNodes(
   return nodes;
 }
 
-/// TransferFunctionNodes, at most `maximum` (at least 2) of them, for a shader that reads nodes from
-/// uniforms only: curved functions get one piece per interval first; when that is still too many, the
-/// function is resampled at `maximum` evenly spaced scalars over its nodes' range and `resampled` set.
+/// TransferFunctionNodes with those dropped that lie within `tolerance` of the line between the
+/// nodes kept around them (uvTransferFunctionSimplification.h: colour absolutely, extinction
+/// relatively; 0 keeps every node), and at most `maximum` of them (0: any number; else at least 2)
+/// for a shader that reads nodes from uniforms only: curved functions get one piece per interval
+/// first; when that is still too many, the function is resampled at `maximum` evenly spaced scalars
+/// over its nodes' range and `resampled` set.
 inline std::vector<uv::TransferFunction::Node> TransferFunctionNodesAtMost(
-  vtkVolumeProperty* property, std::size_t maximum, bool& resampled)
+  vtkVolumeProperty* property, std::size_t maximum, double tolerance, bool& resampled)
 {
   resampled = false;
-  std::vector<uv::TransferFunction::Node> nodes = TransferFunctionNodes(property);
-  if (nodes.size() <= maximum)
+  const auto simplified = [tolerance](std::vector<uv::TransferFunction::Node> all) {
+    return tolerance > 0.0 ? uv::SimplifyTransferFunction(all, tolerance, tolerance) : all;
+  };
+  std::vector<uv::TransferFunction::Node> nodes = simplified(TransferFunctionNodes(property));
+  if (maximum == 0 || nodes.size() <= maximum)
   {
     return nodes;
   }
-  nodes = TransferFunctionNodes(property, 1);
+  nodes = simplified(TransferFunctionNodes(property, 1));
   if (nodes.size() <= maximum)
   {
     return nodes;
@@ -170,21 +177,21 @@ public:
   std::vector<uv::TransferFunction::Node> Nodes;
 
   /// True when the nodes were rebuilt (upload them again; isovalues normalised the same way too).
-  /// Nodes stays empty when the property has no opacity function. A `maximumNodes` other than 0
-  /// limits their number (TransferFunctionNodesAtMost; Resampled tells whether it resampled).
-  bool Update(vtkVolumeProperty* property, double offset, double scale, std::size_t maximumNodes = 0)
+  /// Nodes stays empty when the property has no opacity function. `tolerance` drops nodes within it
+  /// of their neighbours' line, a `maximumNodes` other than 0 limits their number
+  /// (TransferFunctionNodesAtMost; Resampled tells whether it resampled).
+  bool Update(vtkVolumeProperty* property, double offset, double scale, double tolerance, std::size_t maximumNodes = 0)
   {
     if (property->GetMTime() == this->Time && offset == this->Offset && scale == this->Scale &&
-      maximumNodes == this->MaximumNodes)
+      tolerance == this->Tolerance && maximumNodes == this->MaximumNodes)
       return false;
-    this->Resampled = false;
-    this->Nodes = maximumNodes > 0 ? TransferFunctionNodesAtMost(property, maximumNodes, this->Resampled)
-                                   : TransferFunctionNodes(property);
+    this->Nodes = TransferFunctionNodesAtMost(property, maximumNodes, tolerance, this->Resampled);
     for (auto& node : this->Nodes)
       node.Scalar = (node.Scalar - offset) * scale;
     this->Time = property->GetMTime();
     this->Offset = offset;
     this->Scale = scale;
+    this->Tolerance = tolerance;
     this->MaximumNodes = maximumNodes;
     return true;
   }
@@ -193,6 +200,7 @@ public:
 
 private:
   std::size_t MaximumNodes = 0;
+  double Tolerance = -1.0;
   vtkMTimeType Time = 0;
   double Offset = std::numeric_limits<double>::quiet_NaN(), Scale = std::numeric_limits<double>::quiet_NaN();
 };

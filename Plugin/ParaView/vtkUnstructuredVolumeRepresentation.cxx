@@ -77,6 +77,12 @@ void vtkUnstructuredVolumeRepresentation::SetSkipInvisibleCells(int skip)
   this->MarkModified();
 }
 
+void vtkUnstructuredVolumeRepresentation::SetTransferFunctionTolerance(double tolerance)
+{
+  this->PinnedMapper->SetTransferFunctionTolerance(tolerance);
+  this->MarkModified();
+}
+
 void vtkUnstructuredVolumeRepresentation::SetOpacityThreshold(double threshold)
 {
   this->PinnedMapper->SetOpacityThreshold(threshold);

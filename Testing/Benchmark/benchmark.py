@@ -58,7 +58,7 @@ import vtkmodules.vtkRenderingFreeType  # noqa: F401
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
-from fixtures import analytic, hex_dominant  # noqa: E402
+from fixtures import analytic, hex_dominant, sampled_color_map  # noqa: E402
 from shared_data import (SHARED, bluntfin, bucky_image, can, disk_out_ref, image_as_voxels, legacy,  # noqa: E402
                          neghip_image, openfoam_cavity_cells)
 REFERENCE_VERSION = "3"  # bump when the reference renderer's output changes (2: no lost cells, superposition; 3: rounding overlaps touch)
@@ -88,6 +88,14 @@ MAPPERS = [
     # "<mapper>, no skipping" (or "<mapper>, skipping", for a mapper whose default is off) with "<mapper>".
     ("UV HexRayCast Accurate, no skipping",
      lambda: configured(vtkHexahedralRayCastMapper, SkipInvisibleCells=False), "hexahedra"),
+    # Every transfer-function node kept (TransferFunctionTolerance 0): what dropping nodes saves.
+    ("UV PreIntegratedTetrahedra, every node",
+     lambda: configured(vtkPreIntegratedTetrahedraMapper, TransferFunctionTolerance=0.0), "tets"),
+    ("UV BarycentricShells 128, every node",
+     lambda: configured(vtkBarycentricShellMapper, AutomaticSamplesAcross=128, TransferFunctionTolerance=0.0), "tets"),
+    ("UV BarycentricCellProjection, every node",
+     lambda: configured(vtkBarycentricShellMapper, RenderModeToCellProjection=None, TransferFunctionTolerance=0.0),
+     "tets"),
     ("UV PreIntegratedTetrahedra, no skipping",
      lambda: configured(vtkPreIntegratedTetrahedraMapper, SkipInvisibleCells=False), "tets"),
     ("UV BarycentricShells 128, no skipping",
@@ -216,6 +224,8 @@ def scenes(quick):
     if quick:
         return found[:2]
     found.append(("wavelet_tets", wavelet_tets, "RTData", smooth_ramp, 0.05))
+    # A colour map sampled at 256 nodes, as ParaView's presets are (TransferFunctionTolerance).
+    found.append(("wavelet_tets_colormap256", wavelet_tets, "RTData", sampled_color_map, 0.05))
     # Dense and nearly opaque: most rays saturate well inside the mesh (early termination).
     found.append(("wavelet_tets_opaque", wavelet_tets, "RTData", smooth_ramp, 0.002))
     # Empty space: the same wavelet's hexahedra with only the top tenth of the range visible.

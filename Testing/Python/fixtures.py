@@ -189,6 +189,22 @@ def spike_property(low, high, unit):
         ((low, (0.1, 0.3, 0.9)), (centre, (1.0, 0.7, 0.1)), (high, (0.9, 0.1, 0.1))), unit)
 
 
+def sampled_color_map(low, high, count=256):
+    """(opacity nodes, colour nodes): a colour map sampled at `count` nodes, as ParaView's presets are
+    (a smooth curve through colour space), over an opacity ramp from a fifth of the range up."""
+    colors = []
+    for k in range(count):
+        u = k / (count - 1)
+        colors.append((low + u * (high - low), (0.27 + 0.7 * u * u, 0.5 + 0.4 * math.sin(3.0 * u),
+                                                0.33 + 0.3 * math.cos(5.0 * u))))
+    return [(low, 0.0), (low + 0.2 * (high - low), 0.0), (high, 0.7)], colors
+
+
+def sampled_color_map_property(low, high, unit, count=256):
+    """sampled_color_map as a vtkVolumeProperty."""
+    return property_from_nodes(*sampled_color_map(low, high, count), unit)
+
+
 def transparent_property(color=(0.9, 0.6, 0.2)):
     """A volume that shows nothing (isosurfaces only), unlit but for what a test sets."""
     opacity = vtkPiecewiseFunction()
