@@ -4,16 +4,14 @@
  *
  * A full-screen pass (uvBarycentricShellBlendFS.glsl) composites the shell's slices, and the
  * isosurface layers inside it, front to back under what nearer shells left (ONE_MINUS_DST_ALPHA,
- * ONE). Owns the fixed-length segment table (uvPreIntegration.h SegmentTable), rebuilt only when the
- * nodes or the sample distance it was built for change, compared exactly. (OpenGL layer of the
- * barycentric shell mapper; not wrapped.)
+ * ONE). Holds the GPU copy of the segment table (vtkBarycentricShellSegmentTable), uploaded when its
+ * version changes. (OpenGL layer of the barycentric shell mapper; not wrapped.)
  */
 #ifndef vtkBarycentricShellBlendPass_h
 #define vtkBarycentricShellBlendPass_h
 
-#include "uvOpticalModel.h"
-#include "uvPreIntegration.h"
 #include "vtkBarycentricShellPrograms.h"
+#include "vtkBarycentricShellSegmentTable.h"
 #include "vtkBarycentricShellSlicePass.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeTexture.h"
@@ -21,34 +19,22 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
-#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
+#include <cstdint>
 #include <vector>
 
 class vtkBarycentricShellBlendPass
 {
 public:
-  static constexpr int TableSize = 256; // texels per side of the segment table
-  int TableBuilds = 0;                  ///< since creation
-
-  /// The table of whole segments of `length` under `nodes`, unless it is the one on the GPU.
-  void SyncTable(vtkOpenGLRenderWindow* window, const std::vector<uv::TransferFunction::Node>& nodes, double length)
+  /// The table's texels, unless this version is the one on the GPU.
+  void SyncTable(vtkOpenGLRenderWindow* window, const vtkBarycentricShellSegmentTable& table)
   {
-    if (this->Table.IsCreatedFor(window) && length == this->TableLength && nodes == this->TableNodes)
+    if (this->Table.IsCreatedFor(window) && table.Version == this->TableVersion)
       return;
-    const std::vector<float> texels =
-      uv::SegmentTable(uv::TransferFunction(nodes), length, TableSize, [](int count, const auto& function) {
-        vtkSMPTools::For(0, count, 1, [&](vtkIdType begin, vtkIdType end) {
-          for (vtkIdType row = begin; row < end; ++row)
-            function(static_cast<int>(row));
-        });
-      });
-    this->Table.Sync(window, TableSize, TableSize, 4, texels, vtkUnstructuredVolumeTexture::Filter::Linear);
-    this->TableLength = length;
-    this->TableNodes = nodes;
-    ++this->TableBuilds;
+    this->Table.Sync(window, table.Size, table.Size, 4, table.Texels, vtkUnstructuredVolumeTexture::Filter::Linear);
+    this->TableVersion = table.Version;
   }
 
   /// The uniforms that hold for every shell (`program` bound, its integration uniforms and the
@@ -60,7 +46,7 @@ public:
     if (table)
     {
       this->Table.Bind(program, "segmentTable");
-      program->SetUniformf("segmentTableSize", static_cast<float>(TableSize));
+      program->SetUniformf("segmentTableSize", static_cast<float>(vtkBarycentricShellSegmentTable::Size));
     }
     this->TableBound = table;
   }
@@ -90,14 +76,12 @@ public:
   void Release()
   {
     this->Table.Release();
-    this->TableNodes.clear();
-    this->TableLength = 0.0;
+    this->TableVersion = 0;
   }
 
 private:
   vtkUnstructuredVolumeTexture Table;
-  std::vector<uv::TransferFunction::Node> TableNodes;
-  double TableLength = 0.0;
+  std::uint64_t TableVersion = 0;
   bool TableBound = false;
 };
 

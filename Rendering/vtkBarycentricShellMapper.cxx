@@ -11,6 +11,7 @@
 #include "uvPreIntegration.h"
 #include "uvShellBuckets.h"
 #include "vtkBarycentricShellBlendPass.h"
+#include "vtkBarycentricShellSegmentTable.h"
 #include "vtkBarycentricShellCellDrawer.h"
 #include "vtkBarycentricShellCellProjectionPass.h"
 #include "vtkBarycentricShellImageTexture.h"
@@ -60,7 +61,6 @@ namespace
 {
 constexpr int MaximumShells = 4096;  // beyond it the sample distance is widened (with a warning)
 constexpr float InsideTolerance = 1e-5f; // barycentric slack: no cracks between neighbours
-constexpr double TableTexelsPerNodeGap = 4.0; // AUTOMATIC: the table when every node gap spans this many
 
 /// The mesh's tetrahedra with their vertices in positive orientation, for the pulling route's
 /// culling (moving points can turn a tetrahedron inside out, so this follows every change).
@@ -168,6 +168,7 @@ public:
   vtkBarycentricShellIsosurfacePeelPass Peel;
   vtkBarycentricShellSlicePass Slices;
   vtkBarycentricShellBlendPass Blend;
+  vtkBarycentricShellSegmentTable Table; // CPU side, built in Prepare
   vtkUnstructuredVolumeOpacityMask Mask;
   vtkBarycentricShellCellProjectionPass Projection;
   uv::PixelRectangle VolumeRectangle{ 0, 0, 0, 0 };
@@ -528,7 +529,7 @@ void vtkBarycentricShellMapper::Internals::UploadPasses(const vtkUnstructuredVol
   this->Slices.SyncCells(window, this->Buckets.Cells, this->Buckets.Version);
   this->Peel.SyncCells(window, this->Lists.Isosurface, this->Lists.Version);
   if (this->Now.SegmentTable)
-    this->Blend.SyncTable(window, this->TransferFunction.Nodes, this->Now.SampleDistance);
+    this->Blend.SyncTable(window, this->Table);
   this->Slices.Resize(window, frame.Width, frame.Height, this->Now.Targets, this->Mask.GetDepth());
   this->Peel.Resize(window, frame.Width, frame.Height, this->Now.Layers);
 }
@@ -788,7 +789,7 @@ double vtkBarycentricShellMapper::GetLastSampleDistance()
 }
 int vtkBarycentricShellMapper::GetNumberOfSegmentTableBuilds()
 {
-  return this->Impl->Blend.TableBuilds;
+  return this->Impl->Table.Builds;
 }
 int vtkBarycentricShellMapper::GetNumberOfSorts()
 {
@@ -850,13 +851,6 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   impl.Now.Slices = this->SlicesPerShell;
   impl.Now.Targets = (this->SlicesPerShell + 1 + 3) / 4;
   impl.Now.Layers = this->IsosurfaceLayers;
-  // Shells integrate segments of one length: a table lookup each, where the transfer function is
-  // smooth enough for the table's bilinear reads (or as the user chose).
-  impl.Now.SegmentTable = !impl.Now.CellProjection &&
-    (this->SegmentIntegration == TABLE ||
-      (this->SegmentIntegration == AUTOMATIC &&
-        uv::NarrowestNodeGap(impl.TransferFunction.Nodes) * (vtkBarycentricShellBlendPass::TableSize - 1) >=
-          TableTexelsPerNodeGap));
   impl.UpdateGradients(this, frame);
   impl.UpdateSampleDistance(this, frame);
   if (impl.Now.CellProjection)
@@ -866,6 +860,15 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   else if (!impl.UpdateShells(this, frame))
   {
     return false;
+  }
+  // Shells integrate segments of one length: a table lookup each, where reading the table costs no
+  // more accuracy than the transfer-function tolerance allows (measured), or as the user chose.
+  impl.Now.SegmentTable = false;
+  if (!impl.Now.CellProjection && this->SegmentIntegration != EXACT)
+  {
+    impl.Table.Update(impl.TransferFunction.Nodes, impl.Now.SampleDistance);
+    impl.Now.SegmentTable =
+      this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
   }
   impl.LastSampleDistance = impl.Now.SampleDistance;
   return true;

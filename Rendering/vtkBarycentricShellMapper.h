@@ -101,8 +101,8 @@ public:
   /// vtkPreIntegratedTetrahedraMapper). TABLE: one bilinear read of a 256^2 table of whole segments
   /// of the sample distance, rebuilt (on the CPU, in parallel) when the transfer function or the
   /// distance changes: much cheaper per pixel, but it blurs transfer-function features narrower than
-  /// a few of its texels. AUTOMATIC (default): the table when every gap between nodes spans at least
-  /// four texels, EXACT otherwise.
+  /// a few of its texels. AUTOMATIC (default): the table where its largest error against the exact
+  /// segments, measured when it is built, is within TransferFunctionTolerance; EXACT otherwise.
   vtkSetClampMacro(SegmentIntegration, int, AUTOMATIC, EXACT);
   vtkGetMacro(SegmentIntegration, int);
   ///@}

@@ -123,28 +123,7 @@ TEST(PreIntegration, SegmentTableReadBilinearly)
   // exact segment: smooth transfer functions need few texels; sharp ones are why the mapper keeps
   // the exact walk as an option. Also exact at the texels themselves.
   auto worstError = [](const uv::TransferFunction& tf, double length, int size) {
-    const std::vector<float> table = uv::SegmentTable(tf, length, size);
-    auto texel = [&](int i, int j, int c) { return static_cast<double>(table[4 * (j * size + i) + c]); };
-    std::mt19937 random(9);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    double worst = 0.0;
-    for (int n = 0; n < 2000; ++n)
-    {
-      const double sf = u(random), sb = u(random);
-      const double x = sf * (size - 1), y = sb * (size - 1);
-      const int i = std::min(static_cast<int>(x), size - 2), j = std::min(static_cast<int>(y), size - 2);
-      const double fx = x - i, fy = y - j;
-      uv::RayAccumulator exact;
-      uv::IntegrateLinearScalarSegment(tf, sf, sb, length, exact);
-      const double expected[4] = { exact.Color.r, exact.Color.g, exact.Color.b, exact.Opacity() };
-      for (int c = 0; c < 4; ++c)
-      {
-        const double read = (1 - fy) * ((1 - fx) * texel(i, j, c) + fx * texel(i + 1, j, c)) +
-          fy * ((1 - fx) * texel(i, j + 1, c) + fx * texel(i + 1, j + 1, c));
-        worst = std::max(worst, std::abs(read - expected[c]));
-      }
-    }
-    return worst;
+    return uv::SegmentTableError(tf, length, uv::SegmentTable(tf, length, size), size, 2000);
   };
   const uv::TransferFunction ramp({ { 0.0, { 0.2, 0.3, 0.8 }, 0.0 }, { 0.5, { 0.9, 0.9, 0.9 }, 0.4 },
     { 1.0, { 0.7, 0.0, 0.1 }, 4.0 } });
@@ -157,6 +136,7 @@ TEST(PreIntegration, SegmentTableReadBilinearly)
   uv::RayAccumulator exact;
   uv::IntegrateLinearScalarSegment(ramp, 0.25, 0.75, 0.05, exact);
   EXPECT_NEAR(table[4 * (3 * 5 + 1) + 3], exact.Opacity(), 1e-7);
+  EXPECT_NEAR(uv::ReadSegmentTable(table, 5, 0.25, 0.75)[3], exact.Opacity(), 1e-7); // a texel, read
 }
 
 TEST(PreIntegration, ConstantScalarAndZeroLength)
