@@ -49,18 +49,25 @@ void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
   program->SetUniformMatrix4x4(name, const_cast<float*>(glm::value_ptr(single)));
 }
 
-/// The cell holding a perspective eye, where rays start when it is inside the mesh; searched again
-/// only when the mesh or the eye moved.
-class EyeCell
+/// Where the first peel's rays start when the near plane lies inside the mesh (the camera inside it,
+/// or just outside with the near plane cutting it, where no entry face is left in front of the rays):
+/// the cell holding a perspective eye, else the one holding the near plane's centre, or -1. Each ray
+/// walks from it to its own near-plane point. Searched again only when the mesh or the points moved.
+class RayStartCell
 {
 public:
-  int Update(const uvvtk::HexahedralMesh& mesh, const glm::dvec3& eye)
+  int Update(const uvvtk::HexahedralMesh& mesh, bool perspective, const glm::dvec3& eye, const glm::dvec3& nearCentre)
   {
-    if (mesh.Version != this->MeshVersion || eye != this->Eye)
+    if (mesh.Version != this->MeshVersion || perspective != this->Perspective || eye != this->Eye ||
+      nearCentre != this->NearCentre)
     {
-      this->Cell = uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, eye);
+      this->Cell = perspective ? uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, eye) : -1;
+      if (this->Cell < 0)
+        this->Cell = uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, nearCentre);
       this->MeshVersion = mesh.Version;
+      this->Perspective = perspective;
       this->Eye = eye;
+      this->NearCentre = nearCentre;
     }
     return this->Cell;
   }
@@ -68,7 +75,8 @@ public:
 private:
   int Cell = -1;
   std::uint64_t MeshVersion = 0;
-  glm::dvec3 Eye{ 0.0 };
+  bool Perspective = false;
+  glm::dvec3 Eye{ 0.0 }, NearCentre{ 0.0 };
 };
 
 /// The faces where rays enter: the whole mesh's boundary, or with skipping the visible region's
@@ -139,8 +147,6 @@ public:
   /// With skipping, the region's cells, one bit each (32 to a word), for the GPU copy.
   const std::vector<std::uint32_t>& VisibleCellBits() const { return this->VisibleBits; }
   bool Skipping() const { return this->Skip; }
-  /// Whether rays may start in `cell` (the eye's): with skipping, only in a visible one.
-  bool Walks(int cell) const { return cell >= 0 && (!this->Skip || this->Visible[cell]); }
   std::size_t VisibleCells() const { return this->Skip ? this->Region.VisibleCells : this->Mesh->CellCount(); }
 
 private:
@@ -241,7 +247,6 @@ struct PassFrame
   vtkOpenGLVertexArrayObject* NoAttributes = nullptr;
   glm::dmat4 ModelToClip{ 1.0 }, ClipToModel{ 1.0 }, ModelToEye{ 1.0 };
   glm::dmat3 NormalToEye{ 1.0 };
-  glm::dvec3 EyeModel{ 0.0 };
   float Viewport[2] = { 0.0f, 0.0f };
 
   static PassFrame Make(const vtkUnstructuredVolumeFrame& frame, const glm::dvec3& center,
@@ -254,7 +259,6 @@ struct PassFrame
     pass.ModelToClip = frame.ModelToClip(center);
     pass.ClipToModel = glm::inverse(pass.ModelToClip);
     pass.NormalToEye = frame.ModelToEyeNormals(center);
-    pass.EyeModel = frame.EyeInModel(center);
     pass.Viewport[0] = static_cast<float>(frame.Width);
     pass.Viewport[1] = static_cast<float>(frame.Height);
     return pass;
@@ -363,7 +367,7 @@ struct TraversalSettings
   bool ExactEnds = true;
   float OpacityThreshold = 0.99f;
   int MaximumCells = 0; // bounds the walk (and any cycle in it)
-  int EyeCell = -1;     // the cell holding the eye on the first peel, or -1
+  int StartCell = -1;   // where the first peel's rays start (RayStartCell), or -1
   int IsosurfaceCount = 0;
   bool CellScalars = false;    // the mesh's scalar is per cell (uploaded to GpuResources::CellScalars)
   bool SkipInvisibleCells = false; // rays enter and leave at the visible region (GpuResources::VisibleCells)
@@ -458,10 +462,7 @@ private:
     // The last peel walks on through invisible runs: no peel is left to pick the ray up.
     if (settings.SkipInvisibleCells)
       program->SetUniformi("invisibleCellLimit", settings.LastPeel ? settings.MaximumCells : InvisibleCellsWalked);
-    program->SetUniformi("eyeCell", settings.EyeCell);
-    const float eye[3] = { static_cast<float>(pass.EyeModel.x), static_cast<float>(pass.EyeModel.y),
-      static_cast<float>(pass.EyeModel.z) };
-    program->SetUniform3f("eyeModel", eye);
+    program->SetUniformi("startCell", settings.StartCell);
   }
 };
 } // namespace
@@ -474,8 +475,8 @@ public:
   uvvtk::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
   EntryFaces Entries;
-  EyeCell Eye;
-  int EyeCellOfFrame = -1; // perspective eye inside a walked cell, or -1
+  RayStartCell Start;
+  int StartCellOfFrame = -1; // where the first peel's rays start (RayStartCell), or -1
   bool WarnedNaN = false;
   int Peels = 0;
 
@@ -498,11 +499,11 @@ public:
       bool entered = false;
       if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Entries.BoundaryCount(), peel == 0, entered))
         return false;
-      const bool fromEye = peel == 0 && this->EyeCellOfFrame >= 0;
+      const bool fromEye = peel == 0 && this->StartCellOfFrame >= 0;
       if (!entered && !fromEye)
         break; // no ray enters the mesh again
       ++this->Peels;
-      settings.EyeCell = fromEye ? this->EyeCellOfFrame : -1;
+      settings.StartCell = fromEye ? this->StartCellOfFrame : -1;
       settings.LastPeel = peel == maximumPeels - 1;
       if (!this->Traverse.Draw(pass, this->Images, this->Gpu, settings, target.GetSceneDepth(), accumulation[last],
             accumulation[1 - last]))
@@ -653,9 +654,11 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
   this->WarnCellScalarLimits(scalar, false, true);
   impl.Entries.Update(impl.Mesh, this->SkipInvisibleCells, impl.TransferFunction.Nodes, impl.DrawnIsosurfaces);
   const glm::dvec3& center = impl.Mesh.Points.Center;
-  const int eyeCell = frame.Parallel ? -1 : impl.Eye.Update(impl.Mesh, frame.EyeInModel(center));
-  // An eye in an invisible cell: its rays start at the visible region's first entry face instead.
-  impl.EyeCellOfFrame = impl.Entries.Walks(eyeCell) ? eyeCell : -1;
+  // Also in an invisible cell: with skipping, the walk leaves its rays to the next peel's entry faces
+  // after a few invisible cells.
+  const glm::dvec4 nearCentre = glm::inverse(frame.ModelToClip(center)) * glm::dvec4(0.0, 0.0, -1.0, 1.0);
+  impl.StartCellOfFrame =
+    impl.Start.Update(impl.Mesh, !frame.Parallel, frame.EyeInModel(center), glm::dvec3(nearCentre) / nearCentre.w);
   return true;
 }
 

@@ -37,8 +37,8 @@ uniform usamplerBuffer visibleCells; // the visible region's cells (whose entry 
 uniform int invisibleCellLimit; // cells outside it in a row after which the walk leaves the ray to
                                 // the next peel's entry faces
 #endif
-uniform int eyeCell;            // first peel, perspective: the cell holding the eye, or -1
-uniform vec3 eyeModel;
+uniform int startCell;          // first peel, the near plane inside the mesh: the cell holding the
+                                // eye or the near plane's centre, or -1
 uniform sampler2D isosurfaces;  // row 0 (r, g, b, opacity), row 1 (normalised value), ascending
 uniform int isosurfaceCount;
 uniform mat4 modelToEye;
@@ -57,6 +57,7 @@ float transmittance = 1.0;
 // How the walk ended, for the next peel's entry pass: opaque, out of the mesh through a boundary
 // face, or lost at an edge (Relocate found no cell ahead).
 const float STOPPED = 0.0, LEFT_THROUGH_BOUNDARY = 1.0, LOST = 2.0;
+const int nearPlaneSteps = 256; // cells a ray walks from startCell to its near-plane point
 float stopKind = STOPPED;
 
 //UV::TransferFunction
@@ -737,12 +738,12 @@ int StepTowards(vec3 target, int cell, out bool inside)
   return outside < 0 ? -1 : across[outside];
 }
 
-/// Walks from the loaded cell towards `target` across the faces it lies outside of; true when it
-/// found the cell holding it (then loaded, in `cell`).
-bool WalkTowards(vec3 target, inout int cell)
+/// Walks from the loaded cell towards `target` across the faces it lies outside of, at most `steps`
+/// cells; true when it found the cell holding it (then loaded, in `cell`).
+bool WalkTowards(vec3 target, inout int cell, int steps)
 {
   bool located = false;
-  for (int walk = 0; walk < 32; ++walk)
+  for (int walk = 0; walk < steps; ++walk)
   {
     bool inside;
     int next = StepTowards(target, cell, inside);
@@ -770,7 +771,7 @@ bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ah
     cell = startCell;
     LoadCell(cell);
     ahead = (attempt == 0 ? 1e-3 : (attempt == 1 ? 1e-2 : 5e-2)) * length(points[6] - points[0]);
-    located = WalkTowards(origin + (t + ahead) * direction, cell);
+    located = WalkTowards(origin + (t + ahead) * direction, cell, 32);
   }
   return located;
 }
@@ -851,11 +852,23 @@ float CastRay(ivec2 pixel, vec4 start, bool fromEye)
   float depth = texelFetch(opaqueDepth, pixel, 0).r;
   vec4 opaque = clipToModel * vec4(ndc, 2.0 * depth - 1.0, 1.0);
   float opaqueT = depth < 1.0 ? dot(opaque.xyz / opaque.w - origin, direction) : noExit;
-  // The camera inside the mesh starts every ray at the eye, in its cell. (One call of Walk: the
+  // With the near plane inside the mesh, the first peel starts every ray at its own near-plane point
+  // (t = 0), in the cell found by walking there from startCell; a ray whose point lies outside the
+  // mesh leaves it to the next peel's entry faces beyond the near plane. (One call of Walk: the
   // compiler inlines every call, and the walk is most of the shader.)
-  ivec4 cellFace = fromEye ? ivec4(eyeCell, -1, 0, 0) : texelFetch(boundaryFaces, int(start.g));
-  float t = fromEye ? dot(eyeModel - origin, direction) : start.r;
-  return Walk(origin, direction, opaqueT, cellFace.x, cellFace.y, t);
+  ivec4 cellFace = fromEye ? ivec4(startCell, -1, 0, 0) : texelFetch(boundaryFaces, int(start.g));
+  int cell = cellFace.x;
+  if (fromEye)
+  {
+    LoadCell(cell);
+    if (!WalkTowards(origin, cell, nearPlaneSteps))
+    {
+      stopKind = LEFT_THROUGH_BOUNDARY;
+      return 0.0;
+    }
+  }
+  float t = fromEye ? 0.0 : start.r;
+  return Walk(origin, direction, opaqueT, cell, cellFace.y, t);
 }
 
 void main()
@@ -866,7 +879,7 @@ void main()
   transmittance = 1.0 - before.a;
   vec4 start = texelFetch(entry, pixel, 0);
   float exitParameter = noExit; // no further peel
-  bool fromEye = eyeCell >= 0;
+  bool fromEye = startCell >= 0;
   if ((start.g >= 0.0 || fromEye) && transmittance > 1.0 - opacityThreshold)
     exitParameter = CastRay(pixel, start, fromEye);
   gl_FragData[0] = vec4(colour, 1.0 - transmittance);

@@ -135,6 +135,25 @@ class AccuracyTests(SceneTestCase):
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         self.check(mesh, prop, inside_camera(), 5e-3, size=96)
 
+    def test_near_plane_inside_the_mesh_with_the_eye_outside(self):
+        # The eye just outside a boundary face (or on it), the near plane beyond it: no entry face is
+        # left in front of the rays, which start at their near-plane points (found by walking from
+        # the cell holding the near plane's centre), as the reference's do. Also parallel rays whose
+        # near plane cuts the mesh. The mapper drew nothing here before.
+        mesh = analytic_hexahedra(6)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        for x, parallel in ((-1.005, False), (-1.0, False), (-1.3, True)):
+            with self.subTest(x=x, parallel=parallel):
+                camera = vtkCamera()
+                camera.SetPosition(x, 0.013, 0.021)
+                camera.SetFocalPoint(1.0, 0.013, 0.021)
+                camera.SetViewUp(0, 0, 1)
+                camera.SetViewAngle(60)
+                camera.SetParallelProjection(parallel)
+                camera.SetParallelScale(0.8)
+                camera.SetClippingRange(0.5 if parallel else 0.01, 10)
+                self.check(mesh, prop, camera, 5e-3, size=64)
+
 
 class MixedCellTests(SceneTestCase):
     """Tetrahedra, pyramids and wedges walk with the hexahedra, as hexahedra with repeated corners."""
