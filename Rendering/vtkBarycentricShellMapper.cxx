@@ -560,6 +560,7 @@ void vtkBarycentricShellMapper::Internals::SetCellUniforms(
   uvgl::SetUniformMatrix(program, "modelToEye", frame.ModelToEye(this->Mesh.Center));
   uvgl::SetUniformMatrix(program, "eyeToClip", frame.EyeToClip);
   program->SetUniformi("parallelProjection", frame.Parallel ? 1 : 0);
+  program->SetUniformf("nearDepth", static_cast<float>(frame.NearDepth));
   program->SetUniformf("insideTolerance", InsideTolerance);
   this->TetrahedronPoints.Bind(program, "tetrahedronPoints");
   this->Points.Bind(program, "pointData");

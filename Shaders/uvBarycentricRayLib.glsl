@@ -28,6 +28,7 @@ float ImageScalarAt(vec4 b)
 #endif
 
 uniform int parallelProjection;
+uniform float nearDepth; // eye-space depth of the near clipping plane, where rays begin
 #ifdef UV_OPAQUE_GEOMETRY
 uniform sampler2D opaqueDistances; // r: the distance of the scene's opaque geometry, per pixel
 #endif
@@ -60,12 +61,18 @@ vec4 ZeroCrossings(BarycentricRay ray)
   return ray.length - ray.face / ray.perUnit;
 }
 
+/// The distance along this fragment's ray of the near clipping plane.
+float NearDistance(BarycentricRay ray)
+{
+  return parallelProjection == 1 ? nearDepth : nearDepth * ray.length / max(-eyePosition.z, 1e-30);
+}
+
 /// Where the ray enters the tetrahedron: the last distance at which a coordinate growing along the
-/// ray is 0 (0 when the eye is inside).
+/// ray is 0, or the near plane where the tetrahedron begins in front of it.
 float EntryDistance(BarycentricRay ray)
 {
   vec4 entries = mix(vec4(0.0), ZeroCrossings(ray), greaterThan(ray.perUnit, vec4(0.0)));
-  return max(max(entries.x, entries.y), max(max(entries.z, entries.w), 0.0));
+  return max(max(entries.x, entries.y), max(max(entries.z, entries.w), NearDistance(ray)));
 }
 
 /// Where it leaves: the first distance at which a falling coordinate reaches 0. The fragment's own

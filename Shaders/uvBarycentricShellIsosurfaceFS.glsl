@@ -49,7 +49,7 @@ void main()
   {
     float value = texelFetch(isosurfaces, ivec2(i, 1), 0).r;
     float z = ray.length + (value - at) / slope;
-    if (z >= 0.0 && z > after && z < nearest && z <= limit &&
+    if (z >= NearDistance(ray) && z > after && z < nearest && z <= limit &&
       SmallestCoordinate(CoordinatesAt(ray, z)) >= -insideTolerance)
     {
       nearest = z;
