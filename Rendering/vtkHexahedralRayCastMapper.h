@@ -34,8 +34,10 @@
  * skipping a transparent cell costs one range test, no integration.
  *
  * The traversal reads transfer-function nodes from uniforms: a function with more than
- * uvgl::MaximumUniformNodes nodes is approximated by fewer (with a warning). A perspective eye inside
- * the mesh starts every ray of the first peel in the cell holding it.
+ * uvgl::MaximumUniformNodes nodes after TransferFunctionTolerance is approximated by fewer (with a
+ * warning). Rays begin at the near plane: where it lies inside the mesh (the camera inside it, or
+ * just outside with the near plane beyond a boundary face), the first peel starts every ray at its
+ * near-plane point, walking there from the cell holding the eye or the near plane's centre.
  *
  * Input: any vtkDataSet of hexahedra, voxels, wedges, pyramids and tetrahedra with a point or cell
  * scalar (the base's selection; a cell scalar is one value per cell, constant along the ray inside
