@@ -5,14 +5,18 @@
 #include "vtkUnstructuredVolumeFrame.h"
 #include "vtkUnstructuredVolumeScalar.h"
 
+#include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkImageData.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+
+#include <algorithm>
 
 struct vtkUnstructuredVolumeMapper::Shared
 {
@@ -130,18 +134,32 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   const vtkUnstructuredVolumeFrame frame = vtkUnstructuredVolumeFrame::Make(renderer, volume, window);
   if (frame.IsEmpty() || !this->Prepare(frame))
   {
+    this->KeepTransparentImage(frame);
     return;
   }
   this->UseContext(window);
   vtkOpenGLClearErrorMacro();
   if (!this->Upload(frame))
   {
+    this->KeepTransparentImage(frame);
     return;
   }
   if (this->DrawAndComposite(frame))
   {
     vtkOpenGLCheckErrorMacro("failed after rendering the volume");
   }
+}
+
+void vtkUnstructuredVolumeMapper::KeepTransparentImage(const vtkUnstructuredVolumeFrame& frame)
+{
+  if (!this->KeepFloatImage)
+    return;
+  vtkSmartPointer<vtkImageData>& image = this->Base->FloatImage;
+  if (!image)
+    image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(std::max(frame.Width, 0), std::max(frame.Height, 0), 1);
+  image->AllocateScalars(VTK_FLOAT, 4);
+  image->GetPointData()->GetScalars()->Fill(0.0);
 }
 
 bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFrame& frame)
@@ -182,6 +200,7 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
   target.Unbind();
   if (!drawn)
   {
+    this->KeepTransparentImage(frame);
     return false;
   }
   // The composite blends over the whole viewport: no scissor or depth test left from the passes.

@@ -163,6 +163,10 @@ private:
   vtkUnstructuredVolumeMapper(const vtkUnstructuredVolumeMapper&) = delete;
   void operator=(const vtkUnstructuredVolumeMapper&) = delete;
 
+  /// A frame that draws nothing (empty viewport, nothing visible, bad input) keeps a transparent
+  /// float image of its size, not the last drawn one.
+  void KeepTransparentImage(const vtkUnstructuredVolumeFrame& frame);
+
   bool CheckArguments(vtkRenderer* renderer, vtkVolume* volume);
   void UseContext(vtkOpenGLRenderWindow* window);
   bool DrawAndComposite(const vtkUnstructuredVolumeFrame& frame);

@@ -78,7 +78,8 @@ void main()
   EyeRay(PixelNdc(gl_FragCoord.xy, viewportSize), nearPlane, rayDirection, origin, direction);
   vec3 a, b, c, d;
   int corners = BoundaryPatch(a, b, c, d);
-  float wall = exit.g > 0.5 ? 1e-5 * (1.0 + abs(exit.r)) : 0.0;
+  // In proportion to the ray parameter and the face, not absolute: meshes of any size and distance.
+  float wall = exit.g > 0.5 ? 1e-5 * (abs(exit.r) + length(c - a)) : 0.0;
   float after = firstPeel == 1 ? -3.0e38 : exit.r - wall;
   float t = EntryParameter(origin, direction, a, b, c, d, corners, after);
   if (!(t < 3.0e38))

@@ -636,7 +636,8 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
   exitT = noExit;
   int exitFace = -1;
   vec3 cellCentre = CellCentre(points);
-  float tolerance = 1e-6 * (1.0 + abs(t));
+  // In proportion to the ray parameter and the cell, not absolute: meshes of any size and distance.
+  float tolerance = 1e-6 * (abs(t) + 2.0 * length(points[0] - cellCentre));
   for (int f = 0; f < 6; ++f)
   {
     if (f == enterFace)
