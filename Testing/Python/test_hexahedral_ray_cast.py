@@ -533,6 +533,28 @@ class StressTests(SceneTestCase):
             self.assertEqual(scene.events.errors, 0)
         self.assertLess(largest_difference(*images), 1e-3)
 
+    def test_meshes_a_millionth_and_a_million_times_the_size(self):
+        # The walk's tolerances are in proportion to the ray parameter and the cell: with parts of
+        # them absolute, a mesh a millionth the size drew nothing.
+        from vtkmodules.vtkCommonTransforms import vtkTransform
+        from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
+        for factor in (1e-6, 1e6):
+            with self.subTest(factor=factor):
+                transform = vtkTransform()
+                transform.Scale(factor, factor, factor)
+                scaled = vtkTransformFilter()
+                scaled.SetTransform(transform)
+                scaled.SetInputData(analytic_hexahedra(5, distortion=vtkAnalyticMeshSource.TWIST))
+                scaled.Update()
+                mesh = scaled.GetOutput()
+                prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+                prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
+                camera = camera_for(mesh)
+                camera.SetClippingRange(0.01 * mesh.GetLength(), 10 * mesh.GetLength())
+                scene = HexScene(mesh, prop, camera, 48)
+                error, _ = rmse(scene.render(), reference(mesh, prop, camera, 48))
+                self.assertLess(error, 5e-3)
+
     def test_tangled_hexahedron_is_told_and_rendered_finite(self):
         mesh = single_hexahedron([0.1, 0.9, 0.4, 0.6, 0.8, 0.2, 1.0, 0.3])
         mesh.GetPoints().SetPoint(6, -0.2, -0.2, -1.0)  # corner 6 pushed through the opposite face
