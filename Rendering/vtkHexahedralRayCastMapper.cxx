@@ -499,11 +499,11 @@ public:
       bool entered = false;
       if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Entries.BoundaryCount(), peel == 0, entered))
         return false;
-      const bool fromEye = peel == 0 && this->StartCellOfFrame >= 0;
-      if (!entered && !fromEye)
+      const bool fromStartCell = peel == 0 && this->StartCellOfFrame >= 0;
+      if (!entered && !fromStartCell)
         break; // no ray enters the mesh again
       ++this->Peels;
-      settings.StartCell = fromEye ? this->StartCellOfFrame : -1;
+      settings.StartCell = fromStartCell ? this->StartCellOfFrame : -1;
       settings.LastPeel = peel == maximumPeels - 1;
       if (!this->Traverse.Draw(pass, this->Images, this->Gpu, settings, target.GetSceneDepth(), accumulation[last],
             accumulation[1 - last]))

@@ -785,7 +785,9 @@ bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ah
 float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, float t)
 {
   float exitParameter = noExit;
+#ifdef UV_SKIP_INVISIBLE_CELLS
   int invisibleRun = 0; // cells outside the visible region in a row
+#endif
   for (int step = 0; step < maximumCells; ++step)
   {
     LoadCell(cell);
@@ -844,7 +846,7 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
 
 /// The pixel's ray from where this peel enters the mesh (`start`: ray parameter, boundary face), or
 /// from the eye in its cell; returns where the next peel picks it up.
-float CastRay(ivec2 pixel, vec4 start, bool fromEye)
+float CastRay(ivec2 pixel, vec4 start, bool fromStartCell)
 {
   vec2 ndc = PixelNdc(gl_FragCoord.xy, viewportSize);
   vec3 origin, direction;
@@ -857,9 +859,9 @@ float CastRay(ivec2 pixel, vec4 start, bool fromEye)
   // (t = 0), in the cell found by walking there from startCell; a ray whose point lies outside the
   // mesh leaves it to the next peel's entry faces beyond the near plane. (One call of Walk: the
   // compiler inlines every call, and the walk is most of the shader.)
-  ivec4 cellFace = fromEye ? ivec4(startCell, -1, 0, 0) : texelFetch(boundaryFaces, int(start.g));
+  ivec4 cellFace = fromStartCell ? ivec4(startCell, -1, 0, 0) : texelFetch(boundaryFaces, int(start.g));
   int cell = cellFace.x;
-  if (fromEye)
+  if (fromStartCell)
   {
     LoadCell(cell);
     if (!WalkTowards(origin, cell, nearPlaneSteps))
@@ -868,7 +870,7 @@ float CastRay(ivec2 pixel, vec4 start, bool fromEye)
       return 0.0;
     }
   }
-  float t = fromEye ? 0.0 : start.r;
+  float t = fromStartCell ? 0.0 : start.r;
   return Walk(origin, direction, opaqueT, cell, cellFace.y, t);
 }
 
@@ -880,9 +882,9 @@ void main()
   transmittance = 1.0 - before.a;
   vec4 start = texelFetch(entry, pixel, 0);
   float exitParameter = noExit; // no further peel
-  bool fromEye = startCell >= 0;
-  if ((start.g >= 0.0 || fromEye) && transmittance > 1.0 - opacityThreshold)
-    exitParameter = CastRay(pixel, start, fromEye);
+  bool fromStartCell = startCell >= 0;
+  if ((start.g >= 0.0 || fromStartCell) && transmittance > 1.0 - opacityThreshold)
+    exitParameter = CastRay(pixel, start, fromStartCell);
   gl_FragData[0] = vec4(colour, 1.0 - transmittance);
-  gl_FragData[1] = vec4(exitParameter, stopKind, fromEye ? -1.0 : start.g, 1.0);
+  gl_FragData[1] = vec4(exitParameter, stopKind, fromStartCell ? -1.0 : start.g, 1.0);
 }
