@@ -22,8 +22,8 @@ foreach (header IN ITEMS
     uvBarycentricShell uvCellVisibility uvChebyshevSeries uvCurvedCell uvLatticeBasis uvHexahedralMesh uvHexahedronRay uvVisibleRegion
     uvImageErrorMetrics
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
-    uvScalarNormalisation uvShellBuckets uvTransferFunctionSimplification uvVisibilitySort
-    vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms
+    uvScalarNormalisation uvShellBuckets uvTetrahedronSegmentTable uvTransferFunctionSimplification uvVisibilitySort
+    vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms vtkPreIntegratedTetrahedraSegmentTable
     vtkBarycentricShellBlendPass vtkBarycentricShellCellDrawer vtkBarycentricShellCellProjectionPass
     vtkBarycentricShellImageTexture vtkBarycentricShellIsosurfacePeelPass vtkUnstructuredVolumeOpacityMask
     vtkBarycentricShellOpaqueDistancePass vtkBarycentricShellPrograms vtkBarycentricShellSegmentTable
@@ -31,6 +31,7 @@ foreach (header IN ITEMS
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
     vtkUnstructuredVolumeHexahedralMesh vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL
     vtkUnstructuredVolumePointData vtkUnstructuredVolumeTetrahedralMesh vtkUnstructuredVolumeTexture
+    vtkUnstructuredVolumeTexture3D
     vtkUnstructuredVolumeTransferFunction vtkUnstructuredVolumeTransferFunctionTexture)
   list(APPEND uv_rendering_private_headers "${CMAKE_CURRENT_LIST_DIR}/${header}.h")
 endforeach ()

@@ -123,6 +123,13 @@ private:
   std::vector<float> Values;
 };
 
+/// The table every mapper reads: built once per process (its exact quadratures take a moment).
+inline const PsiTable& SharedPsiTable()
+{
+  static const PsiTable table;
+  return table;
+}
+
 /// Psi for small optical depths by its series (error below (a + b)^3 / 24), where a table read
 /// would lose relative accuracy.
 inline double PsiSeries(double a, double b)

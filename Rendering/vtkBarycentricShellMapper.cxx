@@ -829,9 +829,6 @@ void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "AutomaticSamplesAcross: " << this->AutomaticSamplesAcross << "\n";
   os << indent << "SlicesPerShell: " << this->SlicesPerShell << "\n";
-  os << indent << "SegmentIntegration: "
-     << (this->SegmentIntegration == AUTOMATIC ? "Automatic" : this->SegmentIntegration == TABLE ? "Table" : "Exact")
-     << "\n";
   os << indent << "IsosurfaceLayers: " << this->IsosurfaceLayers << "\n";
   os << indent << "GradientMode: " << (this->GradientMode == VERTEX_GRADIENTS ? "VertexGradients" : "CellGradients")
      << "\n";

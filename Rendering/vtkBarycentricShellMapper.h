@@ -89,23 +89,6 @@ public:
   vtkGetMacro(SlicesPerShell, int);
   ///@}
 
-  enum SegmentIntegrations
-  {
-    AUTOMATIC = 0,
-    TABLE = 1,
-    EXACT = 2
-  };
-  ///@{
-  /// How SHELLS mode integrates the segment between two samples (the scalar linear along it).
-  /// EXACT: cut at transfer-function nodes, each piece pre-integrated with the Psi table (as
-  /// vtkPreIntegratedTetrahedraMapper). TABLE: one bilinear read of a 256^2 table of whole segments
-  /// of the sample distance, rebuilt (on the CPU, in parallel) when the transfer function or the
-  /// distance changes: much cheaper per pixel, but it blurs transfer-function features narrower than
-  /// a few of its texels. AUTOMATIC (default): the table where its largest error against the exact
-  /// segments, measured when it is built, is within TransferFunctionTolerance; EXACT otherwise.
-  vtkSetClampMacro(SegmentIntegration, int, AUTOMATIC, EXACT);
-  vtkGetMacro(SegmentIntegration, int);
-  ///@}
 
   ///@{
   /// SHELLS mode: how many isosurface crossings per pixel are drawn at most, nearest first (1 to 8,
@@ -184,7 +167,6 @@ protected:
   double SampleDistance = 0.0;
   int AutomaticSamplesAcross = 128;
   int SlicesPerShell = 7;
-  int SegmentIntegration = AUTOMATIC;
   int IsosurfaceLayers = 4;
   int GradientMode = VERTEX_GRADIENTS;
   char* GradientArrayName = nullptr;

@@ -6,6 +6,7 @@
 #include "uvOpacityMaskFS.h"
 #include "uvFullScreenTriangleVS.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
+#include "vtkPreIntegratedTetrahedraSegmentTable.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
@@ -14,6 +15,7 @@
 #include "vtkUnstructuredVolumeOpenGL.h"
 #include "vtkUnstructuredVolumeTetrahedralMesh.h"
 #include "vtkUnstructuredVolumeTexture.h"
+#include "vtkUnstructuredVolumeTexture3D.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
 #include "vtkUnstructuredVolumeTransferFunctionTexture.h"
 
@@ -22,6 +24,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
@@ -32,6 +35,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -43,6 +47,25 @@ void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
 {
   const glm::mat4 single(m);
   program->SetUniformMatrix4x4(name, const_cast<float*>(glm::value_ptr(single)));
+}
+
+/// The fragment stage's rayX and rayY: the eye ray at pixel (x, y) of the frame's image is affine in
+/// (x, y) (VTK's projections keep the near plane at one eye depth), so three pixels fix it: in
+/// perspective its direction (z = -1), in parallel projection its origin (z = 0).
+void SetPixelRays(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& frame)
+{
+  const glm::dmat4 clipToEye = glm::inverse(frame.EyeToClip);
+  const auto rayAt = [&](double x, double y) {
+    const glm::dvec4 ndc(2.0 * x / frame.Width - 1.0, 2.0 * y / frame.Height - 1.0, -1.0, 1.0);
+    const glm::dvec4 near = clipToEye * ndc;
+    const glm::dvec3 point = glm::dvec3(near) / near.w;
+    return frame.Parallel ? glm::dvec2(point) : glm::dvec2(point) / -point.z;
+  };
+  const glm::dvec2 origin = rayAt(0.0, 0.0), alongX = rayAt(1.0, 0.0) - origin, alongY = rayAt(0.0, 1.0) - origin;
+  const float rayX[3] = { static_cast<float>(alongX.x), static_cast<float>(alongY.x), static_cast<float>(origin.x) };
+  const float rayY[3] = { static_cast<float>(alongX.y), static_cast<float>(alongY.y), static_cast<float>(origin.y) };
+  program->SetUniform3f("rayX", rayX);
+  program->SetUniform3f("rayY", rayY);
 }
 
 /// Front to back pays for its mask passes and, on CPU rasterisers, for a slower blend and order
@@ -94,12 +117,21 @@ public:
   bool DrawCellSurfaces = false;
   uv::TetrahedronFaceNeighbours CellSurfaces;
   std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
+  // Whole segments from one table read where it is accurate enough: its length axis ends at the
+  // longest edge of the mesh as drawn (no segment through a tetrahedron is longer).
+  vtkPreIntegratedTetrahedraSegmentTable Table;
+  bool UseTable = false;
+  // The mesh's extent (recentred model space): its longest edge and bounding box.
+  double LongestEdge = 0.0;
+  glm::dvec3 Low{ 0.0 }, High{ 0.0 };
+  std::uint64_t ExtentFor = 0; // the mesh's Version
 
   // GPU state.
   vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, DrawOrder, NeighbourValues;
   vtkUnstructuredVolumeIndexBuffer OrderIndices, FanIndices;
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
+  vtkUnstructuredVolumeTexture3D TableTexture;
   vtkUnstructuredVolumeOpacityMask Mask;
 
   // This frame's compositing: front to back under the opacity mask, or back to front; chosen by the
@@ -120,7 +152,53 @@ public:
     this->FanIndices.Release();
     this->Nodes.Release();
     this->Isosurfaces.Release();
+    this->TableTexture.Release();
     this->Mask.Release();
+  }
+
+  /// The mesh's longest edge and bounds, when the mesh changed.
+  void UpdateExtent()
+  {
+    if (this->ExtentFor == this->Mesh.Version)
+      return;
+    vtkSMPThreadLocal<double> longest(0.0);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(this->Mesh.Size()), [&](vtkIdType begin, vtkIdType end) {
+      double& mine = longest.Local();
+      mine = std::max(mine, uv::LongestSquaredEdge(this->Mesh.PointData, this->Mesh.TetrahedronPoints,
+                              static_cast<std::size_t>(begin), static_cast<std::size_t>(end)));
+    });
+    double squared = 0.0;
+    for (double value : longest)
+      squared = std::max(squared, value);
+    this->LongestEdge = std::sqrt(squared);
+    const std::vector<float>& points = this->Mesh.PointData;
+    this->Low = glm::dvec3(std::numeric_limits<double>::infinity());
+    this->High = -this->Low;
+    for (std::size_t p = 0; p + 3 < points.size(); p += 4)
+    {
+      const glm::dvec3 position(points[p], points[p + 1], points[p + 2]);
+      this->Low = glm::min(this->Low, position);
+      this->High = glm::max(this->High, position);
+    }
+    this->ExtentFor = this->Mesh.Version;
+  }
+
+  /// Whether the near plane may cut a tetrahedron: some corner of the mesh's bounds lies before the
+  /// plane or on it (a relative margin for rounding). Where none does, the programs leave the
+  /// near-plane ray casting out.
+  bool NearPlaneMayCut(const vtkUnstructuredVolumeFrame& frame)
+  {
+    this->UpdateExtent();
+    const glm::dmat4 modelToEye = frame.ModelToEye(this->Mesh.Center);
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const glm::dvec3 p((corner & 1) ? this->High.x : this->Low.x, (corner & 2) ? this->High.y : this->Low.y,
+        (corner & 4) ? this->High.z : this->Low.z);
+      const double depth = -(modelToEye * glm::dvec4(p, 1.0)).z;
+      if (!(depth > frame.NearDepth + 1e-3 * (std::abs(frame.NearDepth) + std::abs(depth))))
+        return true;
+    }
+    return false;
   }
 
   /// Draws the tetrahedra in draw places [first, first + count) of the order.
@@ -209,6 +287,18 @@ bool vtkPreIntegratedTetrahedraMapper::GetDrewFrontToBack()
 int vtkPreIntegratedTetrahedraMapper::GetNumberOfOpacityMaskRefreshes()
 {
   return this->Impl->MaskRefreshes;
+}
+bool vtkPreIntegratedTetrahedraMapper::GetUsedSegmentTable()
+{
+  return this->Impl->UseTable;
+}
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfSegmentTableBuilds()
+{
+  return this->Impl->Table.Builds;
+}
+double vtkPreIntegratedTetrahedraMapper::GetSegmentTableError()
+{
+  return this->Impl->Table.Builds > 0 ? this->Impl->Table.Error : -1.0;
 }
 vtkIdType vtkPreIntegratedTetrahedraMapper::GetNumberOfShadedFragments()
 {
@@ -307,6 +397,8 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
       vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
   }
 
+  impl.UseTable = this->ChooseSegmentTable(frame);
+
   // Visibility order by centroid distance, when the view or the list changed: front to back when
   // pixels that became opaque can stop being shaded (skipping on and a threshold below 1), else
   // back to front, which needs no mask passes.
@@ -332,6 +424,12 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
     ++impl.TransferFunctionUploads;
   impl.Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(impl.DrawnIsosurfaces), 2, 4,
     uv::IsosurfaceList::Texels(impl.DrawnIsosurfaces));
+  if (impl.UseTable)
+  {
+    const uv::TetrahedronSegmentTable& table = impl.Table.Table;
+    impl.TableTexture.Sync(
+      window, table.ScalarSize, table.ScalarSize, table.LengthSize, table.Texels, impl.Table.Version);
+  }
   const std::size_t count = impl.Order.Order.size();
   if (this->ProjectionRoute == VERTEX_PULLING)
   {
@@ -380,6 +478,8 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   options.Gradients = impl.NeedGradients;
   options.NodeTexture = uvgl::NodesNeedTexture(impl.TransferFunction.Nodes);
   options.CellSurfaces = impl.DrawCellSurfaces;
+  options.SegmentTable = impl.UseTable;
+  options.NearPlaneCuts = impl.NearPlaneMayCut(frame);
   vtkShaderProgram* program =
     uvgl::ReadyProgram(frame.Window, vtkPreIntegratedTetrahedraPrograms::Sources(options));
   if (!program)
@@ -400,6 +500,7 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   const float viewport[2] = { static_cast<float>(frame.Width), static_cast<float>(frame.Height) };
   program->SetUniform2f("viewportSize", viewport);
   program->SetUniformi("parallelProjection", frame.Parallel ? 1 : 0);
+  SetPixelRays(program, frame);
   program->SetUniformi("averageScalar", this->IntegrationMode == AVERAGE_SCALAR ? 1 : 0);
   program->SetUniformi("shadeVolume", impl.Shade ? 1 : 0);
   program->SetUniformi("isosurfaceCount", static_cast<int>(impl.Isovalues.size()));
@@ -409,6 +510,8 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   impl.Points.Bind(program, "pointData");
   impl.Nodes.Bind(program);
   impl.Isosurfaces.Bind(program, "isosurfaces");
+  if (impl.UseTable)
+    this->BindSegmentTable(program);
   vtkTextureObject* sceneDepth = target.GetSceneDepth();
   sceneDepth->Activate();
   program->SetUniformi("opaqueDepth", sceneDepth->GetTextureUnit());
@@ -428,6 +531,8 @@ void vtkPreIntegratedTetrahedraMapper::UnbindTetrahedraResources(vtkUnstructured
   impl.Points.Unbind();
   impl.Nodes.Unbind();
   impl.Isosurfaces.Unbind();
+  if (impl.UseTable)
+    impl.TableTexture.Unbind();
   target.GetSceneDepth()->Deactivate();
   if (impl.NeedGradients)
     impl.PointGradients.Unbind();
@@ -435,6 +540,38 @@ void vtkPreIntegratedTetrahedraMapper::UnbindTetrahedraResources(vtkUnstructured
     impl.NeighbourValues.Unbind();
   if (this->ProjectionRoute == VERTEX_PULLING)
     impl.DrawOrder.Unbind();
+}
+
+/// Whether this frame reads whole segments from the table: partial pre-integration with nothing
+/// that needs the cuts (isosurfaces, shading), and the table chosen or, AUTOMATIC, within the
+/// tolerance. The table is brought up to date first (only when the nodes or the longest segment
+/// changed).
+bool vtkPreIntegratedTetrahedraMapper::ChooseSegmentTable(const vtkUnstructuredVolumeFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  if (this->SegmentIntegration == EXACT || this->IntegrationMode != PARTIAL_PRE_INTEGRATION ||
+    !impl.Isovalues.empty() || impl.Shade)
+    return false;
+  impl.UpdateExtent();
+  const glm::dmat3 linear(frame.ModelToEye(impl.Mesh.Center));
+  const double longest = impl.LongestEdge * uv::LargestStretch(linear);
+  if (!(longest > 0.0))
+    return false;
+  impl.Table.Update(impl.TransferFunction.Nodes, longest, uv::SharedPsiTable());
+  return this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
+}
+
+/// The table's texture and how scalars and lengths map onto it (texel centres at the ends).
+void vtkPreIntegratedTetrahedraMapper::BindSegmentTable(vtkShaderProgram* program)
+{
+  Internals& impl = *this->Impl;
+  const uv::TetrahedronSegmentTable& table = impl.Table.Table;
+  impl.TableTexture.Bind(program, "segmentTable");
+  const float scalar[2] = { static_cast<float>(table.ScalarSize - 1) / table.ScalarSize, 0.5f / table.ScalarSize };
+  const float length[2] = { static_cast<float>((table.LengthSize - 1) / (table.LengthSize * table.MaxLength)),
+    0.5f / table.LengthSize };
+  program->SetUniform2f("scalarToTexture", scalar);
+  program->SetUniform2f("lengthToTexture", length);
 }
 
 /// Whether the order depends on the scene: skipping on, a threshold below 1, and more than one

@@ -23,7 +23,12 @@
  *   function node and each piece is integrated with the Psi table of Moreland and Angel. This is the
  *   exact integral of the project's optical model (uvOpticalModel.h) for a linear scalar, up to the
  *   table's interpolation and float arithmetic (the tests bound both). Editing the transfer
- *   function costs a texture upload at most.
+ *   function costs a texture upload at most. SegmentIntegration (see the base) chooses between these
+ *   cuts (EXACT) and one trilinear read of a table of whole segments by front scalar, back scalar and
+ *   length (TABLE: 128 x 128 x 32 texels, lengths up to the mesh's longest edge, rebuilt on the CPU
+ *   in parallel when the transfer function changes), whose cost per fragment does not grow with the
+ *   nodes; AUTOMATIC (default) takes the table where its measured error is within
+ *   TransferFunctionTolerance.
  * - AVERAGE_SCALAR: the transfer function at the segment's mean scalar (the paper's basic mode).
  *
  * Isosurfaces (any number, each with a colour and opacity) are drawn on top of either mode, lit
@@ -104,6 +109,15 @@ public:
   ///@}
 
   ///@{
+  /// The segment table (SegmentIntegration): whether the last frame read it, its builds, and its
+  /// largest error against the exact segments as last built (any channel of premultiplied colour
+  /// and opacity; -1 before the first build).
+  bool GetUsedSegmentTable();
+  int GetNumberOfSegmentTableBuilds();
+  double GetSegmentTableError();
+  ///@}
+
+  ///@{
   /// Early termination (see the class description): whether the last frame composited front to
   /// back, the share of covered pixels it left opaque (what the next frame's order is chosen by; -1
   /// where the order is not chosen), the opacity-mask refreshes it ran, and, with
@@ -135,6 +149,8 @@ protected:
   void DrawBackToFront(const vtkUnstructuredVolumeFrame& frame);
   bool DrawFrontToBack(
     const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target, vtkShaderProgram* program);
+  bool ChooseSegmentTable(const vtkUnstructuredVolumeFrame& frame);
+  void BindSegmentTable(vtkShaderProgram* program);
   bool OrderIsChosen();
   bool ChooseFrontToBack();
   bool MeasureOpaqueShare(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);

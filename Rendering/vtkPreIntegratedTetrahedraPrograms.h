@@ -30,6 +30,8 @@ struct vtkPreIntegratedTetrahedraPrograms
     bool Gradients = false;    // vertex gradients for lighting
     bool NodeTexture = false;  // more transfer-function nodes than fit in uniforms
     bool CellSurfaces = false; // a cell scalar's isosurfaces, on the faces between cells
+    bool SegmentTable = false; // one table read per segment (no isosurfaces, no shading)
+    bool NearPlaneCuts = true; // some tetrahedra may cross the near plane: ray-cast them
   };
 
   static uvgl::ProgramSources Sources(const Options& options)
@@ -39,6 +41,10 @@ struct vtkPreIntegratedTetrahedraPrograms
       defines += "#define UV_GRADIENTS\n";
     if (options.CellSurfaces)
       defines += "#define UV_CELL_SURFACES\n";
+    if (options.SegmentTable)
+      defines += "#define UV_SEGMENT_TABLE\n";
+    if (options.NearPlaneCuts)
+      defines += "#define UV_NEAR_PLANE_CUTS\n";
     const std::initializer_list<std::pair<const char*, const char*>> projection = {
       { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
     };
@@ -59,9 +65,14 @@ struct vtkPreIntegratedTetrahedraPrograms
     for (bool pulling : { true, false })
       for (bool gradients : { false, true })
         for (bool nodeTexture : { false, true })
-          all.push_back({ pulling, gradients, nodeTexture, false });
+          for (bool cuts : { true, false })
+            all.push_back({ pulling, gradients, nodeTexture, false, false, cuts });
     for (bool pulling : { true, false })
-      all.push_back({ pulling, false, false, true });
+      for (bool cuts : { true, false })
+      {
+        all.push_back({ pulling, false, false, true, false, cuts });
+        all.push_back({ pulling, false, false, false, true, cuts });
+      }
     return all;
   }
 };

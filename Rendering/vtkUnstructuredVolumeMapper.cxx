@@ -230,4 +230,8 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
+  os << indent << "TransferFunctionTolerance: " << this->TransferFunctionTolerance << "\n";
+  os << indent << "SegmentIntegration: "
+     << (this->SegmentIntegration == AUTOMATIC ? "Automatic" : this->SegmentIntegration == TABLE ? "Table" : "Exact")
+     << "\n";
 }

@@ -110,6 +110,29 @@ public:
   vtkGetMacro(NumberOfTransferFunctionNodes, int);
   ///@}
 
+  enum SegmentIntegrations
+  {
+    AUTOMATIC = 0,
+    TABLE = 1,
+    EXACT = 2
+  };
+  ///@{
+  /// How a segment along which the scalar is linear (a ray through a tetrahedron, or between two
+  /// shell samples) is integrated. EXACT: cut at every transfer-function node crossed, each piece
+  /// pre-integrated (reference-grade; the cost grows with the nodes crossed). TABLE: one filtered
+  /// read of a table of whole segments, built on the CPU in parallel when the transfer function
+  /// changes: one read whatever the nodes, but features narrower than a few of its texels blur.
+  /// AUTOMATIC (default): the table where its largest error against the exact segments, measured
+  /// when it is built, is within TransferFunctionTolerance; EXACT otherwise. Isosurfaces and
+  /// shading need the cuts and always integrate exactly. The hexahedral ray caster, whose scalar
+  /// is not linear along a ray, ignores it.
+  vtkSetClampMacro(SegmentIntegration, int, AUTOMATIC, EXACT);
+  vtkGetMacro(SegmentIntegration, int);
+  void SetSegmentIntegrationToAutomatic() { this->SetSegmentIntegration(AUTOMATIC); }
+  void SetSegmentIntegrationToTable() { this->SetSegmentIntegration(TABLE); }
+  void SetSegmentIntegrationToExact() { this->SetSegmentIntegration(EXACT); }
+  ///@}
+
   ///@{
   /// Early ray termination: a pixel's ray stops once its accumulated opacity reaches this (1: never).
   /// The hexahedral caster stops each ray (default 0.99), the shells mask pixels between shells
@@ -157,6 +180,7 @@ protected:
   bool SkipInvisibleCells = true;
   double OpacityThreshold = 1.0;
   double TransferFunctionTolerance = 1e-3;
+  int SegmentIntegration = AUTOMATIC;
   int NumberOfTransferFunctionNodes = 0; ///< set by the mapper when it rebuilds its nodes
 
 private:

@@ -29,7 +29,7 @@ public:
   {
     if (!this->Psi.IsCreatedFor(window))
     {
-      static const uv::PsiTable table;
+      const uv::PsiTable& table = uv::SharedPsiTable();
       const int size = table.GetSize();
       this->Psi.Sync(window, size, size, 1, table.GetValues(), vtkUnstructuredVolumeTexture::Filter::Linear);
     }

@@ -9,7 +9,9 @@
 // integrates each piece exactly with the Psi table (uvPreIntegration.h is the CPU twin). AverageScalar
 // uses the transfer function at the mean scalar for the whole segment (the paper's basic mode).
 // Isosurfaces are further cuts: at each one the segment composites the surface's colour, lit
-// (Phong) with the gradient interpolated between the front and back points.
+// (Phong) with the gradient interpolated between the front and back points. With UV_SEGMENT_TABLE
+// (no isosurfaces, no shading) one trilinear read of a table of whole segments by front scalar, back
+// scalar and length (uvTetrahedronSegmentTable.h) stands in for the cuts.
 noperspective in vec3 frontData; // (scalar, eye z, 1) / w on the front surface
 noperspective in vec3 backData;
 #ifdef UV_GRADIENTS
@@ -18,7 +20,7 @@ noperspective in vec3 backGradientOverW;
 uniform samplerBuffer pointGradients;
 uniform mat3 modelToEyeNormals;
 #endif
-flat in int rayCastTetrahedron;  // >= 0: intersect the eye ray with this tetrahedron here
+flat in int rayCastTetrahedron;  // >= 0: intersect the eye ray with this tetrahedron here (UV_NEAR_PLANE_CUTS)
 #ifdef UV_CELL_SURFACES
 // A cell scalar's isosurfaces, the faces between cells on either side of the value: each
 // tetrahedron draws those on its front face (the one the ray enters by), over its own segment.
@@ -33,6 +35,18 @@ uniform sampler2D opaqueDepth;      // the scene's depth buffer before the volum
 uniform mat4 clipToEye;
 uniform vec2 viewportSize;
 uniform int parallelProjection;
+// The eye ray at pixel (x, y) is affine in it: perspective, its direction is (dot(rayX, (x, y, 1)),
+// dot(rayY, (x, y, 1)), -1) from the eye; parallel, its origin is (those, 0) and it runs along -z.
+uniform vec3 rayX;
+uniform vec3 rayY;
+#ifdef UV_NEAR_PLANE_CUTS
+uniform float nearDepth; // where rays begin
+#endif
+#ifdef UV_SEGMENT_TABLE
+uniform sampler3D segmentTable;
+uniform vec2 scalarToTexture;   // texture coordinate = scalar * x + y (texel centres at 0 and 1)
+uniform vec2 lengthToTexture;   // the same for a length up to the table's longest
+#endif
 
 //UV::TransferFunction
 
@@ -82,11 +96,12 @@ void main()
   float frontScalar, backScalar;
   vec3 frontGradient = vec3(0.0), backGradient = vec3(0.0);
   vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
-  // This pixel's eye ray: through nearPoint, from the eye (perspective) or along -z (parallel).
-  vec4 nearPoint = clipToEye * vec4(ndc, -1.0, 1.0);
-  nearPoint /= nearPoint.w;
-  vec3 origin = parallelProjection == 1 ? vec3(nearPoint.xy, 0.0) : vec3(0.0);
-  vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : nearPoint.xyz / -nearPoint.z;
+  vec2 ray = vec2(dot(rayX, vec3(gl_FragCoord.xy, 1.0)), dot(rayY, vec3(gl_FragCoord.xy, 1.0)));
+  vec3 origin = parallelProjection == 1 ? vec3(ray, 0.0) : vec3(0.0);
+  vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : vec3(ray, -1.0);
+#ifdef UV_NEAR_PLANE_CUTS
+  // Only compiled in when the near plane cuts the mesh's bounds: CPU rasterisers pay for a branch's
+  // body in every fragment, taken or not.
   if (rayCastTetrahedron >= 0)
   {
     // A tetrahedron too near to project: intersect the ray with its four faces.
@@ -107,7 +122,7 @@ void main()
     }
     // Ray parameter: eye depth (direction.z = -1); the ray begins on the near plane, as in the
     // reference, so matter between the eye and that plane is not seen.
-    float enter = -nearPoint.z, leave = 3.0e38;
+    float enter = nearDepth, leave = 3.0e38;
     for (int k = 0; k < 4; ++k)
     {
       vec3 a = p[(k + 1) % 4], b = p[(k + 2) % 4], c = p[(k + 3) % 4];
@@ -139,6 +154,7 @@ void main()
     backGradient = wb.x * g[0] + wb.y * g[1] + wb.z * g[2] + wb.w * g[3];
   }
   else
+#endif
   {
     // Each surface's (scalar, z, 1) / w interpolates linearly on screen: divide back out.
     frontScalar = frontData.x / frontData.z;
@@ -168,9 +184,14 @@ void main()
     backGradient = mix(frontGradient, backGradient, u);
   }
   float segmentLength = distance(frontPoint, backPoint);
+#ifdef UV_SEGMENT_TABLE
+  vec3 coordinates = vec3(clamp(vec2(frontScalar, backScalar), 0.0, 1.0) * scalarToTexture.x + scalarToTexture.y,
+    min(segmentLength * lengthToTexture.x + lengthToTexture.y, 1.0));
+  vec4 result = texture(segmentTable, coordinates);
+#else
   vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-frontPoint);
-
   vec4 result = IntegrateSegment(frontScalar, backScalar, frontGradient, backGradient, segmentLength, toEye);
+#endif
 #ifdef UV_CELL_SURFACES
   vec4 surfaces = FrontFaceSurfaces(frontPoint, direction, toEye);
   result = surfaces + (1.0 - surfaces.a) * result;

@@ -182,10 +182,14 @@ Projection Project()
   if (beyond < 4)
   {
     result.mode = beyond == 0 ? 0 : 2; // wholly before the near plane: no ray reaches it
+#ifdef UV_NEAR_PLANE_CUTS
     if (beyond > 0)
     {
       NearClippedBounds(result.screen[0], result.screen[1]);
     }
+#else
+    result.mode = 0; // the mapper found no tetrahedron can cross the plane; rounding aside, none does
+#endif
     return result;
   }
   vec2 p[4];

@@ -36,12 +36,6 @@ void vtkBarycentricShellRepresentation::SetSlicesPerShell(int slices)
   this->MarkModified();
 }
 
-void vtkBarycentricShellRepresentation::SetSegmentIntegration(int integration)
-{
-  this->ShellMapper->SetSegmentIntegration(integration);
-  this->MarkModified();
-}
-
 void vtkBarycentricShellRepresentation::SetIsosurfaceLayers(int layers)
 {
   this->ShellMapper->SetIsosurfaceLayers(layers);

@@ -29,7 +29,6 @@ public:
   void SetSampleDistance(double distance);
   void SetAutomaticSamplesAcross(int samples);
   void SetSlicesPerShell(int slices);
-  void SetSegmentIntegration(int integration);
   void SetIsosurfaceLayers(int layers);
   void SetGradientMode(int mode);
   ///@}

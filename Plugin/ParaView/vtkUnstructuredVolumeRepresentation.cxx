@@ -83,6 +83,12 @@ void vtkUnstructuredVolumeRepresentation::SetTransferFunctionTolerance(double to
   this->MarkModified();
 }
 
+void vtkUnstructuredVolumeRepresentation::SetSegmentIntegration(int integration)
+{
+  this->PinnedMapper->SetSegmentIntegration(integration);
+  this->MarkModified();
+}
+
 void vtkUnstructuredVolumeRepresentation::SetOpacityThreshold(double threshold)
 {
   this->PinnedMapper->SetOpacityThreshold(threshold);

@@ -55,6 +55,9 @@ public:
   /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetTransferFunctionTolerance).
   void SetTransferFunctionTolerance(double tolerance);
 
+  /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetSegmentIntegration).
+  void SetSegmentIntegration(int integration);
+
 protected:
   vtkUnstructuredVolumeRepresentation();
   ~vtkUnstructuredVolumeRepresentation() override;

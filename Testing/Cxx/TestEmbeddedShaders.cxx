@@ -69,12 +69,13 @@ protected:
 TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
 {
   const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
-  EXPECT_EQ(all.size(), 10u);
+  EXPECT_EQ(all.size(), 24u);
   for (const auto& options : all)
   {
     const std::string variant = std::string("tetrahedra program, ") +
       (options.VertexPulling ? "vertex pulling" : "geometry shader") + (options.Gradients ? ", gradients" : "") +
-      (options.NodeTexture ? ", node texture" : "") + (options.CellSurfaces ? ", cell surfaces" : "");
+      (options.NodeTexture ? ", node texture" : "") + (options.CellSurfaces ? ", cell surfaces" : "") +
+      (options.SegmentTable ? ", segment table" : "") + (options.NearPlaneCuts ? ", near-plane cuts" : "");
     this->ExpectLinks(vtkPreIntegratedTetrahedraPrograms::Sources(options), variant);
   }
 }

@@ -30,10 +30,36 @@ class AccuracyTests(SceneTestCase):
         return error
 
     def test_perspective_marschner_lobb_at_512(self):
-        # Measured RMSE 3e-6 (max 3e-4) against the aim of 2e-3.
+        # Exact segments (cut at every node): the integral up to the Psi table and float rounding.
         mesh = analytic(8)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-        self.check(mesh, prop, camera_for(mesh), 512, 2e-5)
+        self.check(mesh, prop, camera_for(mesh), 512, 2e-5, SegmentIntegration=2)
+
+    def test_segment_table_within_its_measured_error(self):
+        # AUTOMATIC reads the table of whole segments where its largest error against exact
+        # segments, measured when built, is within the tolerance: each segment is then off by at
+        # most that, and a pixel by at most the sum over its segments; the image's RMSE stays an
+        # order of magnitude under the tolerance on this smooth function.
+        mesh = analytic(8)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        scene = Scene(mesh, prop, camera_for(mesh), 256)
+        image = scene.render()
+        self.assertTrue(scene.mapper.GetUsedSegmentTable())
+        table_error = scene.mapper.GetSegmentTableError()
+        self.assertLess(table_error, scene.mapper.GetTransferFunctionTolerance())
+        error, worst = rmse(image, reference(mesh, prop, camera_for(mesh), 256))
+        print(f"\n  table error {table_error:.3g}; image RMSE {error:.3g}, max {worst:.3g}", end="")
+        self.assertLess(error, 1e-4)
+        # TABLE forced where it is too coarse (a thin opaque spike): AUTOMATIC refuses it.
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        spike = spike_property(low, high, 0.02)
+        automatic = Scene(mesh, spike, camera_for(mesh), 64)
+        automatic.render()
+        self.assertFalse(automatic.mapper.GetUsedSegmentTable())
+        self.assertGreater(automatic.mapper.GetSegmentTableError(), 1e-3)
+        forced = Scene(mesh, spike, camera_for(mesh), 64, SegmentIntegration=1)
+        forced.render()
+        self.assertTrue(forced.mapper.GetUsedSegmentTable())
 
     def test_parallel_twisted_mesh_split_on_the_fly(self):
         # Hexahedra in: the mapper splits them (one warning) and renders the tets exactly.
