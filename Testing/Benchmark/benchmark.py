@@ -18,8 +18,10 @@ table, and its ratios against VTK's mappers, so that the published numbers are a
 
 Mappers register in MAPPERS below: a name, a factory, and the input it takes: "tets" (the scene's
 mesh split into tetrahedra), "hexahedra" (the mesh itself; run on scenes of the cells the hexahedral
-walk takes: hexahedra, voxels, wedges, pyramids, tetrahedra) or "image" (image-data scenes only: the
-image itself, whose voxels the other mappers take).
+walk takes: hexahedra, voxels, wedges, pyramids, tetrahedra), "image" (image-data scenes only: the
+image itself, whose voxels the other mappers take) or "any" (the mesh itself, whatever its cells:
+every scene). ParaView's Resample To Image (resampled_volume.py) takes "any": its factory resamples
+the mesh, and the resampling counts in its first frame (the preparation).
 """
 import argparse
 import csv
@@ -59,20 +61,29 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
 from fixtures import analytic, hex_dominant, sampled_color_map  # noqa: E402
+from resampled_volume import ResampleToImage  # noqa: E402
 from shared_data import (SHARED, bluntfin, bucky_image, can, disk_out_ref, image_as_voxels, legacy,  # noqa: E402
                          neghip_image, openfoam_cavity_cells)
 REFERENCE_VERSION = "3"  # bump when the reference renderer's output changes (2: no lost cells, superposition; 3: rounding overlaps touch)
 
 # ---------------------------------------------------------------------------------------------
-# Mappers: (name, factory, input: "tets", "hexahedra" or "image"). This project's mappers register here as
-# they land.
+# Mappers: (name, factory, input: "tets", "hexahedra", "image" or "any"). This project's mappers register
+# here as they land.
 MAPPERS = [
     # Image-data scenes only: VTK's GPU ray caster on the image itself (the others take its voxels).
     ("VTK GPUVolumeRayCast", vtkGPUVolumeRayCastMapper, "image"),
+    # ParaView's Resample To Image (128^3 its default): the mesh resampled, then VTK's GPU ray caster,
+    # blanking the points outside the mesh as ParaView does; and once with the valid-point mask as the
+    # ray caster's binary mask instead of the blanking.
+    *[(f"VTK Resample {n}^3", ResampleToImage(n), "any") for n in (64, 128, 256)],
+    ("VTK Resample 128^3 masked", ResampleToImage(128, binary_mask=True), "any"),
     ("VTK ProjectedTetrahedra", vtkProjectedTetrahedraMapper, "tets"),
     ("VTK UGVolumeRayCast", vtkUnstructuredGridVolumeRayCastMapper, "tets"),
     ("VTK UGZSweep", vtkUnstructuredGridVolumeZSweepMapper, "tets"),
     ("UV PreIntegratedTetrahedra", vtkPreIntegratedTetrahedraMapper, "tets"),
+    # Exact segments (cut at every node) where the default reads its segment table.
+    ("UV PreIntegratedTetrahedra, exact segments",
+     lambda: configured(vtkPreIntegratedTetrahedraMapper, SegmentIntegration=2), "tets"),
     ("UV PreIntegrated (geometry shader)", lambda: configured(vtkPreIntegratedTetrahedraMapper,
                                                              ProjectionRouteToGeometryShader=None), "tets"),
     ("UV AverageScalarTetrahedra", lambda: configured(vtkPreIntegratedTetrahedraMapper,
@@ -367,19 +378,27 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
     window.SetMultiSamples(0)
     window.SetSize(size, size)
     window.AddRenderer(renderer)
-    mapper = factory()
-    mapper.SetInputData(mesh)
+    filtering, filter_memory = 0.0, 0.0
+    if isinstance(factory, ResampleToImage):
+        # ParaView resamples in its representation's update, before the first render: the filter's time
+        # and memory count in the first frame's. The image holds a cell array as point data.
+        before, start = resident_megabytes(), time.perf_counter()
+        mapper = factory.mapper_for(mesh, array_name(scalar) if scalar else None)
+        filtering, filter_memory = time.perf_counter() - start, resident_megabytes() - before
+    else:
+        mapper = factory()
+        mapper.SetInputData(mesh)
+        if scalar:
+            if on_cells(scalar):
+                mapper.SetScalarModeToUseCellFieldData()
+            else:
+                mapper.SetScalarModeToUsePointFieldData()
+            mapper.SelectScalarArray(array_name(scalar))
     # This project's mappers keep their float image: the error is then the integral's, not the 8-bit
     # window's rounding (about 0.0011 RMSE). Reading it back costs a few ms of a frame.
     float_image = hasattr(mapper, "SetKeepFloatImage")
     if float_image:
         mapper.SetKeepFloatImage(True)
-    if scalar:
-        if on_cells(scalar):
-            mapper.SetScalarModeToUseCellFieldData()
-        else:
-            mapper.SetScalarModeToUsePointFieldData()
-        mapper.SelectScalarArray(array_name(scalar))
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
@@ -390,8 +409,8 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
     start = time.perf_counter()
     window.Render()
     window.WaitForCompletion()
-    preparation = time.perf_counter() - start
-    memory = resident_megabytes() - before
+    preparation = filtering + time.perf_counter() - start
+    memory = filter_memory + resident_megabytes() - before
     frames, images = [], []
     for camera in cameras:
         renderer.SetActiveCamera(camera)
@@ -681,12 +700,12 @@ def readme_text(rows, command, started, machine, partial):
         out += ["", "**Partial run** (" + partial + "): a placeholder until the full run, not the benchmark's results."]
     out += [
         "",
-        "Per scene and mapper: the first frame (preparation), the median frame time over an orbit of views",
-        "[fastest-slowest] (each frame ends with glFinish), the RMSE of premultiplied RGB over the covered",
-        "pixels against vtkUnstructuredVolumeReferenceRenderer at the same view (averaged over the views;",
-        "this project's mappers on their float image, VTK's on the 8-bit window) and the largest error, the",
-        "resident memory the first frame added, and the GPU buffers of the mesh per cell of the scene (this",
-        "project's mappers).",
+        "Per scene and mapper: the first frame (preparation; for VTK Resample, ParaView's Resample To Image,",
+        "the resampling and the first frame), the median frame time over an orbit of views [fastest-slowest]",
+        "(each frame ends with glFinish), the RMSE of premultiplied RGB over the covered pixels against",
+        "vtkUnstructuredVolumeReferenceRenderer at the same view (averaged over the views; this project's",
+        "mappers on their float image, VTK's on the 8-bit window) and the largest error, the resident memory",
+        "the first frame added, and the GPU buffers of the mesh per cell of the scene (this project's mappers).",
         "",
         markdown_table(rows).rstrip("\n"),
         "",
@@ -740,6 +759,10 @@ def main():
                    "vtk": vtkVersion.GetVTKVersion()}
     wanted_scenes = args.scenes.split(",") if args.scenes else None
     mappers = [m for m in MAPPERS if not args.mappers or any(w in m[0] for w in args.mappers.split(","))]
+    if args.quick:
+        # A smoke test: resampling to 256^3 points would outlast the rest of it, and 64^3 and 128^3 run
+        # the same code.
+        mappers = [m for m in mappers if not (isinstance(m[1], ResampleToImage) and m[1].samples > 128)]
     size = args.size or (128 if args.quick else 512)
     views = args.views or (4 if args.quick else 8)
     os.makedirs(args.output, exist_ok=True)
@@ -778,7 +801,8 @@ def main():
             if (takes == "hexahedra" and not hexahedral) or (takes == "image" and scene_image is None):
                 continue
             preparation, frames, memory, images, mesh_bytes, work = run_mapper(
-                name, factory, {"tets": tets, "hexahedra": drawn, "image": scene_image}[takes], scalar, prop, cameras, size)
+                name, factory, {"tets": tets, "hexahedra": drawn, "image": scene_image, "any": drawn}[takes], scalar,
+                prop, cameras, size)
             errors = []
             for k, (image, reference) in enumerate(zip(images, references)):
                 metrics = vtkVolumeImageErrorMetrics()
