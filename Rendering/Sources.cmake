@@ -22,7 +22,7 @@ foreach (header IN ITEMS
     uvBarycentricShell uvCellVisibility uvChebyshevSeries uvCurvedCell uvLatticeBasis uvHexahedralMesh uvHexahedronRay uvVisibleRegion
     uvImageErrorMetrics
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
-    uvScalarNormalisation uvShellBuckets uvTetrahedronSegmentTable uvTransferFunctionSimplification uvVisibilitySort
+    uvFaceAdjacencyOrder uvScalarNormalisation uvShellBuckets uvTetrahedronSegmentTable uvTransferFunctionSimplification uvVisibilitySort
     vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms vtkPreIntegratedTetrahedraSegmentTable
     vtkBarycentricShellBlendPass vtkBarycentricShellCellDrawer vtkBarycentricShellCellProjectionPass
     vtkBarycentricShellImageTexture vtkBarycentricShellIsosurfacePeelPass vtkUnstructuredVolumeOpacityMask

@@ -117,7 +117,7 @@ public:
   std::vector<double> Isovalues;
   uv::CellLists Lists;
   uvvtk::VertexGradientCache Gradients;
-  uvvtk::CentroidOrder Order; // cell projection
+  uvvtk::VisibilityOrder Order; // cell projection
   std::vector<glm::vec3> EyePoints;
   std::vector<glm::vec2> ScreenPoints; // normalised device coordinates (NaN: not in front of the eye)
   uv::RangedCells VolumeRanges, IsosurfaceRanges;
@@ -203,7 +203,7 @@ public:
   void UpdateGradients(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   void UpdateSampleDistance(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateShells(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
-  void UpdateOrder(const vtkUnstructuredVolumeFrame& frame);
+  void UpdateOrder(const vtkUnstructuredVolumeFrame& frame, bool exact);
 
   void UploadMesh(vtkOpenGLRenderWindow* window);
   void UploadTextureCoordinates(vtkOpenGLRenderWindow* window);
@@ -454,13 +454,14 @@ bool vtkBarycentricShellMapper::Internals::UpdateShells(
   return true;
 }
 
-/// Cell projection's back-to-front order by centroid distance (as vtkPreIntegratedTetrahedraMapper),
-/// sorted again only when the view, the points or the drawn cells changed.
-void vtkBarycentricShellMapper::Internals::UpdateOrder(const vtkUnstructuredVolumeFrame& frame)
+/// Cell projection's back-to-front order by centroid distance, made exact across faces with `exact`
+/// (as vtkPreIntegratedTetrahedraMapper), sorted again only when the view, the points or the drawn
+/// cells changed.
+void vtkBarycentricShellMapper::Internals::UpdateOrder(const vtkUnstructuredVolumeFrame& frame, bool exact)
 {
   const glm::dvec3 center = this->Mesh.Center;
-  this->Order.Update(
-    this->Mesh, this->Lists.Drawn, frame.EyeInModel(center), frame.ViewInModel(center), frame.Parallel);
+  this->Order.Update(this->Mesh, this->Lists.Drawn, frame.EyeInModel(center), frame.ViewInModel(center),
+    frame.Parallel, false, exact);
 }
 
 // ---- Upload's steps.
@@ -853,7 +854,8 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   impl.UpdateSampleDistance(this, frame);
   if (impl.Now.CellProjection)
   {
-    impl.UpdateOrder(frame);
+    impl.UpdateOrder(frame, this->VisibilityOrder == FACE_ORDER);
+    this->NumberOfCyclesBroken = static_cast<vtkIdType>(impl.Order.CyclesBroken);
   }
   else if (!impl.UpdateShells(this, frame))
   {

@@ -108,7 +108,7 @@ public:
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
   std::vector<double> Isovalues;
   uv::CellLists Visible;
-  uvvtk::CentroidOrder Order;
+  uvvtk::VisibilityOrder Order;
   uvvtk::MeshWarnings Warned;
   bool NeedGradients = false, Shade = false;
   // A cell scalar's isosurfaces (faces between cells): per tetrahedron the values across its faces,
@@ -404,7 +404,8 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   // back to front, which needs no mask passes.
   impl.FrontToBack = this->ChooseFrontToBack();
   impl.Order.Update(impl.Mesh, impl.Visible.Drawn, frame.EyeInModel(impl.Mesh.Center),
-    frame.ViewInModel(impl.Mesh.Center), frame.Parallel, impl.FrontToBack);
+    frame.ViewInModel(impl.Mesh.Center), frame.Parallel, impl.FrontToBack, this->VisibilityOrder == FACE_ORDER);
+  this->NumberOfCyclesBroken = static_cast<vtkIdType>(impl.Order.CyclesBroken);
   return true;
 }
 

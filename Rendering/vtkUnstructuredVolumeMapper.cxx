@@ -231,6 +231,7 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
   os << indent << "TransferFunctionTolerance: " << this->TransferFunctionTolerance << "\n";
+  os << indent << "VisibilityOrder: " << (this->VisibilityOrder == FACE_ORDER ? "FaceOrder" : "CentroidOrder") << "\n";
   os << indent << "SegmentIntegration: "
      << (this->SegmentIntegration == AUTOMATIC ? "Automatic" : this->SegmentIntegration == TABLE ? "Table" : "Exact")
      << "\n";

@@ -133,6 +133,27 @@ public:
   void SetSegmentIntegrationToExact() { this->SetSegmentIntegration(EXACT); }
   ///@}
 
+  enum VisibilityOrders
+  {
+    CENTROID_ORDER = 0,
+    FACE_ORDER = 1
+  };
+  ///@{
+  /// The order tetrahedra are composited in where they are drawn one by one (the tetrahedra
+  /// mapper, the shells' cell projection). CENTROID_ORDER: by the distance of their centroids from
+  /// the eye, which is wrong for some pairs of long, twisted or nearby tetrahedra. FACE_ORDER: that
+  /// order changed wherever two tetrahedra sharing a face are in the wrong order for the side of
+  /// the face the eye is on (MPVO; uvFaceAdjacencyOrder.h): exact on convex meshes, and across the
+  /// gaps of a non-convex mesh the centroid order stands. It costs a face adjacency (16 bytes per
+  /// tetrahedron, built once per mesh) and a serial sweep per view. GetNumberOfCyclesBroken: the
+  /// tetrahedra drawn before a neighbour behind them because the constraints formed a cycle.
+  vtkSetClampMacro(VisibilityOrder, int, CENTROID_ORDER, FACE_ORDER);
+  vtkGetMacro(VisibilityOrder, int);
+  void SetVisibilityOrderToCentroidOrder() { this->SetVisibilityOrder(CENTROID_ORDER); }
+  void SetVisibilityOrderToFaceOrder() { this->SetVisibilityOrder(FACE_ORDER); }
+  vtkGetMacro(NumberOfCyclesBroken, vtkIdType);
+  ///@}
+
   ///@{
   /// Early ray termination: a pixel's ray stops once its accumulated opacity reaches this (1: never).
   /// The hexahedral caster stops each ray (default 0.99), the shells mask pixels between shells
@@ -181,6 +202,8 @@ protected:
   double OpacityThreshold = 1.0;
   double TransferFunctionTolerance = 1e-3;
   int SegmentIntegration = AUTOMATIC;
+  int VisibilityOrder = FACE_ORDER;
+  vtkIdType NumberOfCyclesBroken = 0; ///< set by the mappers that order tetrahedra
   int NumberOfTransferFunctionNodes = 0; ///< set by the mapper when it rebuilds its nodes
 
 private:

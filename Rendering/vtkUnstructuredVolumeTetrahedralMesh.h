@@ -6,6 +6,7 @@
 #define vtkUnstructuredVolumeTetrahedralMesh_h
 
 #include "uvCellVisibility.h"
+#include "uvFaceAdjacencyOrder.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
 #include "vtkUnstructuredVolumePointData.h"
@@ -427,13 +428,16 @@ private:
 };
 
 /// Tetrahedra in back-to-front order of their centroids' distance from the eye (along the view under
-/// parallel projection; parallel radix sort), sorted again only when the view changes or after
+/// parallel projection; parallel radix sort), and with `exact`, that order changed where the faces
+/// between tetrahedra say it is wrong (uvFaceAdjacencyOrder.h; the face adjacency is built on the
+/// first exact order of new cells). Sorted again only when the view or `exact` changes, or after
 /// Invalidate (new cells, moved points).
-class CentroidOrder
+class VisibilityOrder
 {
 public:
   std::vector<std::uint32_t> Order;
   int Sorts = 0;
+  std::size_t CyclesBroken = 0; ///< of the last exact order
   std::uint64_t Version = 0; ///< bumped by every sort
 
   void Invalidate() { this->Valid = false; }
@@ -441,9 +445,10 @@ public:
   /// Eye and view direction in the mesh's recentred frame; back to front, or front to back as its
   /// exact reverse (so that compositing either way sums the same terms). True when the order changed.
   bool Update(const TetrahedralMesh& mesh, const std::vector<std::uint32_t>& cells, const glm::dvec3& eye,
-    const glm::dvec3& direction, bool parallel, bool frontToBack = false)
+    const glm::dvec3& direction, bool parallel, bool frontToBack = false, bool exact = false)
   {
-    if (this->Valid && eye == this->Eye && direction == this->Direction && parallel == this->Parallel)
+    if (this->Valid && eye == this->Eye && direction == this->Direction && parallel == this->Parallel &&
+      exact == this->Exact)
     {
       if (frontToBack == this->FrontToBack)
         return false;
@@ -452,6 +457,35 @@ public:
       ++this->Version;
       return true;
     }
+    this->SortByCentroids(mesh, cells, eye, direction, parallel);
+    this->CyclesBroken = 0;
+    if (exact)
+      this->FollowFaces(mesh, parallel ? -direction : eye, parallel);
+    if (frontToBack)
+      std::reverse(this->Order.begin(), this->Order.end());
+    this->FrontToBack = frontToBack;
+    this->Eye = eye;
+    this->Direction = direction;
+    this->Parallel = parallel;
+    this->Exact = exact;
+    this->Valid = true;
+    ++this->Sorts;
+    ++this->Version;
+    return true;
+  }
+
+  /// Bytes kept between frames (keys, scratch, adjacency and the exact order's state).
+  std::size_t GetBytes() const
+  {
+    return sizeof(std::uint32_t) * (this->Order.capacity() + this->Keys.capacity() + this->ScratchKeys.capacity() +
+                                     this->ScratchOrder.capacity()) +
+      sizeof(std::int32_t) * this->Adjacency.capacity() + this->Faces.GetBytes();
+  }
+
+private:
+  void SortByCentroids(const TetrahedralMesh& mesh, const std::vector<std::uint32_t>& cells, const glm::dvec3& eye,
+    const glm::dvec3& direction, bool parallel)
+  {
     const std::size_t n = cells.size();
     this->Keys.resize(n);
     this->Order = cells;
@@ -472,22 +506,49 @@ public:
       });
     };
     uv::RadixSortPairs(this->Keys, this->Order, this->ScratchKeys, this->ScratchOrder, parallelChunks);
-    if (frontToBack)
-      std::reverse(this->Order.begin(), this->Order.end());
-    this->FrontToBack = frontToBack;
-    this->Eye = eye;
-    this->Direction = direction;
-    this->Parallel = parallel;
-    this->Valid = true;
-    ++this->Sorts;
-    ++this->Version;
-    return true;
   }
 
-private:
+  /// The back-to-front centroid order made exact across faces; `eye` is the direction towards the
+  /// eye under parallel projection.
+  void FollowFaces(const TetrahedralMesh& mesh, const glm::dvec3& eye, bool parallel)
+  {
+    // Faces match by the input's point ids (a cell scalar gives each tetrahedron points of its own).
+    const std::vector<std::uint32_t>& drawn = mesh.TetrahedronPoints;
+    std::vector<std::uint32_t> corners;
+    const bool ownPoints = !mesh.CornerPoints.empty();
+    if (ownPoints)
+    {
+      corners.resize(drawn.size());
+      for (std::size_t i = 0; i < drawn.size(); ++i)
+        corners[i] = mesh.CornerPoints[drawn[i]];
+    }
+    const std::vector<std::uint32_t>& ids = ownPoints ? corners : drawn;
+    if (this->AdjacencyFor != mesh.CellsVersion)
+    {
+      this->Adjacency =
+        uv::MakeTetrahedronFaceAdjacency(ids, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
+      this->AdjacencyFor = mesh.CellsVersion;
+    }
+    const float* points = mesh.PointData.data();
+    const auto position = [&](std::size_t t, int k) {
+      const float* p = points + 4 * static_cast<std::size_t>(drawn[4 * t + k]);
+      return glm::dvec3(p[0], p[1], p[2]);
+    };
+    this->Faces.Sort(this->Order, ids, position, this->Adjacency, eye, parallel,
+      [](std::size_t count, const auto& run) {
+        vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+          run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+        });
+      });
+    this->CyclesBroken = this->Faces.CyclesBroken;
+  }
+
   std::vector<std::uint32_t> Keys, ScratchKeys, ScratchOrder;
+  std::vector<std::int32_t> Adjacency;
+  std::uint64_t AdjacencyFor = 0; // the mesh's CellsVersion
+  uv::FaceAdjacencyOrder Faces;
   glm::dvec3 Eye{ 0.0 }, Direction{ 0.0 };
-  bool Parallel = false, Valid = false, FrontToBack = false;
+  bool Parallel = false, Valid = false, FrontToBack = false, Exact = false;
 };
 
 } // namespace uvvtk

@@ -78,6 +78,25 @@ class AccuracyTests(SceneTestCase):
         error, _ = self.error(mesh, prop, camera_for(mesh), RenderMode=CELL_PROJECTION)
         self.assertLess(error, 1e-5)
 
+    def test_cell_projection_face_order_on_a_twisted_mesh(self):
+        # Twisted cells: the centroid order is wrong for some pairs of tetrahedra sharing a face; the
+        # face order (default) leaves only the integration's error.
+        from unstructuredvolume import vtkHexahedraToTetrahedra
+        hexes = analytic(6, ML, vtkAnalyticMeshSource.TWIST, vtkAnalyticMeshSource.HEXAHEDRA)
+        split = vtkHexahedraToTetrahedra()
+        split.SetInputData(hexes)
+        split.Update()
+        mesh = split.GetOutput()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        camera = camera_for(mesh, 50, -20, parallel=True)
+        face, scene = self.error(mesh, prop, camera, RenderMode=CELL_PROJECTION, SegmentIntegration=2)
+        centroid, _ = self.error(mesh, prop, camera, RenderMode=CELL_PROJECTION, SegmentIntegration=2,
+                                 VisibilityOrder=0)
+        print(f"\n  face order {face:.3g}, centroid order {centroid:.3g}", end="")
+        self.assertLess(face, 2e-6)
+        self.assertGreater(centroid, 1e-4)
+        self.assertEqual(scene.mapper.GetNumberOfCyclesBroken(), 0)
+
     def test_spike_transfer_function_parallel(self):
         # A thin opaque spike: the samples' segments are pre-integrated across it, so sampling does
         # not miss it.
