@@ -19,7 +19,8 @@ uv_representation_entry(
   PROXY PreIntegratedTetrahedraRepresentation
   MENU "Volume (Pre-integrated Tetrahedra)"
   GROUP "Pre-integrated Tetrahedra"
-  PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance OpacityThreshold ProjectionRoute
+  PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance SegmentIntegration
+    VisibilityOrder OpacityThreshold ProjectionRoute
   UNSHARED OpacityThreshold TetrahedraOpacityThreshold)
 
 uv_representation_entry(
@@ -27,7 +28,8 @@ uv_representation_entry(
   MENU "Volume (Barycentric Shells)"
   GROUP "Barycentric Shells"
   PROPERTIES RenderMode SampleDistance AutomaticSamplesAcross Isovalues IsosurfaceOpacity SkipInvisibleCells
-    TransferFunctionTolerance SlicesPerShell OpacityThreshold IsosurfaceLayers SegmentIntegration ProjectionRoute GradientMode
+    TransferFunctionTolerance SlicesPerShell OpacityThreshold IsosurfaceLayers SegmentIntegration VisibilityOrder ProjectionRoute
+    GradientMode
   # The shells stop at 0.999, the hexahedral rays at 0.99: one shared value would change one default.
   UNSHARED OpacityThreshold ShellOpacityThreshold)
 

@@ -89,6 +89,12 @@ void vtkUnstructuredVolumeRepresentation::SetSegmentIntegration(int integration)
   this->MarkModified();
 }
 
+void vtkUnstructuredVolumeRepresentation::SetVisibilityOrder(int order)
+{
+  this->PinnedMapper->SetVisibilityOrder(order);
+  this->MarkModified();
+}
+
 void vtkUnstructuredVolumeRepresentation::SetOpacityThreshold(double threshold)
 {
   this->PinnedMapper->SetOpacityThreshold(threshold);

@@ -58,6 +58,9 @@ public:
   /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetSegmentIntegration).
   void SetSegmentIntegration(int integration);
 
+  /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetVisibilityOrder).
+  void SetVisibilityOrder(int order);
+
 protected:
   vtkUnstructuredVolumeRepresentation();
   ~vtkUnstructuredVolumeRepresentation() override;
