@@ -23,7 +23,7 @@ foreach (header IN ITEMS
     uvImageErrorMetrics
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
     uvFaceAdjacencyOrder uvScalarNormalisation uvShellBuckets uvTetrahedronSegmentTable uvTransferFunctionSimplification uvVisibilitySort
-    vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms vtkPreIntegratedTetrahedraSegmentTable
+    vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms
     vtkBarycentricShellBlendPass vtkBarycentricShellCellDrawer vtkBarycentricShellCellProjectionPass
     vtkBarycentricShellImageTexture vtkBarycentricShellIsosurfacePeelPass vtkUnstructuredVolumeOpacityMask
     vtkBarycentricShellOpaqueDistancePass vtkBarycentricShellPrograms vtkBarycentricShellSegmentTable
@@ -31,7 +31,7 @@ foreach (header IN ITEMS
     vtkUnstructuredVolumeBufferTexture vtkUnstructuredVolumeFloatTarget vtkUnstructuredVolumeFrame
     vtkUnstructuredVolumeHexahedralMesh vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeOpenGL
     vtkUnstructuredVolumePointData vtkUnstructuredVolumeTetrahedralMesh vtkUnstructuredVolumeTexture
-    vtkUnstructuredVolumeTexture3D
+    vtkUnstructuredVolumeTexture3D vtkUnstructuredVolumeSegmentLengthTable
     vtkUnstructuredVolumeTransferFunction vtkUnstructuredVolumeTransferFunctionTexture)
   list(APPEND uv_rendering_private_headers "${CMAKE_CURRENT_LIST_DIR}/${header}.h")
 endforeach ()

@@ -12,6 +12,7 @@
 #include "uvShellBuckets.h"
 #include "vtkBarycentricShellBlendPass.h"
 #include "vtkBarycentricShellSegmentTable.h"
+#include "vtkUnstructuredVolumeSegmentLengthTable.h"
 #include "vtkBarycentricShellCellDrawer.h"
 #include "vtkBarycentricShellCellProjectionPass.h"
 #include "vtkBarycentricShellImageTexture.h"
@@ -118,6 +119,7 @@ public:
   uv::CellLists Lists;
   uvvtk::VertexGradientCache Gradients;
   uvvtk::VisibilityOrder Order; // cell projection
+  vtkUnstructuredVolumeSegmentLengthTable LengthTable; // cell projection's whole segments
   std::vector<glm::vec3> EyePoints;
   std::vector<glm::vec2> ScreenPoints; // normalised device coordinates (NaN: not in front of the eye)
   uv::RangedCells VolumeRanges, IsosurfaceRanges;
@@ -192,6 +194,7 @@ public:
     this->Peel.Release();
     this->Slices.Release();
     this->Blend.Release();
+    this->LengthTable.Release();
     this->Mask.Release();
     this->Projection.Release();
   }
@@ -525,6 +528,8 @@ void vtkBarycentricShellMapper::Internals::UploadPasses(const vtkUnstructuredVol
   if (this->Now.CellProjection)
   {
     this->Projection.SyncOrder(window, this->Order.Order, this->Order.Version);
+    if (this->Now.SegmentTable)
+      this->LengthTable.Sync(window);
     return;
   }
   this->Slices.SyncCells(window, this->Buckets.Cells, this->Buckets.Version);
@@ -634,8 +639,12 @@ bool vtkBarycentricShellMapper::Internals::DrawCellProjection(
   this->SetIntegrationUniforms(program, frame, static_cast<int>(this->Isovalues.size()));
   if (this->Now.CellSurfaces)
     this->NeighbourValues.Bind(program, "neighbourValues");
+  if (this->Now.SegmentTable)
+    this->LengthTable.Bind(program);
   this->Projection.Run(frame.Window->GetState(), program, this->Cells, this->Order.Order.size());
   this->DrawnTetrahedra = static_cast<vtkIdType>(this->Order.Order.size());
+  if (this->Now.SegmentTable)
+    this->LengthTable.Unbind();
   return true;
 }
 
@@ -861,14 +870,22 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   {
     return false;
   }
-  // Shells integrate segments of one length: a table lookup each, where reading the table costs no
-  // more accuracy than the transfer-function tolerance allows (measured), or as the user chose.
+  // Shells integrate segments of one length, cell projection whole segments through tetrahedra: a
+  // table lookup each, where reading the table costs no more accuracy than the transfer-function
+  // tolerance allows (measured), or as the user chose. Isosurfaces and lighting need the cuts.
   impl.Now.SegmentTable = false;
-  if (!impl.Now.CellProjection && this->SegmentIntegration != EXACT)
+  const bool cutsNeeded = impl.Now.CellProjection && (impl.Now.Lit || !impl.Isovalues.empty());
+  if (this->SegmentIntegration != EXACT && !impl.Now.CellProjection)
   {
     impl.Table.Update(impl.TransferFunction.Nodes, impl.Now.SampleDistance);
     impl.Now.SegmentTable =
       this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
+  }
+  else if (this->SegmentIntegration != EXACT && !cutsNeeded &&
+    impl.LengthTable.Update(impl.Mesh, impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
+  {
+    impl.Now.SegmentTable =
+      this->SegmentIntegration == TABLE || impl.LengthTable.Error <= this->TransferFunctionTolerance;
   }
   impl.LastSampleDistance = impl.Now.SampleDistance;
   return true;

@@ -19,6 +19,7 @@
 #include "uvFullScreenTriangleVS.h"
 #include "uvPhongLib.h"
 #include "uvSegmentIntegrationLib.h"
+#include "uvSegmentLengthTableLib.h"
 #include "uvTransferFunctionLib.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
@@ -122,7 +123,8 @@ private:
   {
     const std::string fragmentSource = uvgl::ShaderSource(fragment, this->Defines,
       { { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
-        { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib } });
+        { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib },
+        { "//UV::SegmentLengthTable", uvSegmentLengthTableLib } });
     return this->Cache->ReadyShaderProgram(vertex.c_str(), fragmentSource.c_str(), geometry.c_str());
   }
 

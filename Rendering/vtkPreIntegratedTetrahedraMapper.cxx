@@ -6,7 +6,6 @@
 #include "uvOpacityMaskFS.h"
 #include "uvFullScreenTriangleVS.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
-#include "vtkPreIntegratedTetrahedraSegmentTable.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
@@ -15,7 +14,7 @@
 #include "vtkUnstructuredVolumeOpenGL.h"
 #include "vtkUnstructuredVolumeTetrahedralMesh.h"
 #include "vtkUnstructuredVolumeTexture.h"
-#include "vtkUnstructuredVolumeTexture3D.h"
+#include "vtkUnstructuredVolumeSegmentLengthTable.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
 #include "vtkUnstructuredVolumeTransferFunctionTexture.h"
 
@@ -117,21 +116,18 @@ public:
   bool DrawCellSurfaces = false;
   uv::TetrahedronFaceNeighbours CellSurfaces;
   std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
-  // Whole segments from one table read where it is accurate enough: its length axis ends at the
-  // longest edge of the mesh as drawn (no segment through a tetrahedron is longer).
-  vtkPreIntegratedTetrahedraSegmentTable Table;
+  // Whole segments from one table read where it is accurate enough.
+  vtkUnstructuredVolumeSegmentLengthTable Table;
   bool UseTable = false;
-  // The mesh's extent (recentred model space): its longest edge and bounding box.
-  double LongestEdge = 0.0;
+  // The mesh's bounding box (recentred model space).
   glm::dvec3 Low{ 0.0 }, High{ 0.0 };
-  std::uint64_t ExtentFor = 0; // the mesh's Version
+  std::uint64_t BoundsFor = 0; // the mesh's Version
 
   // GPU state.
   vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, DrawOrder, NeighbourValues;
   vtkUnstructuredVolumeIndexBuffer OrderIndices, FanIndices;
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
-  vtkUnstructuredVolumeTexture3D TableTexture;
   vtkUnstructuredVolumeOpacityMask Mask;
 
   // This frame's compositing: front to back under the opacity mask, or back to front; chosen by the
@@ -152,25 +148,15 @@ public:
     this->FanIndices.Release();
     this->Nodes.Release();
     this->Isosurfaces.Release();
-    this->TableTexture.Release();
+    this->Table.Release();
     this->Mask.Release();
   }
 
-  /// The mesh's longest edge and bounds, when the mesh changed.
-  void UpdateExtent()
+  /// The mesh's bounds, when the mesh changed.
+  void UpdateBounds()
   {
-    if (this->ExtentFor == this->Mesh.Version)
+    if (this->BoundsFor == this->Mesh.Version)
       return;
-    vtkSMPThreadLocal<double> longest(0.0);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(this->Mesh.Size()), [&](vtkIdType begin, vtkIdType end) {
-      double& mine = longest.Local();
-      mine = std::max(mine, uv::LongestSquaredEdge(this->Mesh.PointData, this->Mesh.TetrahedronPoints,
-                              static_cast<std::size_t>(begin), static_cast<std::size_t>(end)));
-    });
-    double squared = 0.0;
-    for (double value : longest)
-      squared = std::max(squared, value);
-    this->LongestEdge = std::sqrt(squared);
     const std::vector<float>& points = this->Mesh.PointData;
     this->Low = glm::dvec3(std::numeric_limits<double>::infinity());
     this->High = -this->Low;
@@ -180,7 +166,7 @@ public:
       this->Low = glm::min(this->Low, position);
       this->High = glm::max(this->High, position);
     }
-    this->ExtentFor = this->Mesh.Version;
+    this->BoundsFor = this->Mesh.Version;
   }
 
   /// Whether the near plane may cut a tetrahedron: some corner of the mesh's bounds lies before the
@@ -188,7 +174,7 @@ public:
   /// near-plane ray casting out.
   bool NearPlaneMayCut(const vtkUnstructuredVolumeFrame& frame)
   {
-    this->UpdateExtent();
+    this->UpdateBounds();
     const glm::dmat4 modelToEye = frame.ModelToEye(this->Mesh.Center);
     for (int corner = 0; corner < 8; ++corner)
     {
@@ -426,11 +412,7 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
   impl.Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(impl.DrawnIsosurfaces), 2, 4,
     uv::IsosurfaceList::Texels(impl.DrawnIsosurfaces));
   if (impl.UseTable)
-  {
-    const uv::TetrahedronSegmentTable& table = impl.Table.Table;
-    impl.TableTexture.Sync(
-      window, table.ScalarSize, table.ScalarSize, table.LengthSize, table.Texels, impl.Table.Version);
-  }
+    impl.Table.Sync(window);
   const std::size_t count = impl.Order.Order.size();
   if (this->ProjectionRoute == VERTEX_PULLING)
   {
@@ -512,7 +494,7 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   impl.Nodes.Bind(program);
   impl.Isosurfaces.Bind(program, "isosurfaces");
   if (impl.UseTable)
-    this->BindSegmentTable(program);
+    impl.Table.Bind(program);
   vtkTextureObject* sceneDepth = target.GetSceneDepth();
   sceneDepth->Activate();
   program->SetUniformi("opaqueDepth", sceneDepth->GetTextureUnit());
@@ -533,7 +515,7 @@ void vtkPreIntegratedTetrahedraMapper::UnbindTetrahedraResources(vtkUnstructured
   impl.Nodes.Unbind();
   impl.Isosurfaces.Unbind();
   if (impl.UseTable)
-    impl.TableTexture.Unbind();
+    impl.Table.Unbind();
   target.GetSceneDepth()->Deactivate();
   if (impl.NeedGradients)
     impl.PointGradients.Unbind();
@@ -553,26 +535,9 @@ bool vtkPreIntegratedTetrahedraMapper::ChooseSegmentTable(const vtkUnstructuredV
   if (this->SegmentIntegration == EXACT || this->IntegrationMode != PARTIAL_PRE_INTEGRATION ||
     !impl.Isovalues.empty() || impl.Shade)
     return false;
-  impl.UpdateExtent();
-  const glm::dmat3 linear(frame.ModelToEye(impl.Mesh.Center));
-  const double longest = impl.LongestEdge * uv::LargestStretch(linear);
-  if (!(longest > 0.0))
+  if (!impl.Table.Update(impl.Mesh, impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
     return false;
-  impl.Table.Update(impl.TransferFunction.Nodes, longest, uv::SharedPsiTable());
   return this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
-}
-
-/// The table's texture and how scalars and lengths map onto it (texel centres at the ends).
-void vtkPreIntegratedTetrahedraMapper::BindSegmentTable(vtkShaderProgram* program)
-{
-  Internals& impl = *this->Impl;
-  const uv::TetrahedronSegmentTable& table = impl.Table.Table;
-  impl.TableTexture.Bind(program, "segmentTable");
-  const float scalar[2] = { static_cast<float>(table.ScalarSize - 1) / table.ScalarSize, 0.5f / table.ScalarSize };
-  const float length[2] = { static_cast<float>((table.LengthSize - 1) / (table.LengthSize * table.MaxLength)),
-    0.5f / table.LengthSize };
-  program->SetUniform2f("scalarToTexture", scalar);
-  program->SetUniform2f("lengthToTexture", length);
 }
 
 /// Whether the order depends on the scene: skipping on, a threshold below 1, and more than one

@@ -150,7 +150,6 @@ protected:
   bool DrawFrontToBack(
     const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target, vtkShaderProgram* program);
   bool ChooseSegmentTable(const vtkUnstructuredVolumeFrame& frame);
-  void BindSegmentTable(vtkShaderProgram* program);
   bool OrderIsChosen();
   bool ChooseFrontToBack();
   bool MeasureOpaqueShare(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);

@@ -16,6 +16,7 @@
 #include "uvPreIntegratedTetrahedraVS.h"
 #include "uvProjectedTetrahedronLib.h"
 #include "uvSegmentIntegrationLib.h"
+#include "uvSegmentLengthTableLib.h"
 #include "uvTransferFunctionLib.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
@@ -55,7 +56,7 @@ struct vtkPreIntegratedTetrahedraPrograms
       sources.Geometry = uvgl::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
     sources.Fragment = uvgl::ShaderSource(uvPreIntegratedTetrahedraFS, defines,
       { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
-        { "//UV::SegmentIntegration", uvSegmentIntegrationLib } });
+        { "//UV::SegmentIntegration", uvSegmentIntegrationLib }, { "//UV::SegmentLengthTable", uvSegmentLengthTableLib } });
     return sources;
   }
 

@@ -3,7 +3,8 @@
 // vtkBarycentricShellMapper, cell projection: from the back-face fragment, the ray's entry into and
 // exit from the tetrahedron in barycentric coordinates, the segment's scalars and gradients at both
 // ends, and its colour integrated exactly as vtkPreIntegratedTetrahedraMapper does
-// (uvSegmentIntegrationLib.glsl).
+// (uvSegmentIntegrationLib.glsl), or with UV_SEGMENT_TABLE read whole from the table of segments by
+// front scalar, back scalar and length (no lighting, no isosurfaces then).
 // Drawn back to front, blended with ONE, ONE_MINUS_SRC_ALPHA. A cell scalar's isosurfaces are the
 // faces between cells on either side of the value: each tetrahedron draws those on the face the ray
 // enters it by, over its own segment, lit with the face's normal.
@@ -27,6 +28,10 @@ uniform samplerBuffer neighbourValues; // per tetrahedron, the value across the 
 //UV::Phong
 
 //UV::SegmentIntegration
+
+#ifdef UV_SEGMENT_TABLE
+//UV::SegmentLengthTable
+#endif
 
 #ifdef UV_CELL_SURFACES
 /// The surfaces on the face the ray enters the tetrahedron by (the last plane it crosses inwards,
@@ -73,9 +78,13 @@ void main()
 #ifdef UV_CELL_GRADIENTS
   frontGradient = backGradient = cellGradient;
 #endif
+#ifdef UV_SEGMENT_TABLE
+  vec4 result = TableSegment(dot(cellScalars, front), dot(cellScalars, back), exit - entry);
+#else
   vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-EyePointAt(entry));
   vec4 result = IntegrateSegment(
     dot(cellScalars, front), dot(cellScalars, back), frontGradient, backGradient, exit - entry, toEye);
+#endif
 #ifdef UV_CELL_SURFACES
   vec4 surfaces = EntryFaceSurfaces(ray, toEye);
   result = surfaces + (1.0 - surfaces.a) * result;

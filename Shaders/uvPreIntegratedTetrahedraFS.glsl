@@ -42,17 +42,16 @@ uniform vec3 rayY;
 #ifdef UV_NEAR_PLANE_CUTS
 uniform float nearDepth; // where rays begin
 #endif
-#ifdef UV_SEGMENT_TABLE
-uniform sampler3D segmentTable;
-uniform vec2 scalarToTexture;   // texture coordinate = scalar * x + y (texel centres at 0 and 1)
-uniform vec2 lengthToTexture;   // the same for a length up to the table's longest
-#endif
 
 //UV::TransferFunction
 
 //UV::Phong
 
 //UV::SegmentIntegration
+
+#ifdef UV_SEGMENT_TABLE
+//UV::SegmentLengthTable
+#endif
 
 #ifdef UV_CELL_SURFACES
 /// The surfaces on the front face of the drawn tetrahedron where the ray along `direction` enters
@@ -185,9 +184,7 @@ void main()
   }
   float segmentLength = distance(frontPoint, backPoint);
 #ifdef UV_SEGMENT_TABLE
-  vec3 coordinates = vec3(clamp(vec2(frontScalar, backScalar), 0.0, 1.0) * scalarToTexture.x + scalarToTexture.y,
-    min(segmentLength * lengthToTexture.x + lengthToTexture.y, 1.0));
-  vec4 result = texture(segmentTable, coordinates);
+  vec4 result = TableSegment(frontScalar, backScalar, segmentLength);
 #else
   vec3 toEye = parallelProjection == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-frontPoint);
   vec4 result = IntegrateSegment(frontScalar, backScalar, frontGradient, backGradient, segmentLength, toEye);

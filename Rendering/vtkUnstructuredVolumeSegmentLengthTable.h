@@ -1,0 +1,111 @@
+/**
+ * @class vtkUnstructuredVolumeSegmentLengthTable
+ * @brief The table of whole segments by front scalar, back scalar and length that the tetrahedra
+ * mapper and the shells' cell projection read instead of cutting segments at every node.
+ *
+ * uvTetrahedronSegmentTable.h's table of the current nodes for lengths up to the longest edge of the
+ * mesh as drawn (its longest model-space edge, found once per mesh change, times the most the
+ * model-to-eye matrix stretches), built in parallel only when either changes, with what reading it
+ * trilinearly costs in accuracy measured against the exact segments: the AUTOMATIC integration reads
+ * it where that error is within the transfer-function tolerance. Its GPU copy (a 3D texture) is
+ * uploaded when the build's version changes; Bind sets uvSegmentLengthTableLib.glsl's uniforms.
+ * (Layer shared by the mappers; not wrapped.)
+ */
+#ifndef vtkUnstructuredVolumeSegmentLengthTable_h
+#define vtkUnstructuredVolumeSegmentLengthTable_h
+
+#include "uvTetrahedronSegmentTable.h"
+#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+#include "vtkUnstructuredVolumeTexture3D.h"
+
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkShaderProgram.h"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+class vtkUnstructuredVolumeSegmentLengthTable
+{
+public:
+  static constexpr int ScalarSize = 128;    // texels per scalar axis
+  static constexpr int LengthSize = 32;     // texels along the length
+  static constexpr int ErrorSamples = 4096; // segments the error is measured on
+
+  double Error = 0.0;        ///< largest difference from the exact segments, any channel
+  int Builds = 0;            ///< since creation
+
+  /// Brings the table up to date with `nodes` and the longest segment `mesh` can hold in eye space;
+  /// false (nothing built) for a mesh without extent.
+  bool Update(const uvvtk::TetrahedralMesh& mesh, const std::vector<uv::TransferFunction::Node>& nodes,
+    const glm::dmat4& modelToEye)
+  {
+    this->UpdateLongestEdge(mesh);
+    const double longest = this->LongestEdge * uv::LargestStretch(glm::dmat3(modelToEye));
+    if (!(longest > 0.0))
+      return false;
+    if (this->Version > 0 && longest == this->Table.MaxLength && nodes == this->Nodes)
+      return true;
+    const uv::TransferFunction function(nodes);
+    this->Table = uv::MakeTetrahedronSegmentTable(function, longest, ScalarSize, LengthSize, uv::SharedPsiTable(),
+      [](int count, const auto& build) {
+        vtkSMPTools::For(0, count, 64, [&](vtkIdType begin, vtkIdType end) {
+          for (vtkIdType row = begin; row < end; ++row)
+            build(static_cast<int>(row));
+        });
+      });
+    this->Error = uv::TetrahedronSegmentTableError(function, this->Table, ErrorSamples);
+    this->Nodes = nodes;
+    ++this->Version;
+    ++this->Builds;
+    return true;
+  }
+
+  void Sync(vtkOpenGLRenderWindow* window)
+  {
+    this->Texture.Sync(
+      window, this->Table.ScalarSize, this->Table.ScalarSize, this->Table.LengthSize, this->Table.Texels, this->Version);
+  }
+
+  /// The texture and how scalars and lengths map onto it (texel centres at the ends).
+  void Bind(vtkShaderProgram* program)
+  {
+    this->Texture.Bind(program, "segmentLengthTable");
+    const uv::TetrahedronSegmentTable& table = this->Table;
+    const float scalar[2] = { static_cast<float>(table.ScalarSize - 1) / table.ScalarSize, 0.5f / table.ScalarSize };
+    const float length[2] = { static_cast<float>((table.LengthSize - 1) / (table.LengthSize * table.MaxLength)),
+      0.5f / table.LengthSize };
+    program->SetUniform2f("scalarToTexture", scalar);
+    program->SetUniform2f("lengthToTexture", length);
+  }
+  void Unbind() { this->Texture.Unbind(); }
+  void Release() { this->Texture.Release(); }
+
+private:
+  void UpdateLongestEdge(const uvvtk::TetrahedralMesh& mesh)
+  {
+    if (this->LongestEdgeFor == mesh.Version)
+      return;
+    vtkSMPThreadLocal<double> longest(0.0);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(mesh.Size()), [&](vtkIdType begin, vtkIdType end) {
+      double& mine = longest.Local();
+      mine = std::max(mine, uv::LongestSquaredEdge(mesh.PointData, mesh.TetrahedronPoints,
+                              static_cast<std::size_t>(begin), static_cast<std::size_t>(end)));
+    });
+    double squared = 0.0;
+    for (double value : longest)
+      squared = std::max(squared, value);
+    this->LongestEdge = std::sqrt(squared);
+    this->LongestEdgeFor = mesh.Version;
+  }
+
+  uv::TetrahedronSegmentTable Table;
+  std::vector<uv::TransferFunction::Node> Nodes;
+  std::uint64_t Version = 0; // bumped on every build
+  double LongestEdge = 0.0;  // model space
+  std::uint64_t LongestEdgeFor = 0;
+  vtkUnstructuredVolumeTexture3D Texture;
+};
+
+#endif
