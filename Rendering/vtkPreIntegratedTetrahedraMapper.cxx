@@ -80,6 +80,10 @@ std::size_t MaskedBatchSize(std::size_t count)
   return std::max<std::size_t>(4096, (count + 63) / 64);
 }
 
+/// The fan index pattern covers this many tetrahedra; a longer order is drawn in batches of it, each
+/// offset by its first vertex, so the indices take a fixed few megabytes whatever the mesh.
+constexpr std::size_t FanBatch = 1u << 16;
+
 /// Triangle t of the tetrahedron in draw place q is (5q+4, 5q+t, 5q+(t+1)%4): fixed for a count.
 std::vector<std::uint32_t> FanIndices(std::size_t count)
 {
@@ -190,10 +194,13 @@ public:
   /// Draws the tetrahedra in draw places [first, first + count) of the order.
   void DrawPlaces(bool pulling, std::size_t first, std::size_t count)
   {
-    if (pulling)
-      this->FanIndices.Draw(GL_TRIANGLES, 12 * count, 12 * first);
-    else
+    if (!pulling)
+    {
       this->OrderIndices.Draw(GL_POINTS, count, first);
+      return;
+    }
+    for (std::size_t place = first; place < first + count; place += FanBatch)
+      this->FanIndices.DrawFromVertex(GL_TRIANGLES, 12 * std::min(FanBatch, first + count - place), 5 * place);
   }
 
   /// Which tetrahedra are drawn: those with some extinction in their range or an isovalue in it
@@ -417,8 +424,9 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
   if (this->ProjectionRoute == VERTEX_PULLING)
   {
     impl.DrawOrder.Sync(window, impl.Order.Order, 1, impl.Order.Version);
-    if (impl.FanIndices.GetCount() < 12 * count) // the pattern is fixed: it only grows
-      impl.FanIndices.Sync(FanIndices(count), count);
+    const std::size_t pattern = std::min(count, FanBatch);
+    if (impl.FanIndices.GetCount() < 12 * pattern) // the pattern is fixed: it only grows, to one batch
+      impl.FanIndices.Sync(FanIndices(pattern), pattern);
   }
   else
   {

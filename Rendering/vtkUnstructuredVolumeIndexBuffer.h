@@ -40,6 +40,15 @@ public:
     this->Buffer->Release();
   }
 
+  /// Draws the first `count` indices as `mode`, each index offset by `baseVertex` (so a repeating
+  /// pattern can stand for every batch of vertices).
+  void DrawFromVertex(GLenum mode, std::size_t count, std::size_t baseVertex)
+  {
+    this->Buffer->Bind();
+    glDrawElementsBaseVertex(mode, static_cast<GLsizei>(count), GL_UNSIGNED_INT, nullptr, static_cast<GLint>(baseVertex));
+    this->Buffer->Release();
+  }
+
   bool Holds(std::uint64_t version) const { return this->Version == version && this->Buffer->GetHandle(); }
   std::size_t GetCount() const { return this->Version ? this->Count : 0; }
   std::size_t GetBytes() const { return sizeof(std::uint32_t) * this->GetCount(); }

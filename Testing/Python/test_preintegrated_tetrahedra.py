@@ -104,6 +104,17 @@ class AccuracyTests(SceneTestCase):
         geometry = Scene(mesh, prop, camera, ProjectionRoute=1).render()
         self.assertLess(rmse(pulled, geometry)[1], 1e-5)
 
+    def test_orders_longer_than_one_index_batch(self):
+        # Vertex pulling draws from one fixed batch of fan indices, offset per batch of 65,536
+        # tetrahedra: a longer order must draw what the geometry-shader route draws.
+        mesh = analytic(24)
+        self.assertGreater(mesh.GetNumberOfCells(), 65536)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        camera = camera_for(mesh)
+        pulled = copy_image(Scene(mesh, prop, camera, 64).render())
+        geometry = Scene(mesh, prop, camera, 64, ProjectionRoute=1).render()
+        self.assertLess(rmse(pulled, geometry)[1], 1e-4)
+
     def test_camera_inside_the_mesh(self):
         # Tetrahedra around the eye cannot be projected; their fragments intersect the ray instead.
         mesh = analytic(6)
