@@ -12,11 +12,11 @@
 // (Phong) with the gradient interpolated between the front and back points. With UV_SEGMENT_TABLE
 // (no isosurfaces, no shading) one trilinear read of a table of whole segments by front scalar, back
 // scalar and length (uvTetrahedronSegmentTable.h) stands in for the cuts.
-noperspective in vec3 frontData; // (scalar, eye z, 1) / w on the front surface
-noperspective in vec3 backData;
+smooth in vec3 frontData; // (scalar, eye z, 1) / w on the front surface
+smooth in vec3 backData;
 #ifdef UV_GRADIENTS
-noperspective in vec3 frontGradientOverW;
-noperspective in vec3 backGradientOverW;
+smooth in vec3 frontGradientOverW;
+smooth in vec3 backGradientOverW;
 uniform samplerBuffer pointGradients;
 uniform mat3 modelToEyeNormals;
 #endif

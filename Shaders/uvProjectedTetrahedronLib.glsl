@@ -2,9 +2,12 @@
 // (uvPreIntegratedTetrahedraGS.glsl: a geometry shader fed one point per tetrahedron;
 // uvPreIntegratedTetrahedraPullVS.glsl: 12 vertices per tetrahedron pulled by a vertex shader). It
 // classifies the projection and finds the fan of triangles around the thick vertex: the GPU twin of
-// uvProjectedTetrahedron.h (same steps, same names). Every attribute is interpolated without
-// perspective (noperspective) as value/w and 1/w of the surface it lies on, so the fragment stage
-// recovers exact eye-space points on the front and back faces under any projection. A tetrahedron
+// uvProjectedTetrahedron.h (same steps, same names). Every attribute is carried as value/w and 1/w
+// of the surface it lies on, linear in screen space, so the fragment stage recovers exact eye-space
+// points on the front and back faces under any projection. Emitted vertices have clip w = 1, so
+// 'smooth' interpolation is already linear in screen space; 'noperspective' would say the same but
+// Mesa's clipper recomputes such attributes from screen x along near-vertical edges it clips at the
+// viewport's border, which gave wrong values there. A tetrahedron
 // crossing the near plane (where rays begin) is drawn as the screen rectangle of its part beyond the
 // plane, whose fragments intersect the eye ray with the tetrahedron's faces instead; one wholly
 // before the near plane is not drawn.
@@ -19,11 +22,11 @@ uniform mat4 eyeToClip;
 uniform float nearDepth;                  // the near plane's eye depth: rays begin there
 uniform float zeroTolerance;              // relative size of a dependency coefficient taken as zero
 
-noperspective out vec3 frontData;        // (scalar, eye z, 1) / w on the front surface
-noperspective out vec3 backData;         // the same on the back surface
+smooth out vec3 frontData;        // (scalar, eye z, 1) / w on the front surface
+smooth out vec3 backData;         // the same on the back surface
 #ifdef UV_GRADIENTS
-noperspective out vec3 frontGradientOverW;
-noperspective out vec3 backGradientOverW;
+smooth out vec3 frontGradientOverW;
+smooth out vec3 backGradientOverW;
 #endif
 flat out int rayCastTetrahedron;         // -1, or the tetrahedron each fragment intersects itself
 #ifdef UV_CELL_SURFACES

@@ -132,7 +132,9 @@ class AccuracyTests(SceneTestCase):
 
     def test_parallel_camera_inside_the_mesh(self):
         # Parallel projection with the near plane cutting the mesh: what lies before the plane is not
-        # seen (it was, projected whole: 4664 pixels covered where the reference covers 4142).
+        # seen (it was, projected whole: 4664 pixels covered where the reference covers 4142). Exact
+        # segments leave only the integration's rounding; with 'noperspective' attributes Mesa's
+        # clipper gave wrong front and back values along the viewport's border (1e-3 off).
         mesh = analytic(6)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         camera = vtkCamera()
@@ -142,7 +144,8 @@ class AccuracyTests(SceneTestCase):
         camera.SetFocalPoint(0.8, 0.9, 0.1)
         camera.SetViewUp(0, 0, 1)
         camera.SetClippingRange(0.2, 10)
-        self.check(mesh, prop, camera, 96, 1.5e-3)
+        self.check(mesh, prop, camera, 96, 1e-5, SegmentIntegration=2)
+        self.check(mesh, prop, camera, 96, 3e-4)
 
 
 class BaselineTests(BaselineTestCase):
