@@ -73,7 +73,13 @@ inline unsigned char RoleOf(double low, double high, const std::vector<std::pair
 class CellLists
 {
 public:
-  std::vector<std::uint32_t> Volume, Isosurface, Drawn; // Drawn: either role
+  std::vector<std::uint32_t> Isosurface, Drawn; // Drawn: either role
+  std::size_t GetBytes() const
+  {
+    return sizeof(std::uint32_t) * (this->Isosurface.capacity() + this->Drawn.capacity() + this->VolumeOnly.capacity());
+  }
+  /// The cells with some extinction: Drawn itself when every drawn cell has (not kept twice).
+  const std::vector<std::uint32_t>& Volume() const { return this->VolumeIsDrawn ? this->Drawn : this->VolumeOnly; }
   std::uint64_t Version = 0; ///< bumped by every rebuild
   int Builds = 0;
 
@@ -94,18 +100,28 @@ public:
       for (std::size_t c = begin; c < end; ++c)
         roles[c] = RoleOf(low[c], high[c], zeroSet, sortedIsovalues);
     });
-    this->Volume.clear();
-    this->Isosurface.clear();
-    this->Drawn.clear();
+    // Sized exactly (lists of every cell are a large share of a mapper's memory).
+    std::size_t volumeCount = 0, isosurfaceCount = 0, drawnCount = 0;
+    for (std::size_t c = 0; c < count; ++c)
+    {
+      volumeCount += roles[c] & VolumeRole ? 1 : 0;
+      isosurfaceCount += roles[c] & IsosurfaceRole ? 1 : 0;
+      drawnCount += roles[c] ? 1 : 0;
+    }
+    this->VolumeIsDrawn = volumeCount == drawnCount;
+    Resize(this->VolumeOnly, this->VolumeIsDrawn ? 0 : volumeCount);
+    Resize(this->Isosurface, isosurfaceCount);
+    Resize(this->Drawn, drawnCount);
+    std::size_t v = 0, i = 0, d = 0;
     for (std::size_t c = 0; c < count; ++c)
     {
       const auto id = static_cast<std::uint32_t>(c);
-      if (roles[c] & VolumeRole)
-        this->Volume.push_back(id);
+      if ((roles[c] & VolumeRole) && !this->VolumeIsDrawn)
+        this->VolumeOnly[v++] = id;
       if (roles[c] & IsosurfaceRole)
-        this->Isosurface.push_back(id);
+        this->Isosurface[i++] = id;
       if (roles[c])
-        this->Drawn.push_back(id);
+        this->Drawn[d++] = id;
     }
     this->CellsVersion = cellsVersion;
     this->ZeroSet = zeroSet;
@@ -116,6 +132,15 @@ public:
   }
 
 private:
+  static void Resize(std::vector<std::uint32_t>& list, std::size_t size)
+  {
+    if (list.capacity() > size + size / 8)
+      std::vector<std::uint32_t>().swap(list); // give back what a longer list held
+    list.resize(size);
+  }
+
+  std::vector<std::uint32_t> VolumeOnly;
+  bool VolumeIsDrawn = true;
   std::uint64_t CellsVersion = 0;
   std::vector<std::pair<double, double>> ZeroSet;
   std::vector<double> Isovalues;

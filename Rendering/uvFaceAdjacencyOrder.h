@@ -30,41 +30,75 @@ namespace uv
 {
 
 /// Per tetrahedron the tetrahedron across the face opposite each corner, or -1 on the boundary.
-/// `corners` holds 4 point ids per tetrahedron; faces match by their three ids. `sort(begin, end)`
-/// sorts a range of std::array<std::uint32_t, 4> (in parallel if it likes).
-template <typename Sort>
-std::vector<std::int32_t> MakeTetrahedronFaceAdjacency(const std::vector<std::uint32_t>& corners, Sort&& sort)
+/// `corners` holds 4 point ids per tetrahedron; two tetrahedra are neighbours where both hold the
+/// same three ids. A face held by three or more (a non-manifold mesh) and a tetrahedron with a
+/// repeated id (no volume) get no neighbour, so the relation stays symmetric. Faces are found
+/// through the tetrahedra around each point, which needs 4 bytes per corner while it runs rather
+/// than a sorted list of every face. `parallelFor(count, function(begin, end))` runs over
+/// tetrahedra, in parallel if it likes.
+template <typename ParallelFor>
+std::vector<std::int32_t> MakeTetrahedronFaceAdjacency(const std::vector<std::uint32_t>& corners, ParallelFor&& parallelFor)
 {
   const std::size_t count = corners.size() / 4;
-  std::vector<std::array<std::uint32_t, 4>> faces(4 * count); // sorted ids, then 4 * tetrahedron + corner
+  const auto degenerate = [&corners](std::size_t t) {
+    const std::uint32_t* c = &corners[4 * t];
+    return c[0] == c[1] || c[0] == c[2] || c[0] == c[3] || c[1] == c[2] || c[1] == c[3] || c[2] == c[3];
+  };
+  std::size_t pointCount = 0;
+  for (std::uint32_t id : corners)
+    pointCount = std::max<std::size_t>(pointCount, std::size_t(id) + 1);
+  // The tetrahedra around each point: around[first[p] .. first[p + 1]).
+  std::vector<std::uint32_t> first(pointCount + 1, 0);
   for (std::size_t t = 0; t < count; ++t)
-    for (int k = 0; k < 4; ++k)
-    {
-      std::array<std::uint32_t, 3> ids = { corners[4 * t + (k + 1) % 4], corners[4 * t + (k + 2) % 4],
-        corners[4 * t + (k + 3) % 4] };
-      std::sort(ids.begin(), ids.end());
-      faces[4 * t + k] = { ids[0], ids[1], ids[2], static_cast<std::uint32_t>(4 * t + k) };
-    }
-  sort(faces.begin(), faces.end());
-  std::vector<std::int32_t> neighbours(4 * count, -1);
-  for (std::size_t f = 0; f + 1 < faces.size(); ++f)
+    if (!degenerate(t))
+      for (int k = 0; k < 4; ++k)
+        ++first[corners[4 * t + k] + 1];
+  for (std::size_t p = 0; p < pointCount; ++p)
+    first[p + 1] += first[p];
+  std::vector<std::uint32_t> around(first[pointCount]);
   {
-    const auto& a = faces[f];
-    const auto& b = faces[f + 1];
-    // Exactly two tetrahedra on a face; a third (a non-manifold mesh) gets no neighbour there.
-    const bool third = f + 2 < faces.size() && faces[f + 2][0] == a[0] && faces[f + 2][1] == a[1] && faces[f + 2][2] == a[2];
-    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2] && !third)
-    {
-      neighbours[a[3]] = static_cast<std::int32_t>(b[3] / 4);
-      neighbours[b[3]] = static_cast<std::int32_t>(a[3] / 4);
-      ++f;
-    }
-    else if (third)
-    {
-      while (f + 1 < faces.size() && faces[f + 1][0] == a[0] && faces[f + 1][1] == a[1] && faces[f + 1][2] == a[2])
-        ++f;
-    }
+    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+    for (std::size_t t = 0; t < count; ++t)
+      if (!degenerate(t))
+        for (int k = 0; k < 4; ++k)
+          around[next[corners[4 * t + k]]++] = static_cast<std::uint32_t>(t);
   }
+  const auto holds = [&corners](std::uint32_t u, std::uint32_t id) {
+    const std::uint32_t* c = &corners[4 * std::size_t(u)];
+    return c[0] == id || c[1] == id || c[2] == id || c[3] == id;
+  };
+  std::vector<std::int32_t> neighbours(4 * count, -1);
+  parallelFor(count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      if (degenerate(t))
+        continue;
+      for (int k = 0; k < 4; ++k)
+      {
+        std::uint32_t ids[3];
+        for (int j = 0; j < 3; ++j)
+          ids[j] = corners[4 * t + (k + 1 + j) % 4];
+        // Search around the face's point with the fewest tetrahedra.
+        int least = 0;
+        for (int j = 1; j < 3; ++j)
+          if (first[ids[j] + 1] - first[ids[j]] < first[ids[least] + 1] - first[ids[least]])
+            least = j;
+        const std::uint32_t other1 = ids[(least + 1) % 3], other2 = ids[(least + 2) % 3];
+        std::int32_t found = -1;
+        int sharing = 0;
+        for (std::uint32_t i = first[ids[least]]; i < first[ids[least] + 1]; ++i)
+        {
+          const std::uint32_t u = around[i];
+          if (u != t && holds(u, other1) && holds(u, other2))
+          {
+            found = static_cast<std::int32_t>(u);
+            ++sharing;
+          }
+        }
+        neighbours[4 * t + k] = sharing == 1 ? found : -1;
+      }
+    }
+  });
   return neighbours;
 }
 
@@ -73,7 +107,7 @@ class FaceAdjacencyOrder
 public:
   std::size_t CyclesBroken = 0; ///< tetrahedra drawn before a neighbour behind them, last Sort
 
-  /// Bytes kept between sorts (per tetrahedron: two bytes of constraints, one of state; the order).
+  /// Bytes kept between sorts: none, the state below lives only while sorting.
   std::size_t GetBytes() const
   {
     return this->Behind.capacity() + this->Waiting.capacity() + this->State.capacity() +
@@ -113,6 +147,7 @@ public:
       }
     });
     this->Sweep(order, neighbours);
+    this->Release();
   }
 
 private:
@@ -216,6 +251,15 @@ private:
         }
       }
     }
+  }
+
+  void Release()
+  {
+    std::vector<std::uint8_t>().swap(this->Behind);
+    std::vector<std::uint8_t>().swap(this->Waiting);
+    std::vector<std::uint8_t>().swap(this->State);
+    std::vector<std::uint32_t>().swap(this->NewOrder);
+    std::vector<std::uint32_t>().swap(this->Stack);
   }
 
   /// Whether t is one of u's neighbours behind it.

@@ -438,7 +438,7 @@ bool vtkBarycentricShellMapper::Internals::UpdateShells(
     }
   });
   const std::vector<std::uint32_t>& tetrahedra = this->Mesh.TetrahedronPoints;
-  this->VolumeRanges.Update(this->Lists.Volume, tetrahedra, this->EyePoints, frame.Parallel, uvvtk::ParallelFor);
+  this->VolumeRanges.Update(this->Lists.Volume(), tetrahedra, this->EyePoints, frame.Parallel, uvvtk::ParallelFor);
   this->IsosurfaceRanges.Update(
     this->Lists.Isosurface, tetrahedra, this->EyePoints, frame.Parallel, uvvtk::ParallelFor);
   if (!uv::LayoutShells(this->VolumeRanges, this->IsosurfaceRanges, this->Now.SampleDistance, self->SlicesPerShell,

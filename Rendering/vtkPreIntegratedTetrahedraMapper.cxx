@@ -307,6 +307,15 @@ vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
   return static_cast<vtkIdType>(bytes);
 }
 
+vtkIdType vtkPreIntegratedTetrahedraMapper::GetHostMemoryInBytes()
+{
+  const Internals& impl = *this->Impl;
+  const auto bytes = [](const auto& vector) { return sizeof(vector[0]) * vector.capacity(); };
+  const uv::TetrahedronFaceNeighbours& surfaces = impl.CellSurfaces;
+  return static_cast<vtkIdType>(impl.Mesh.GetBytes() + impl.Visible.GetBytes() + impl.Order.GetBytes() +
+    bytes(impl.Gradients.Values) + bytes(surfaces.Values) + bytes(surfaces.Low) + bytes(surfaces.High));
+}
+
 void vtkPreIntegratedTetrahedraMapper::ReleaseMapperGraphics()
 {
   this->Impl->Release();

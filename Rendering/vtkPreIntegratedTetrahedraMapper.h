@@ -134,6 +134,12 @@ public:
   /// Ids, points, gradients, order and fan indices (not the screen-sized images).
   vtkIdType GetMeshMemoryInBytes() override;
 
+  /// Bytes the mapper keeps in host memory beside its input between frames, as of the last frame:
+  /// its copies of ids, positions and scalars, per-cell ranges, the drawn list, the order and the
+  /// face adjacency (not the GPU buffers, nor a CPU rasteriser's copies of them, nor a split of
+  /// non-tetrahedral input).
+  vtkIdType GetHostMemoryInBytes();
+
 protected:
   vtkPreIntegratedTetrahedraMapper();
   ~vtkPreIntegratedTetrahedraMapper() override;

@@ -55,7 +55,7 @@ public:
   enum class Change
   {
     Nothing,
-    Points, ///< only the point positions (a deforming mesh): PointData's xyz and Centroids
+    Points, ///< only the point positions (a deforming mesh): PointData's xyz
     All
   };
 
@@ -69,7 +69,6 @@ public:
   // point scalar, whose points are Tetrahedra's.
   std::vector<std::uint32_t> CornerPoints;
   std::vector<float> ScalarLow, ScalarHigh;        // per tetrahedron, normalised
-  std::vector<float> Centroids;                    // per tetrahedron, recentred
   glm::dvec3 Center{ 0.0 };
   uv::ScalarNormalisation Normalisation;          // of the rendered scalar's finite values
   vtkIdType SplitCells = 0;       // input cells that were not tetrahedra, as of the last build
@@ -80,6 +79,23 @@ public:
   std::uint64_t CellsVersion = 0; // TetrahedronPoints, ScalarLow/High (not a point-only refresh)
 
   std::size_t Size() const { return this->TetrahedronPoints.size() / 4; }
+  /// Host bytes of the copies above (not the input or its split).
+  std::size_t GetBytes() const
+  {
+    return sizeof(std::uint32_t) * (this->TetrahedronPoints.capacity() + this->CornerPoints.capacity()) +
+      sizeof(float) * (this->PointData.capacity() + this->ScalarLow.capacity() + this->ScalarHigh.capacity());
+  }
+  /// Recentred centroid of tetrahedron t, computed when asked (kept, it would cost 12 bytes a cell).
+  glm::vec3 Centroid(std::size_t t) const
+  {
+    glm::vec3 sum(0.0f);
+    for (int k = 0; k < 4; ++k)
+    {
+      const float* p = &this->PointData[4 * std::size_t(this->TetrahedronPoints[4 * t + k])];
+      sum += glm::vec3(p[0], p[1], p[2]);
+    }
+    return 0.25f * sum;
+  }
   bool OnCells() const { return this->Scalar.OnCells; }
   /// Forgets the build: the next Update rebuilds.
   void Invalidate() { this->TopologyKey.clear(); this->FullKey.clear(); }
@@ -167,7 +183,6 @@ private:
     this->Normalisation = recentred.Normalisation;
     this->ReadTetrahedra(recentred.CellValues);
     this->WriteScalarRanges();
-    this->WriteCentroids();
     progress(1.0);
     return std::string();
   }
@@ -223,6 +238,8 @@ private:
     this->TetrahedronPoints.clear();
     this->TetrahedronPoints.reserve(4 * grid->GetNumberOfCells());
     this->CornerPoints.clear();
+    if (onCells)
+      this->CornerPoints.reserve(4 * grid->GetNumberOfCells());
     this->NaNTetrahedra = 0;
     std::vector<float> corners; // cell scalar: the corners' values
     vtkIdType npts;
@@ -248,6 +265,9 @@ private:
         }
       }
     }
+    // Kept between frames: no room for the cells left out.
+    this->TetrahedronPoints.shrink_to_fit();
+    this->CornerPoints.shrink_to_fit();
     if (onCells)
     {
       this->PointData.assign(4 * corners.size(), 0.0f);
@@ -297,29 +317,12 @@ private:
     });
   }
 
-  void WriteCentroids()
-  {
-    const std::size_t tetCount = this->Size();
-    this->Centroids.resize(3 * tetCount);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(tetCount), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType t = begin; t < end; ++t)
-        for (int d = 0; d < 3; ++d)
-        {
-          float sum = 0.0f;
-          for (int k = 0; k < 4; ++k)
-            sum += this->PointData[4 * this->TetrahedronPoints[4 * t + k] + d];
-          this->Centroids[3 * t + d] = 0.25f * sum;
-        }
-    });
-  }
-
   void RefreshPoints()
   {
     double bounds[6]; // recentred on the moved points, so far moves keep float's digits
     this->Tetrahedra->GetPoints()->GetBounds(bounds);
     this->Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
     this->WritePositions();
-    this->WriteCentroids();
   }
 };
 
@@ -474,12 +477,12 @@ public:
     return true;
   }
 
-  /// Bytes kept between frames (keys, scratch, adjacency and the exact order's state).
+  /// Bytes kept between frames (the order and the face adjacency; sort keys and the exact order's
+  /// state live only while sorting).
   std::size_t GetBytes() const
   {
-    return sizeof(std::uint32_t) * (this->Order.capacity() + this->Keys.capacity() + this->ScratchKeys.capacity() +
-                                     this->ScratchOrder.capacity()) +
-      sizeof(std::int32_t) * this->Adjacency.capacity() + this->Faces.GetBytes();
+    return sizeof(std::uint32_t) * this->Order.capacity() + sizeof(std::int32_t) * this->Adjacency.capacity() +
+      this->Faces.GetBytes();
   }
 
 private:
@@ -487,16 +490,15 @@ private:
     const glm::dvec3& direction, bool parallel)
   {
     const std::size_t n = cells.size();
-    this->Keys.resize(n);
+    std::vector<std::uint32_t> keys(n), scratchKeys, scratchOrder; // freed after the sort: memory per cell
     this->Order = cells;
     const glm::vec3 eyeF(eye), directionF(direction);
     vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const float* c = &mesh.Centroids[3 * this->Order[i]];
-        const glm::vec3 offset = glm::vec3(c[0], c[1], c[2]) - eyeF;
+        const glm::vec3 offset = mesh.Centroid(this->Order[i]) - eyeF;
         const float distance = parallel ? glm::dot(offset, directionF) : glm::dot(offset, offset);
-        this->Keys[i] = uv::OrderedKey(-distance); // farthest first
+        keys[i] = uv::OrderedKey(-distance); // farthest first
       }
     });
     auto parallelChunks = [](int count, const auto& function) {
@@ -505,7 +507,7 @@ private:
           function(static_cast<int>(chunk));
       });
     };
-    uv::RadixSortPairs(this->Keys, this->Order, this->ScratchKeys, this->ScratchOrder, parallelChunks);
+    uv::RadixSortPairs(keys, this->Order, scratchKeys, scratchOrder, parallelChunks);
   }
 
   /// The back-to-front centroid order made exact across faces; `eye` is the direction towards the
@@ -526,7 +528,11 @@ private:
     if (this->AdjacencyFor != mesh.CellsVersion)
     {
       this->Adjacency =
-        uv::MakeTetrahedronFaceAdjacency(ids, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
+        uv::MakeTetrahedronFaceAdjacency(ids, [](std::size_t count, const auto& run) {
+          vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+            run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+          });
+        });
       this->AdjacencyFor = mesh.CellsVersion;
     }
     const float* points = mesh.PointData.data();
@@ -543,7 +549,6 @@ private:
     this->CyclesBroken = this->Faces.CyclesBroken;
   }
 
-  std::vector<std::uint32_t> Keys, ScratchKeys, ScratchOrder;
   std::vector<std::int32_t> Adjacency;
   std::uint64_t AdjacencyFor = 0; // the mesh's CellsVersion
   uv::FaceAdjacencyOrder Faces;

@@ -425,9 +425,10 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
         else:
             images.append(grab_rgba(window))
     mesh_bytes = mapper.GetMeshMemoryInBytes() if hasattr(mapper, "GetMeshMemoryInBytes") else None
+    host_bytes = mapper.GetHostMemoryInBytes() if hasattr(mapper, "GetHostMemoryInBytes") else None
     work = work_done(mapper, window, renderer, cameras[0])
     window.Finalize()
-    return preparation, frames, memory, images, mesh_bytes, work
+    return preparation, frames, memory, images, (mesh_bytes, host_bytes), work
 
 
 def work_done(mapper, window, renderer, camera):
@@ -555,16 +556,21 @@ def montage(top, bottom, path):
     writer.Write()
 
 
+def per_cell(value):
+    """A bytes-per-cell cell of the table: blank where not counted (None, or empty in a CSV)."""
+    return "" if value is None or value == "" else round(float(value))
+
+
 def markdown_table(rows):
     """The results as a Markdown table (for the README and issue notes)."""
     lines = ["| scene | mapper | prep (s) | median frame (s) [min-max] | RMSE covered | max error | memory (MB) "
-             "| GPU mesh B/cell |",
-             "|---|---|---|---|---|---|---|---|"]
+             "| GPU mesh B/cell | host B/cell |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| {r['scene']} | {r['mapper']} | {float(r['preparation_s']):.3f} | "
                      f"{float(r['median_s']):.3f} [{float(r['min_s']):.3f}-{float(r['max_s']):.3f}] | "
                      f"{float(r['rmse_covered']):.3g} | {float(r['max_error']):.3g} | {float(r['memory_mb']):.0f} | "
-                     f"{'' if r['gpu_bytes_per_cell'] is None else round(float(r['gpu_bytes_per_cell']))} |")
+                     f"{per_cell(r.get('gpu_bytes_per_cell'))} | {per_cell(r.get('host_bytes_per_cell'))} |")
     return "\n".join(lines) + "\n"
 
 
@@ -705,7 +711,8 @@ def readme_text(rows, command, started, machine, partial):
         "(each frame ends with glFinish), the RMSE of premultiplied RGB over the covered pixels against",
         "vtkUnstructuredVolumeReferenceRenderer at the same view (averaged over the views; this project's",
         "mappers on their float image, VTK's on the 8-bit window) and the largest error, the resident memory",
-        "the first frame added, and the GPU buffers of the mesh per cell of the scene (this project's mappers).",
+        "the first frame added, the GPU buffers of the mesh per cell of the scene (this project's mappers) and",
+        "the host memory the mapper keeps beside its input per cell (where the mapper counts it).",
         "",
         markdown_table(rows).rstrip("\n"),
         "",
@@ -800,7 +807,7 @@ def main():
         for name, factory, takes in mappers:
             if (takes == "hexahedra" and not hexahedral) or (takes == "image" and scene_image is None):
                 continue
-            preparation, frames, memory, images, mesh_bytes, work = run_mapper(
+            preparation, frames, memory, images, (mesh_bytes, host_bytes), work = run_mapper(
                 name, factory, {"tets": tets, "hexahedra": drawn, "image": scene_image, "any": drawn}[takes], scalar,
                 prop, cameras, size)
             errors = []
@@ -824,6 +831,8 @@ def main():
                 "memory_mb": memory,
                 # GPU buffers of the mesh per cell of the scene's mesh (a hexahedron, or its tetrahedra).
                 "gpu_bytes_per_cell": None if mesh_bytes is None else mesh_bytes / mesh.GetNumberOfCells(),
+                # What the mapper keeps in host memory beside its input (where it counts it).
+                "host_bytes_per_cell": None if host_bytes is None else host_bytes / mesh.GetNumberOfCells(),
                 "rmse": statistics.mean(e[0] for e in errors), "rmse_covered": statistics.mean(e[1] for e in errors),
                 "psnr": statistics.mean(min(e[2], 200.0) for e in errors), "max_error": max(e[3] for e in errors),
                 "p99_error": statistics.mean(e[4] for e in errors),

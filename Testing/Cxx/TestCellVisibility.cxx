@@ -70,16 +70,17 @@ TEST(CellVisibility, ListsRebuildOnlyWhenTheirInputsChange)
   std::vector<std::pair<double, double>> zeroSet = { { -1e300, 0.45 } };
   uv::CellLists lists;
   EXPECT_TRUE(lists.Update(1, low, high, zeroSet, {}, Serial));
-  EXPECT_EQ(lists.Volume, (std::vector<std::uint32_t>{ 1, 2 }));
+  EXPECT_EQ(lists.Volume(), (std::vector<std::uint32_t>{ 1, 2 }));
   EXPECT_TRUE(lists.Isosurface.empty());
   EXPECT_FALSE(lists.Update(1, low, high, zeroSet, {}, Serial));
   EXPECT_TRUE(lists.Update(1, low, high, zeroSet, { 0.05 }, Serial)); // an isovalue in cell 0
   EXPECT_EQ(lists.Isosurface, (std::vector<std::uint32_t>{ 0 }));
   EXPECT_EQ(lists.Drawn, (std::vector<std::uint32_t>{ 0, 1, 2 }));
+  EXPECT_EQ(lists.Volume(), (std::vector<std::uint32_t>{ 1, 2 })); // not Drawn: cell 0 only has a surface
   EXPECT_TRUE(lists.Update(2, low, high, zeroSet, { 0.05 }, Serial)); // new cells
   zeroSet.clear(); // skipping off: every cell is a volume cell
   EXPECT_TRUE(lists.Update(2, low, high, zeroSet, { 0.05 }, Serial));
-  EXPECT_EQ(lists.Volume.size(), 3u);
+  EXPECT_EQ(lists.Volume().size(), 3u);
   EXPECT_EQ(lists.Builds, 4);
   EXPECT_EQ(lists.Version, 4u);
 }

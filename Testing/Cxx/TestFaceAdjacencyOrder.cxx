@@ -50,9 +50,11 @@ Mesh Cubes(int n, Warp warp)
   return mesh;
 }
 
+const auto Serial = [](std::size_t count, const auto& run) { run(0, count); };
+
 std::vector<std::int32_t> Adjacency(const Mesh& mesh)
 {
-  return uv::MakeTetrahedronFaceAdjacency(mesh.Corners, [](auto begin, auto end) { std::sort(begin, end); });
+  return uv::MakeTetrahedronFaceAdjacency(mesh.Corners, Serial);
 }
 
 /// Back to front by centroid distance from `eye` (or along `towardsEye` for parallel projection).
@@ -76,7 +78,7 @@ std::vector<std::uint32_t> ExactOrder(const Mesh& mesh, const std::vector<std::u
   std::vector<std::uint32_t> order = CentroidOrder(mesh, cells, eye, parallel);
   uv::FaceAdjacencyOrder sorter;
   sorter.Sort(order, mesh.Corners, [&](std::size_t t, int k) { return mesh.At(t, k); }, Adjacency(mesh), eye,
-    parallel, [](std::size_t count, const auto& run) { run(0, count); });
+    parallel, Serial);
   if (cycles)
     *cycles = sorter.CyclesBroken;
   return order;
@@ -159,6 +161,23 @@ TEST(FaceAdjacencyOrder, AdjacencyOfCubes)
         const auto u = static_cast<std::size_t>(neighbours[4 * t + k]);
         EXPECT_EQ(std::count(neighbours.begin() + 4 * u, neighbours.begin() + 4 * u + 4, static_cast<std::int32_t>(t)), 1);
       }
+}
+
+TEST(FaceAdjacencyOrder, NoNeighbourAcrossAFaceOfThreeOrOnAFlatTetrahedron)
+{
+  // Points 0, 1, 2 make a face held by tetrahedra 0, 1 and 2; 3 and 4 share face 5 6 7; 5 has a
+  // repeated id and would otherwise match 3 and 4 there.
+  const std::vector<std::uint32_t> corners = { 0, 1, 2, 3, /**/ 0, 1, 2, 4, /**/ 2, 1, 0, 8, /**/
+    5, 6, 7, 9, /**/ 7, 6, 5, 10, /**/ 5, 6, 7, 7 };
+  const auto neighbours = uv::MakeTetrahedronFaceAdjacency(corners, Serial);
+  const auto neighbour = [&](int t, int k) { return neighbours[4 * t + k]; };
+  for (int t = 0; t < 3; ++t)
+    EXPECT_EQ(neighbour(t, 3), -1) << t; // opposite corner 3: the face of three
+  EXPECT_EQ(neighbour(3, 3), 4);
+  EXPECT_EQ(neighbour(4, 3), 3);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_EQ(neighbour(5, k), -1) << k;
+  EXPECT_EQ(std::count(neighbours.begin(), neighbours.end(), -1), static_cast<long>(neighbours.size()) - 2);
 }
 
 TEST(FaceAdjacencyOrder, RaysMeetTheOrderBackToFrontOnAConvexMesh)

@@ -148,6 +148,26 @@ class AccuracyTests(SceneTestCase):
         self.check(mesh, prop, camera, 96, 3e-4)
 
 
+class HostMemoryTests(SceneTestCase):
+    def test_host_bytes_per_tetrahedron(self):
+        # Kept between frames, per tetrahedron: 4 point ids (16 B), its scalar range (8), its place in
+        # the drawn list (4) and the order (4), its 4 face neighbours (16); per point a recentred
+        # position and scalar (16). Sort keys and the exact order's state live only while sorting,
+        # centroids are computed when sorting. The aim: at most 100 B per tetrahedron.
+        mesh = analytic(16)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        scene = Scene(mesh, prop, camera_for(mesh), 64)
+        scene.render()
+        tets, points = mesh.GetNumberOfCells(), mesh.GetNumberOfPoints()
+        per_tet = scene.mapper.GetHostMemoryInBytes() / tets
+        expected = 48 + 16 * points / tets
+        print(f"\n  {per_tet:.1f} B per tetrahedron kept on the host (itemised {expected:.1f})", end="")
+        self.assertEqual(scene.events.errors, 0)
+        self.assertGreaterEqual(per_tet, expected)  # every item counted
+        self.assertLessEqual(per_tet, expected + 1.0)
+        self.assertLessEqual(per_tet, 100.0)
+
+
 class BaselineTests(BaselineTestCase):
     def test_default_dataset(self):
         reader = vtkXMLUnstructuredGridReader()
