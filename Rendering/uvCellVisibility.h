@@ -80,10 +80,12 @@ public:
   }
   /// The cells with some extinction: Drawn itself when every drawn cell has (not kept twice).
   const std::vector<std::uint32_t>& Volume() const { return this->VolumeIsDrawn ? this->Drawn : this->VolumeOnly; }
-  std::uint64_t Version = 0; ///< bumped by every rebuild
-  int Builds = 0;
+  std::uint64_t Version = 0; ///< bumped whenever the lists change
+  int Builds = 0;            ///< classifications run
 
-  /// `parallelFor(count, function(begin, end))` runs the classification in chunks. True when rebuilt.
+  /// `parallelFor(count, function(begin, end))` runs the classification in chunks. True when the
+  /// lists changed. The caller keys `cellsVersion` to the cells' ranges and to which cells the ids
+  /// name (new cells under the same ids must also change the version it passes to what uses the ids).
   template <typename ParallelFor>
   bool Update(std::uint64_t cellsVersion, const std::vector<float>& low, const std::vector<float>& high,
     const std::vector<std::pair<double, double>>& zeroSet, const std::vector<double>& sortedIsovalues,
@@ -108,37 +110,40 @@ public:
       isosurfaceCount += roles[c] & IsosurfaceRole ? 1 : 0;
       drawnCount += roles[c] ? 1 : 0;
     }
-    this->VolumeIsDrawn = volumeCount == drawnCount;
-    Resize(this->VolumeOnly, this->VolumeIsDrawn ? 0 : volumeCount);
-    Resize(this->Isosurface, isosurfaceCount);
-    Resize(this->Drawn, drawnCount);
+    const bool volumeIsDrawn = volumeCount == drawnCount;
+    std::vector<std::uint32_t> volumeOnly(volumeIsDrawn ? 0 : volumeCount), isosurface(isosurfaceCount),
+      drawn(drawnCount);
     std::size_t v = 0, i = 0, d = 0;
     for (std::size_t c = 0; c < count; ++c)
     {
       const auto id = static_cast<std::uint32_t>(c);
-      if ((roles[c] & VolumeRole) && !this->VolumeIsDrawn)
-        this->VolumeOnly[v++] = id;
+      if ((roles[c] & VolumeRole) && !volumeIsDrawn)
+        volumeOnly[v++] = id;
       if (roles[c] & IsosurfaceRole)
-        this->Isosurface[i++] = id;
+        isosurface[i++] = id;
       if (roles[c])
-        this->Drawn[d++] = id;
+        drawn[d++] = id;
     }
     this->CellsVersion = cellsVersion;
     this->ZeroSet = zeroSet;
     this->Isovalues = sortedIsovalues;
-    ++this->Version;
     ++this->Builds;
+    // New values of the same cells often leave the lists as they were (a time step): then nothing
+    // downstream (order, uploads) needs redoing.
+    if (this->Version != 0 && volumeIsDrawn == this->VolumeIsDrawn && drawn == this->Drawn &&
+      isosurface == this->Isosurface && volumeOnly == this->VolumeOnly)
+    {
+      return false;
+    }
+    this->VolumeIsDrawn = volumeIsDrawn;
+    this->VolumeOnly.swap(volumeOnly);
+    this->Isosurface.swap(isosurface);
+    this->Drawn.swap(drawn);
+    ++this->Version;
     return true;
   }
 
 private:
-  static void Resize(std::vector<std::uint32_t>& list, std::size_t size)
-  {
-    if (list.capacity() > size + size / 8)
-      std::vector<std::uint32_t>().swap(list); // give back what a longer list held
-    list.resize(size);
-  }
-
   std::vector<std::uint32_t> VolumeOnly;
   bool VolumeIsDrawn = true;
   std::uint64_t CellsVersion = 0;

@@ -127,7 +127,7 @@ public:
   uv::ShellBuckets Buckets;
   struct
   {
-    std::uint64_t CellsVersion = 0;
+    std::uint64_t TopologyVersion = 0;
     vtkMTimeType MatrixTime = 0;
     int SamplesAcross = 0;
     double Value = 0.0;
@@ -269,6 +269,7 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(
   uvvtk::TetrahedralMesh::Change change;
   const std::string error =
     this->Mesh.Update(input, scalar, [self](double progress) { self->UpdateProgress(progress); }, change);
+  self->MeshUpdates = { this->Mesh.Builds, this->Mesh.PointRefreshes, this->Mesh.ValueRefreshes };
   if (!error.empty())
   {
     vtkErrorWithObjectMacro(self, << error);
@@ -279,9 +280,9 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(
     for (const std::string& warning : this->Warned.New(this->Mesh, input->GetNumberOfCells()))
       vtkWarningWithObjectMacro(self, << warning);
   }
-  if (change != uvvtk::TetrahedralMesh::Change::Nothing)
+  if (change == uvvtk::TetrahedralMesh::Change::All || change == uvvtk::TetrahedralMesh::Change::Points)
   {
-    this->Order.Invalidate(); // centroids moved, or new cells
+    this->Order.Invalidate(); // centroids moved, or new cells (new values alone keep both)
     std::vector<std::uint32_t> oriented = OrientedTetrahedra(this->Mesh);
     if (oriented != this->OrientedPoints)
     {
@@ -394,7 +395,7 @@ void vtkBarycentricShellMapper::Internals::UpdateGradients(
 
 /// SampleDistance, or the automatic one from the volume's bounds as of the last full build (or change
 /// of the volume's matrix or of AutomaticSamplesAcross): a deforming mesh keeps its sample distance,
-/// and so its segment table.
+/// and so its segment table, and so does a time step of new values.
 void vtkBarycentricShellMapper::Internals::UpdateSampleDistance(
   vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame)
 {
@@ -402,7 +403,7 @@ void vtkBarycentricShellMapper::Internals::UpdateSampleDistance(
   if (this->Now.SampleDistance > 0.0)
     return;
   const vtkMTimeType matrixTime = frame.Volume->GetMatrix()->GetMTime();
-  if (this->Automatic.CellsVersion != this->Mesh.CellsVersion || this->Automatic.MatrixTime != matrixTime ||
+  if (this->Automatic.TopologyVersion != this->Mesh.TopologyVersion || this->Automatic.MatrixTime != matrixTime ||
     this->Automatic.SamplesAcross != self->AutomaticSamplesAcross || !(this->Automatic.Value > 0.0))
   {
     double bounds[6];
@@ -410,7 +411,7 @@ void vtkBarycentricShellMapper::Internals::UpdateSampleDistance(
     const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) +
       std::pow(bounds[5] - bounds[4], 2));
     this->Automatic.Value = diagonal / self->AutomaticSamplesAcross;
-    this->Automatic.CellsVersion = this->Mesh.CellsVersion;
+    this->Automatic.TopologyVersion = this->Mesh.TopologyVersion;
     this->Automatic.MatrixTime = matrixTime;
     this->Automatic.SamplesAcross = self->AutomaticSamplesAcross;
   }
@@ -809,14 +810,6 @@ int vtkBarycentricShellMapper::GetNumberOfSorts()
 int vtkBarycentricShellMapper::GetNumberOfGradientComputations()
 {
   return this->Impl->Gradients.Computations;
-}
-int vtkBarycentricShellMapper::GetNumberOfMeshBuilds()
-{
-  return this->Impl->Mesh.Builds;
-}
-int vtkBarycentricShellMapper::GetNumberOfPointRefreshes()
-{
-  return this->Impl->Mesh.PointRefreshes;
 }
 
 vtkIdType vtkBarycentricShellMapper::GetMeshMemoryInBytes()

@@ -146,8 +146,6 @@ public:
   int GetNumberOfSegmentTableBuilds();
   int GetNumberOfGradientComputations();
   int GetNumberOfSorts();
-  int GetNumberOfMeshBuilds();
-  int GetNumberOfPointRefreshes();
   ///@}
 
   /// Tetrahedra, points, gradients, texture coordinates and the cell lists on the GPU (not the

@@ -80,7 +80,7 @@ private:
 };
 
 /// The faces where rays enter: the whole mesh's boundary, or with skipping the visible region's
-/// (uvVisibleRegion.h), the front of the visible matter. Cell ranges are computed once per mesh
+/// (uvVisibleRegion.h), the front of the visible matter. Cell ranges are computed once per change of the mesh
 /// (and isosurface kind); the region is rebuilt, and its version bumped for the GPU copy, only when
 /// the set of visible cells changes.
 class EntryFaces
@@ -100,22 +100,25 @@ public:
         this->Low, this->High, uvvtk::ParallelFor);
       this->RangesMeshVersion = mesh.Version;
       this->RangesWidened = widen;
-      this->Visible.clear(); // the region must be rebuilt
+      this->Classified = false;
     }
-    bool changed = skip != this->Skip || mesh.Version != this->MeshVersion;
+    const bool newCells = mesh.CellsVersion != this->MeshCellsVersion;
+    bool changed = skip != this->Skip || newCells;
     std::vector<double> isovalues;
     for (const uv::Isosurface& surface : isosurfaces)
       isovalues.push_back(surface.Value);
     std::sort(isovalues.begin(), isovalues.end());
     std::vector<std::pair<double, double>> zeroSet = uv::ZeroExtinctionIntervals(nodes);
-    // Visibility is classified again only when the ranges, the zero set or the isovalues changed.
-    if (skip && (this->Visible.empty() || zeroSet != this->ZeroSet || isovalues != this->Isovalues))
+    // Visibility is classified again only when the ranges, the zero set or the isovalues changed,
+    // and the region rebuilt only when that changed which cells are visible (or the cells are new).
+    if (skip && (!this->Classified || this->Visible.empty() || zeroSet != this->ZeroSet || isovalues != this->Isovalues))
     {
       std::vector<unsigned char> visible =
         uv::VisibleCells(this->Low, this->High, zeroSet, isovalues, uvvtk::ParallelFor);
       this->ZeroSet = std::move(zeroSet);
       this->Isovalues = std::move(isovalues);
-      if (visible != this->Visible)
+      this->Classified = true;
+      if (visible != this->Visible || newCells)
       {
         this->Region = uv::MakeVisibleRegion(mesh.Faces, visible);
         this->VisibleBits.assign((visible.size() + 31) / 32, 0u);
@@ -133,7 +136,7 @@ public:
       this->Region = uv::VisibleRegion();
     }
     this->Skip = skip;
-    this->MeshVersion = mesh.Version;
+    this->MeshCellsVersion = mesh.CellsVersion;
     this->Mesh = &mesh;
     this->Version += changed ? 1 : 0;
     return changed;
@@ -152,8 +155,8 @@ public:
 private:
   const uvvtk::HexahedralMesh* Mesh = nullptr;
   bool Skip = false;
-  std::uint64_t MeshVersion = 0, RangesMeshVersion = 0;
-  bool RangesWidened = false;
+  std::uint64_t MeshCellsVersion = 0, RangesMeshVersion = 0;
+  bool RangesWidened = false, Classified = false;
   std::vector<float> Low, High;
   std::vector<std::pair<double, double>> ZeroSet; // what Visible was classified with
   std::vector<double> Isovalues;
@@ -556,10 +559,6 @@ vtkIdType vtkHexahedralRayCastMapper::GetMeshMemoryInBytes()
 {
   return static_cast<vtkIdType>(this->Impl->Mesh.Bytes());
 }
-int vtkHexahedralRayCastMapper::GetNumberOfMeshBuilds()
-{
-  return this->Impl->Mesh.Builds;
-}
 
 void vtkHexahedralRayCastMapper::SetInputData(vtkDataSet* input)
 {
@@ -594,6 +593,7 @@ bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const uvvtk::Rend
   bool built = false;
   const std::string error =
     mesh.Update(input, scalar, [this](double progress) { this->UpdateProgress(progress); }, built);
+  this->MeshUpdates = { mesh.Builds, mesh.PointRefreshes, mesh.ValueRefreshes };
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
@@ -667,9 +667,9 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
   Internals& impl = *this->Impl;
   vtkOpenGLRenderWindow* window = frame.Window;
   const uvvtk::HexahedralMesh& mesh = impl.Mesh;
-  impl.Gpu.CellPoints.Sync(window, mesh.CellPoints, 4, mesh.Version);
+  impl.Gpu.CellPoints.Sync(window, mesh.CellPoints, 4, mesh.CellsVersion);
   impl.Gpu.Points.Sync(window, mesh.Points.Values, 4, mesh.Version);
-  impl.Gpu.Neighbours.Sync(window, mesh.Faces.Neighbours, 4, mesh.Version);
+  impl.Gpu.Neighbours.Sync(window, mesh.Faces.Neighbours, 4, mesh.CellsVersion);
   impl.Gpu.BoundaryFaces.Sync(window, impl.Entries.Boundary(), 4, impl.Entries.Version);
   if (impl.Entries.Skipping())
     impl.Gpu.VisibleCells.Sync(window, impl.Entries.VisibleCellBits(), 1, impl.Entries.Version);

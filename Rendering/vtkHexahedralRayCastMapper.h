@@ -114,7 +114,6 @@ public:
   vtkIdType GetNumberOfTangledCells();
   vtkIdType GetNumberOfBoundaryFaces();
   int GetNumberOfPeels();
-  int GetNumberOfMeshBuilds();
   ///@}
 
   ///@{

@@ -347,14 +347,16 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   uvvtk::TetrahedralMesh::Change change;
   const std::string error =
     impl.Mesh.Update(input, scalar, [this](double progress) { this->UpdateProgress(progress); }, change);
+  this->MeshUpdates = { impl.Mesh.Builds, impl.Mesh.PointRefreshes, impl.Mesh.ValueRefreshes };
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
     return false;
   }
+  if (change == uvvtk::TetrahedralMesh::Change::All || change == uvvtk::TetrahedralMesh::Change::Points)
+    impl.Order.Invalidate(); // new values alone change the order only through the visible list
   if (change != uvvtk::TetrahedralMesh::Change::Nothing)
   {
-    impl.Order.Invalidate();
     for (const std::string& warning : impl.Warned.New(impl.Mesh, input->GetNumberOfCells()))
       vtkWarningMacro(<< warning);
   }
@@ -416,7 +418,7 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
   Internals& impl = *this->Impl;
   vtkOpenGLRenderWindow* window = frame.Window;
   const bool cellsUploaded =
-    impl.TetrahedronPoints.Sync(window, impl.Mesh.TetrahedronPoints, 4, impl.Mesh.CellsVersion);
+    impl.TetrahedronPoints.Sync(window, impl.Mesh.TetrahedronPoints, 4, impl.Mesh.TopologyVersion);
   if (impl.Points.Sync(window, impl.Mesh.PointData, 4, impl.Mesh.Version) || cellsUploaded)
     ++impl.MeshUploads;
   if (impl.NeedGradients)

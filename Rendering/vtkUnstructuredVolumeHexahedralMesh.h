@@ -1,7 +1,8 @@
 // The cells of any vtkDataSet as vtkHexahedralRayCastMapper's passes read them: 8 point ids per
 // cell (tetrahedra, pyramids and wedges as collapsed hexahedra), the recentred points with the normalised point scalar (vtkUnstructuredVolumePointData.h) or
 // one normalised value per cell for cell data, face adjacency and boundary faces (uvHexahedralMesh.h),
-// rebuilt only when the input or its scalar changes. Reads VTK data through the generic cell API,
+// rebuilt only when the input's cells or its scalar's selection change (positions and values alone are
+// refreshed). Reads VTK data through the generic cell API,
 // so no input type needs a conversion.
 #ifndef vtkUnstructuredVolumeHexahedralMesh_h
 #define vtkUnstructuredVolumeHexahedralMesh_h
@@ -9,6 +10,7 @@
 #include "uvHexahedralMesh.h"
 #include "uvLinearCellSplit.h"
 #include "uvScalarNormalisation.h"
+#include "vtkUnstructuredVolumeMeshContent.h"
 #include "vtkUnstructuredVolumePointData.h"
 #include "vtkUnstructuredVolumeTetrahedralMesh.h"
 
@@ -44,26 +46,76 @@ public:
   uv::HexahedralFaces Faces;
   vtkIdType TangledCells = 0, NaNCells = 0;
   vtkIdType FlatCells = 0; // vertices, lines and polygons: not volumes, left out
-  int Builds = 0;
-  std::uint64_t Version = 0; // bumped by every build
+  int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;
+  std::uint64_t Version = 0;      // bumped by every change: positions, values, cells
+  std::uint64_t CellsVersion = 0; // CellPoints and Faces: bumped by builds only
 
   std::size_t CellCount() const { return this->CellPoints.size() / 8; }
   std::size_t BoundaryCount() const { return this->Faces.Boundary.size() / 4; }
 
-  /// Rebuilds the mesh when `input` or its rendered scalar changed (`built` then true); returns an
-  /// error message, empty on success. `progress` goes from 0 to 1 over a build.
+  /// Brings the mesh up to date with `input` and its rendered scalar (`built` true when it was
+  /// rebuilt), judged by content, not by which objects hold it: an unstructured grid whose cells are
+  /// those built from (a reader's time step) only has its positions or values refreshed, keeping the
+  /// face adjacency, unless a NaN left a cell out or brought one back. Returns an error message,
+  /// empty on success. `progress` goes from 0 to 1 over a build.
   std::string Update(
     vtkDataSet* input, const RenderedScalar& scalar, const std::function<void(double)>& progress, bool& built)
   {
     built = false;
-    const Source source{ input, input->GetMTime(), scalar.Array, scalar.Array->GetMTime(), scalar.OnCells,
-      scalar.Component };
-    if (source == this->BuiltFrom)
+    const MeshChanges changed = this->Seen.Update(input, scalar);
+    if (!changed.Any())
     {
       return std::string();
     }
+    if (this->Valid && !changed.Cells && !this->Subdivided && this->Refresh(input, scalar, changed))
+    {
+      ++this->Version;
+      ++(changed.Values ? this->ValueRefreshes : this->PointRefreshes);
+      return std::string();
+    }
+    std::string error = this->Build(input, scalar, progress);
+    this->Valid = error.empty();
+    if (!this->Valid)
+    {
+      this->Seen.Forget();
+      return error;
+    }
+    built = true;
+    return error;
+  }
+
+private:
+  MeshContent Seen;
+  bool Valid = false; // built from what Seen holds
+
+  /// New positions and values of the cells built from; false when the cells drawn would differ.
+  bool Refresh(vtkDataSet* input, const RenderedScalar& scalar, const MeshChanges& changed)
+  {
+    std::vector<std::uint32_t> cells = std::move(this->CellPoints);
+    std::vector<float> cellScalars = std::move(this->CellScalars);
+    this->Points.Build(input, scalar);
+    if (changed.Values)
+    {
+      this->ReadCells(input);
+      if (this->CellPoints != cells)
+        return false;
+    }
+    else
+    {
+      this->CellPoints = std::move(cells);
+      this->CellScalars = std::move(cellScalars);
+    }
+    if (changed.Points)
+      this->TangledCells =
+        static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
+    return true;
+  }
+
+  std::string Build(vtkDataSet* input, const RenderedScalar& scalar, const std::function<void(double)>& progress)
+  {
     progress(0.0); // the adjacency can take seconds on large meshes
-    this->BuiltFrom = Source();
+    ++this->Version;
+    ++this->CellsVersion;
     RenderedScalar drawn = scalar;
     vtkDataSet* linear = this->Linearise(input, drawn);
     if (!linear)
@@ -87,14 +139,12 @@ public:
     this->Faces = uv::MakeHexahedralFaces(
       this->CellPoints, samePoint, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
       [&progress](double fraction) { progress(0.8 * fraction); });
-    this->BuiltFrom = source;
     ++this->Builds;
-    ++this->Version;
     progress(1.0);
-    built = true;
     return std::string();
   }
 
+public:
   std::size_t Bytes() const
   {
     return sizeof(std::uint32_t) * this->CellPoints.size() + sizeof(float) * this->Points.Values.size() +
@@ -125,25 +175,6 @@ private:
   }
 
   vtkSmartPointer<vtkUnstructuredGrid> Subdivided; // the linear hexahedra drawn for higher-order ones
-
-  /// What the mesh was built from: it is rebuilt when any of these differ.
-  struct Source
-  {
-    const void* Input = nullptr;
-    vtkMTimeType InputTime = 0;
-    const void* Scalars = nullptr;
-    vtkMTimeType ScalarsTime = 0;
-    bool OnCells = false;
-    int Component = 0;
-
-    bool operator==(const Source& other) const
-    {
-      return this->Input == other.Input && this->InputTime == other.InputTime && this->Scalars == other.Scalars &&
-        this->ScalarsTime == other.ScalarsTime && this->OnCells == other.OnCells &&
-        this->Component == other.Component;
-    }
-  };
-  Source BuiltFrom;
 
   /// Where a cell's points go among a hexahedron's 8 corners (uvHexahedralMesh.h's orders), or
   /// null for a cell the walk cannot take.

@@ -235,4 +235,8 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SegmentIntegration: "
      << (this->SegmentIntegration == AUTOMATIC ? "Automatic" : this->SegmentIntegration == TABLE ? "Table" : "Exact")
      << "\n";
+  // What the mesh updates redid (readable where the mapper is not wrapped, as in ParaView's Python).
+  os << indent << "MeshBuilds: " << this->MeshUpdates.Builds << "\n";
+  os << indent << "PointRefreshes: " << this->MeshUpdates.PointRefreshes << "\n";
+  os << indent << "ValueRefreshes: " << this->MeshUpdates.ValueRefreshes << "\n";
 }

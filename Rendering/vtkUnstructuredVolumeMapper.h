@@ -163,6 +163,16 @@ public:
   vtkGetMacro(OpacityThreshold, double);
   ///@}
 
+  ///@{
+  /// What the mapper redid for its input's changes, recognised by content (a reader's time steps are
+  /// new objects): full builds of its mesh (new cells, another array), refreshes of the positions
+  /// alone (same cells, the points moved) and of the scalar's values (same cells; the points may
+  /// have moved too), which keep the cells' split, adjacency and what depends on them.
+  int GetNumberOfMeshBuilds() { return this->MeshUpdates.Builds; }
+  int GetNumberOfPointRefreshes() { return this->MeshUpdates.PointRefreshes; }
+  int GetNumberOfValueRefreshes() { return this->MeshUpdates.ValueRefreshes; }
+  ///@}
+
   /// Bytes of GPU buffers the mesh takes (not the screen-sized images), as of the last frame.
   virtual vtkIdType GetMeshMemoryInBytes() = 0;
 
@@ -204,6 +214,10 @@ protected:
   int SegmentIntegration = AUTOMATIC;
   int VisibilityOrder = FACE_ORDER;
   vtkIdType NumberOfCyclesBroken = 0; ///< set by the mappers that order tetrahedra
+  struct
+  {
+    int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;
+  } MeshUpdates; ///< set by the mapper after each update of its mesh
   int NumberOfTransferFunctionNodes = 0; ///< set by the mapper when it rebuilds its nodes
 
 private:

@@ -9,15 +9,18 @@
 #include "uvFaceAdjacencyOrder.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
+#include "vtkUnstructuredVolumeMeshContent.h"
 #include "vtkUnstructuredVolumePointData.h"
 #include "vtkUnstructuredVolumeScalar.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkHexahedraToTetrahedra.h"
+#include "vtkIdTypeArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSMPTools.h"
@@ -56,6 +59,7 @@ public:
   {
     Nothing,
     Points, ///< only the point positions (a deforming mesh): PointData's xyz
+    Values, ///< the scalar's values (and maybe the points), the same tetrahedra drawn
     All
   };
 
@@ -73,10 +77,11 @@ public:
   uv::ScalarNormalisation Normalisation;          // of the rendered scalar's finite values
   vtkIdType SplitCells = 0;       // input cells that were not tetrahedra, as of the last build
   vtkIdType NaNTetrahedra = 0;    // tetrahedra left out for a NaN scalar
-  int Builds = 0, PointRefreshes = 0;
+  int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;
   // Versions of what the GPU copies: bumped by every change (so from 1 after the first build).
   std::uint64_t Version = 0;      // anything: positions, scalar, cells
-  std::uint64_t CellsVersion = 0; // TetrahedronPoints, ScalarLow/High (not a point-only refresh)
+  std::uint64_t CellsVersion = 0; // ScalarLow/High and TetrahedronPoints (not a point-only refresh)
+  std::uint64_t TopologyVersion = 0; // TetrahedronPoints alone (not a refresh leaving the same drawn)
 
   std::size_t Size() const { return this->TetrahedronPoints.size() / 4; }
   /// Host bytes of the copies above (not the input or its split).
@@ -98,72 +103,122 @@ public:
   }
   bool OnCells() const { return this->Scalar.OnCells; }
   /// Forgets the build: the next Update rebuilds.
-  void Invalidate() { this->TopologyKey.clear(); this->FullKey.clear(); }
+  void Invalidate()
+  {
+    this->Seen.Forget();
+    this->Built = false;
+  }
 
-  /// Brings the mesh up to date with `input` and its rendered scalar. When only the points moved
-  /// (same cells, same scalar) just the positions and centroids are refreshed: a deforming mesh costs
-  /// no rebuild. Returns an error message, empty on success.
+  /// Brings the mesh up to date with `input` and its rendered scalar, judged by content, not by
+  /// which objects hold it (a reader's time steps are new objects): when the cells are the same and
+  /// only the points moved, just the positions are refreshed; when the scalar's values changed, the
+  /// split, the drawn tetrahedra (unless a NaN left one out or brought one back) and what depends on
+  /// them only are kept. Returns an error message, empty on success.
   std::string Update(vtkUnstructuredGridBase* input, const RenderedScalar& scalar,
     const std::function<void(double)>& progress, Change& change)
   {
     change = Change::Nothing;
-    const std::string topologyKey = TopologyKeyOf(input, scalar);
-    const std::string fullKey = topologyKey + "|" + PointsKeyOf(input);
-    if (fullKey == this->FullKey)
+    const MeshChanges changed = this->Seen.Update(input, scalar);
+    if (!changed.Any())
     {
       return std::string();
     }
-    if (topologyKey == this->TopologyKey && this->SplitCells == 0 && input == this->Tetrahedra.Get())
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+    if (this->Built && !changed.Cells && grid && this->KeepsInputPoints)
     {
-      this->RefreshPoints();
-      this->FullKey = fullKey;
-      change = Change::Points;
-      ++this->PointRefreshes;
+      this->Adopt(grid, scalar, changed);
       ++this->Version;
+      if (!changed.Values)
+      {
+        this->RefreshPoints();
+        ++this->PointRefreshes;
+        change = Change::Points;
+        return std::string();
+      }
+      ++this->CellsVersion;
+      ++this->ValueRefreshes;
+      change = this->RefreshValues() ? Change::Values : Change::All;
       return std::string();
     }
-    this->Invalidate();
     change = Change::All;
     ++this->Version;
     ++this->CellsVersion;
+    ++this->TopologyVersion;
     std::string error = this->Build(input, scalar, progress);
-    if (error.empty())
+    this->Built = error.empty();
+    if (!this->Built)
     {
-      this->TopologyKey = topologyKey;
-      this->FullKey = fullKey;
-      ++this->Builds;
+      this->Invalidate();
+      return error;
     }
+    this->KeepsInputPoints = this->SplitCells == 0 || (grid && this->Tetrahedra->GetPoints() == grid->GetPoints());
+    ++this->Builds;
     return error;
   }
 
 private:
-  std::string TopologyKey, FullKey;
+  MeshContent Seen;
+  bool Built = false;
+  bool KeepsInputPoints = false; // the tetrahedra are the input's cells, or their split on its points
 
-  static std::string Id(const void* p) { return std::to_string(reinterpret_cast<std::uintptr_t>(p)); }
-
-  /// Identifies the cells and the scalar (not the point positions) by address and modification time.
-  static std::string TopologyKeyOf(vtkUnstructuredGridBase* input, const RenderedScalar& scalar)
+  /// Makes Tetrahedra show `grid`'s points and scalar, its cells being the same as those built from.
+  void Adopt(vtkUnstructuredGrid* grid, const RenderedScalar& scalar, const MeshChanges& changed)
   {
-    std::string key = Id(input) + ":" + Id(scalar.Array) + ":" + std::to_string(scalar.Array->GetMTime()) + ":" +
-      (scalar.OnCells ? "cells:" : "points:") + std::to_string(scalar.Component);
-    auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
-    if (grid && grid->GetCells() && grid->GetCellTypesArray() && grid->GetPoints())
+    if (this->SplitCells == 0)
     {
-      return key + ":" + Id(grid->GetCells()) + ":" + std::to_string(grid->GetCells()->GetMTime()) + ":" +
-        Id(grid->GetCellTypesArray()) + ":" + std::to_string(grid->GetCellTypesArray()->GetMTime()) + ":" +
-        std::to_string(grid->GetNumberOfPoints());
+      this->Tetrahedra = grid;
     }
-    return key + ":" + std::to_string(input->GetMTime());
+    else
+    {
+      if (changed.Points)
+        this->Tetrahedra->SetPoints(grid->GetPoints());
+      if (changed.Values && !scalar.OnCells)
+        this->Tetrahedra->GetPointData()->ShallowCopy(grid->GetPointData());
+      if (changed.Values && scalar.OnCells)
+        this->MoveCellScalar(scalar);
+    }
+    this->Scalar = this->SplitCells == 0 ? scalar : scalar.On(this->Tetrahedra);
+    this->Scalars = this->Scalar.Array;
   }
 
-  static std::string PointsKeyOf(vtkUnstructuredGridBase* input)
+  /// A cell scalar of the input onto the split's tetrahedra, through their original cell ids.
+  void MoveCellScalar(const RenderedScalar& scalar)
   {
-    auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
-    if (grid && grid->GetCells() && grid->GetCellTypesArray() && grid->GetPoints())
+    vtkCellData* cells = this->Tetrahedra->GetCellData();
+    auto* original = vtkIdTypeArray::SafeDownCast(cells->GetArray("vtkOriginalCellIds"));
+    vtkSmartPointer<vtkDataArray> moved = vtk::TakeSmartPointer(scalar.Array->NewInstance());
+    moved->SetName(scalar.Array->GetName());
+    moved->SetNumberOfComponents(scalar.Array->GetNumberOfComponents());
+    moved->SetNumberOfTuples(this->Tetrahedra->GetNumberOfCells());
+    if (original)
     {
-      return Id(grid->GetPoints()) + ":" + std::to_string(grid->GetPoints()->GetMTime());
+      vtkSMPTools::For(0, this->Tetrahedra->GetNumberOfCells(), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType t = begin; t < end; ++t)
+          moved->SetTuple(t, original->GetValue(t), scalar.Array);
+      });
     }
-    return std::string();
+    if (moved->GetName())
+      cells->AddArray(moved);
+    else
+      cells->SetScalars(moved);
+  }
+
+  /// The normalised scalar, the drawn tetrahedra and their ranges again, from Tetrahedra's scalar.
+  /// False when the drawn tetrahedra changed (a NaN appeared or went), which is then a new topology.
+  bool RefreshValues()
+  {
+    RecentredPoints recentred;
+    recentred.Build(this->Tetrahedra, this->Scalar);
+    this->PointData = std::move(recentred.Values);
+    this->Center = recentred.Center;
+    this->Normalisation = recentred.Normalisation;
+    const std::vector<std::uint32_t> drawn = std::move(this->TetrahedronPoints);
+    this->ReadTetrahedra(recentred.CellValues);
+    this->WriteScalarRanges();
+    if (this->TetrahedronPoints == drawn)
+      return true;
+    ++this->TopologyVersion;
+    return false;
   }
 
   std::string Build(vtkUnstructuredGridBase* input, const RenderedScalar& scalar,
@@ -525,7 +580,7 @@ private:
         corners[i] = mesh.CornerPoints[drawn[i]];
     }
     const std::vector<std::uint32_t>& ids = ownPoints ? corners : drawn;
-    if (this->AdjacencyFor != mesh.CellsVersion)
+    if (this->AdjacencyFor != mesh.TopologyVersion)
     {
       this->Adjacency =
         uv::MakeTetrahedronFaceAdjacency(ids, [](std::size_t count, const auto& run) {
@@ -533,7 +588,7 @@ private:
             run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
           });
         });
-      this->AdjacencyFor = mesh.CellsVersion;
+      this->AdjacencyFor = mesh.TopologyVersion;
     }
     const float* points = mesh.PointData.data();
     const auto position = [&](std::size_t t, int k) {
@@ -550,7 +605,7 @@ private:
   }
 
   std::vector<std::int32_t> Adjacency;
-  std::uint64_t AdjacencyFor = 0; // the mesh's CellsVersion
+  std::uint64_t AdjacencyFor = 0; // the mesh's TopologyVersion
   uv::FaceAdjacencyOrder Faces;
   glm::dvec3 Eye{ 0.0 }, Direction{ 0.0 };
   bool Parallel = false, Valid = false, FrontToBack = false, Exact = false;

@@ -77,11 +77,17 @@ TEST(CellVisibility, ListsRebuildOnlyWhenTheirInputsChange)
   EXPECT_EQ(lists.Isosurface, (std::vector<std::uint32_t>{ 0 }));
   EXPECT_EQ(lists.Drawn, (std::vector<std::uint32_t>{ 0, 1, 2 }));
   EXPECT_EQ(lists.Volume(), (std::vector<std::uint32_t>{ 1, 2 })); // not Drawn: cell 0 only has a surface
-  EXPECT_TRUE(lists.Update(2, low, high, zeroSet, { 0.05 }, Serial)); // new cells
+  // New ranges (a time step's values) are classified again, but lists that come out the same are
+  // no change for what uses them.
+  EXPECT_FALSE(lists.Update(2, low, high, zeroSet, { 0.05 }, Serial));
+  EXPECT_EQ(lists.Version, 2u);
+  const std::vector<float> lower = { 0.0f, 0.3f, 0.6f }, upper = { 0.1f, 0.4f, 0.9f }; // cell 1 invisible now
+  EXPECT_TRUE(lists.Update(3, lower, upper, zeroSet, { 0.05 }, Serial));
+  EXPECT_EQ(lists.Drawn, (std::vector<std::uint32_t>{ 0, 2 }));
   zeroSet.clear(); // skipping off: every cell is a volume cell
-  EXPECT_TRUE(lists.Update(2, low, high, zeroSet, { 0.05 }, Serial));
+  EXPECT_TRUE(lists.Update(3, low, high, zeroSet, { 0.05 }, Serial));
   EXPECT_EQ(lists.Volume().size(), 3u);
-  EXPECT_EQ(lists.Builds, 4);
+  EXPECT_EQ(lists.Builds, 5);
   EXPECT_EQ(lists.Version, 4u);
 }
 

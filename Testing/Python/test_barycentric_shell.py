@@ -455,6 +455,11 @@ class SkippingTests(SceneTestCase):
         scene.renderer.GetActiveCamera().Azimuth(10)
         scene.render()
         self.assertEqual(scene.mapper.GetNumberOfSorts(), 2)
+        mesh.GetPoints().Modified()  # touched, not changed: the mapper compares content
+        scene.render()
+        self.assertEqual(scene.mapper.GetNumberOfSorts(), 2)
+        x, y, z = mesh.GetPoint(7)
+        mesh.GetPoints().SetPoint(7, x + 0.01, y, z)
         mesh.GetPoints().Modified()
         scene.render()
         self.assertEqual(scene.mapper.GetNumberOfSorts(), 3)
