@@ -25,7 +25,9 @@ PARAVIEW_VOLUME = "Volume"
 # Linear 3D cells the hexahedral ray caster walks without a split (VTK cell type ids).
 VTK_TETRA, VTK_VOXEL, VTK_HEXAHEDRON, VTK_WEDGE, VTK_PYRAMID = 10, 11, 12, 13, 14
 RAY_CAST_CELLS = {VTK_TETRA, VTK_VOXEL, VTK_HEXAHEDRON, VTK_WEDGE, VTK_PYRAMID}
-STRUCTURED_TYPES = ("vtkImageData", "vtkUniformGrid", "vtkRectilinearGrid", "vtkStructuredGrid")
+# Grids whose cells are all one type, known from their extent without fetching the data.
+GRID_CELL_TYPES = {"vtkImageData": VTK_VOXEL, "vtkUniformGrid": VTK_VOXEL, "vtkRectilinearGrid": VTK_VOXEL,
+                   "vtkStructuredGrid": VTK_HEXAHEDRON}
 DEFAULT_PLUGIN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "paraview", "lib",
                               "paraview-plugins", "UnstructuredVolume", "UnstructuredVolume.so")
 BACKGROUND = [0.1, 0.1, 0.12]
@@ -94,7 +96,10 @@ def open_file(simple, arguments):
             raise UserError(f"no such file: {solution}")
         reader = simple.PLOT3DReader(FileName=arguments.mesh, QFileName=[solution])
     else:
-        reader = simple.OpenDataFile(arguments.mesh)
+        try:
+            reader = simple.OpenDataFile(arguments.mesh)
+        except RuntimeError:  # paraview.simple's way of saying that no reader takes the file
+            reader = None
         if reader is None:
             raise UserError(f"ParaView has no reader for {arguments.mesh}")
     reader.UpdatePipeline()
@@ -113,10 +118,11 @@ def three_dimensional_cell_types(servermanager, source):
     from vtkmodules.vtkCommonDataModel import vtkCellTypes, vtkGenericCell
 
     information = source.GetDataInformation().DataInformation
-    if information.GetDataSetTypeAsString() in STRUCTURED_TYPES:
+    grid_cell_type = GRID_CELL_TYPES.get(information.GetDataSetTypeAsString())
+    if grid_cell_type is not None:
         extent = information.GetExtent()
         flat = any(extent[2 * d + 1] <= extent[2 * d] for d in range(3))
-        return set() if flat else {VTK_HEXAHEDRON}
+        return set() if flat else {grid_cell_type}
     data = servermanager.Fetch(source)
     if hasattr(data, "GetDistinctCellTypesArray"):
         distinct = data.GetDistinctCellTypesArray()
@@ -252,7 +258,7 @@ def label(simple, view, text, scene):
     shown = simple.Show(caption, view)
     scene.extend([caption, shown])
     shown.WindowLocation = "Upper Left Corner"
-    shown.FontSize = 12
+    shown.FontSize = max(6, min(14, view.ViewSize[0] // 20))  # the entry's name about fits the view's width
     return caption
 
 
