@@ -2,18 +2,21 @@
 
     pvbatch test_render_file.py <pvbatch> <plugin> <output folder>
 
-Checks, on a generated .vtu of hexahedra and one of tetrahedra written here, and, where
+Checks, on generated .vtu files of hexahedra, tetrahedra and a pentagonal prism written here, and, where
 ../shared/data exists, on the OpenFOAM cavity (every time step, a cell array) and the PLOT3D Blunt
 Fin: the Representation entry the command reports, that every PNG it names exists at the size asked
 (twice as wide with --compare) and covers part of the middle of each view; and that a wrong array
 name, a missing file and a surface without 3D cells end with a non-zero exit and a one-line message.
 """
+import math
 import os
 import re
 import subprocess
 import sys
 import time
 
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import VTK_PENTAGONAL_PRISM, vtkUnstructuredGrid
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter, vtkImageDataToPointSet
 from vtkmodules.vtkFiltersSources import vtkSphereSource
@@ -34,7 +37,7 @@ failures = []
 
 def write_meshes():
     """The wavelet (8^3 cells) as unstructured hexahedra (a structured grid's cells are hexahedra),
-    the same split into tetrahedra, and a sphere's surface: three files of ours."""
+    the same split into tetrahedra, a pentagonal prism and a sphere's surface: four files of ours."""
     wavelet = vtkRTAnalyticSource()
     wavelet.SetWholeExtent(-4, 4, -4, 4, -4, 4)
     structured = vtkImageDataToPointSet()
@@ -50,6 +53,23 @@ def write_meshes():
         paths[name] = writer_path = os.path.join(output, f"render_file_{name}.vtu")
         writer.SetFileName(writer_path)
         writer.Write()
+    prism = vtkUnstructuredGrid()  # one pentagonal prism: a cell the ray caster does not take
+    corners = vtkPoints()
+    for z in (0.0, 1.0):
+        for k in range(5):
+            corners.InsertNextPoint(math.cos(0.4 * math.pi * k), math.sin(0.4 * math.pi * k), z)
+    prism.SetPoints(corners)
+    prism.InsertNextCell(VTK_PENTAGONAL_PRISM, 10, list(range(10)))
+    height = vtkDoubleArray()
+    height.SetName("height")
+    for i in range(10):
+        height.InsertNextValue(corners.GetPoint(i)[0] + corners.GetPoint(i)[2])
+    prism.GetPointData().AddArray(height)
+    writer = vtkXMLUnstructuredGridWriter()
+    writer.SetInputData(prism)
+    paths["prism"] = os.path.join(output, "render_file_prism.vtu")
+    writer.SetFileName(paths["prism"])
+    writer.Write()
     sphere = vtkSphereSource()  # held here: an output port does not keep its algorithm alive
     writer = vtkXMLPolyDataWriter()
     writer.SetInputConnection(sphere.GetOutputPort())
@@ -88,8 +108,9 @@ def covered_share(pixel, left, width, height):
     return len(covered) / len(middle)
 
 
-def check_render(case, arguments, entry, frames, size, compare=False, expect=None):
-    """Runs the command, then checks its entry, frame count and every PNG."""
+def check_render(case, arguments, entry, frames, size, compare=False, expect=None, orbit=False):
+    """Runs the command, then checks its entry, frame count and every PNG (and, for an orbit, that
+    the first two frames differ)."""
     prefix = os.path.join(output, f"render_file_{case}")
     arguments = [*arguments, "--size", str(size[0]), str(size[1]), "--output", prefix]
     if compare:
@@ -107,12 +128,14 @@ def check_render(case, arguments, entry, frames, size, compare=False, expect=Non
     if len(reported) != frames or any(int(n) != frames for _, n, _, _ in reported):
         failures.append(f"{case}: {len(reported)} progress lines, expected {frames}")
     views = 2 if compare else 1
+    images = []
     for index in range(frames):
         path = f"{prefix}_{index:04d}.png"
         if not os.path.exists(path):
             failures.append(f"{case}: {path} missing")
             continue
         width, height, pixel = png(path)
+        images.append([pixel(x, y) for x in range(width) for y in range(height)])
         if (width, height) != (views * size[0], size[1]):
             failures.append(f"{case}: {path} is {width}x{height}, expected {views * size[0]}x{size[1]}")
             continue
@@ -120,6 +143,10 @@ def check_render(case, arguments, entry, frames, size, compare=False, expect=Non
             share = covered_share(pixel, view * size[0], size[0], size[1])
             if share < 0.05:
                 failures.append(f"{case}: {path} view {view + 1} covers {100 * share:.1f}% of its middle")
+    if orbit and len(images) >= 2:
+        moved = len([1 for a, b in zip(images[0], images[1]) if a != b]) / len(images[0])
+        if moved < 0.01:
+            failures.append(f"{case}: the orbit's second frame is the first one ({100 * moved:.2f}% of pixels differ)")
 
 
 def check_error(case, arguments, message):
@@ -136,9 +163,10 @@ def check_error(case, arguments, message):
 
 meshes = write_meshes()
 check_render("hexahedra", [meshes["hexahedra"], "--views", "2"], HEXAHEDRAL, 2, (128, 96),
-             expect="points array 'RTData'")
+             expect="points array 'RTData'", orbit=True)
 check_render("tetrahedra", [meshes["tetrahedra"], "--preset", "Viridis (matplotlib)"], TETRAHEDRA, 1, (128, 128),
              compare=True)
+check_render("prism", [meshes["prism"]], TETRAHEDRA, 1, (128, 128))
 check_error("bad_array", [meshes["hexahedra"], "--array", "no_such_array"],
             "render_file: error: no array named 'no_such_array'")
 check_error("missing_file", [os.path.join(output, "no_such_file.vtu")], "render_file: error: no such file")
