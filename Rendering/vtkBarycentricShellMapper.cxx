@@ -385,7 +385,8 @@ void vtkBarycentricShellMapper::Internals::UpdateGradients(
   if (this->Now.NeedGradients)
   {
     bool ignoredArray = false;
-    this->Gradients.Update(this->Mesh, self->GradientArrayName, ignoredArray);
+    this->Gradients.Update(
+      this->Mesh.Tetrahedra, this->Mesh.Scalar, this->Mesh.Version, self->GradientArrayName, ignoredArray);
     if (ignoredArray)
       vtkWarningWithObjectMacro(self,
         "the gradient array '" << self->GradientArrayName << "' does not have 3 components; computing gradients");

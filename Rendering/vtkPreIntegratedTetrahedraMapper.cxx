@@ -394,7 +394,8 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   if (impl.NeedGradients)
   {
     bool ignoredArray = false;
-    impl.Gradients.Update(impl.Mesh, this->GradientArrayName, ignoredArray);
+    impl.Gradients.Update(
+      impl.Mesh.Tetrahedra, impl.Mesh.Scalar, impl.Mesh.Version, this->GradientArrayName, ignoredArray);
     if (ignoredArray)
       vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
   }
