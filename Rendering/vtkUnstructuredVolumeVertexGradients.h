@@ -72,7 +72,8 @@ inline std::vector<float> VertexGradients(vtkDataSet* cells, const RenderedScala
 }
 
 /// Vertex gradients for lighting (4 floats per point): the point array `arrayName` of the mesh when it
-/// has 3 components, else computed (vtkVertexGradientFilter), each only once per mesh version.
+/// has 3 components, else computed (vtkVertexGradientFilter), each only once per mesh version and
+/// array.
 struct VertexGradientCache
 {
   std::vector<float> Values;
@@ -88,12 +89,12 @@ struct VertexGradientCache
     ignoredArray = given && given->GetNumberOfComponents() != 3;
     if (ignoredArray)
       given = nullptr;
-    if (meshVersion == this->MeshVersion && (given != nullptr) == this->Given)
+    if (meshVersion == this->MeshVersion && given == this->Given)
       return false;
     this->Values = VertexGradients(cells, scalar, given);
     this->Computations += given ? 0 : 1;
     this->MeshVersion = meshVersion;
-    this->Given = given != nullptr;
+    this->Given = given;
     ++this->Version;
     return true;
   }
@@ -102,7 +103,7 @@ struct VertexGradientCache
 
 private:
   std::uint64_t MeshVersion = 0;
-  bool Given = false;
+  const void* Given = nullptr; // the array read, or null when computed (compared, never read)
 };
 
 } // namespace uvvtk
