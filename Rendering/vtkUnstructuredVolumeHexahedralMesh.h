@@ -1,7 +1,7 @@
 // The cells of any vtkDataSet as vtkHexahedralRayCastMapper's passes read them: 8 point ids per
 // cell (tetrahedra, pyramids and wedges as collapsed hexahedra), the recentred points with the normalised point scalar (vtkUnstructuredVolumePointData.h) or
 // one normalised value per cell for cell data, face adjacency and boundary faces (uvHexahedralMesh.h),
-// rebuilt only when the input or its scalar changes. Reads VTK data through the generic cell API,
+// rebuilt only when the input or its scalar changes; what they were built from, for vertex gradients. Reads VTK data through the generic cell API,
 // so no input type needs a conversion.
 #ifndef vtkUnstructuredVolumeHexahedralMesh_h
 #define vtkUnstructuredVolumeHexahedralMesh_h
@@ -42,6 +42,10 @@ public:
   std::vector<float> CellScalars;        // per cell, normalised, for a cell scalar (else empty)
   RecentredPoints Points;
   uv::HexahedralFaces Faces;
+  // What CellPoints' ids index (the input, or its subdivision) and the scalar rendered on it, as of
+  // the last build: vertex gradients are computed on these.
+  vtkSmartPointer<vtkDataSet> Drawn;
+  RenderedScalar DrawnScalar;
   vtkIdType TangledCells = 0, NaNCells = 0;
   vtkIdType FlatCells = 0; // vertices, lines and polygons: not volumes, left out
   int Builds = 0;
@@ -64,6 +68,8 @@ public:
     }
     progress(0.0); // the adjacency can take seconds on large meshes
     this->BuiltFrom = Source();
+    this->Drawn = nullptr;
+    this->DrawnScalar = RenderedScalar();
     RenderedScalar drawn = scalar;
     vtkDataSet* linear = this->Linearise(input, drawn);
     if (!linear)
@@ -87,6 +93,8 @@ public:
     this->Faces = uv::MakeHexahedralFaces(
       this->CellPoints, samePoint, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
       [&progress](double fraction) { progress(0.8 * fraction); });
+    this->Drawn = linear;
+    this->DrawnScalar = drawn;
     this->BuiltFrom = source;
     ++this->Builds;
     ++this->Version;

@@ -166,8 +166,8 @@ public:
   /// VERTEX_GRADIENTS: per-vertex gradients (GradientArrayName, else vtkVertexGradientFilter on the
   /// rendered scalar, once per change of the mesh or its scalar) interpolated at each point: smooth.
   /// CELL_GRADIENTS: each cell's own exact gradient, nothing computed ahead: faceted where cells are
-  /// coarse. The shells default to vertex gradients; the tetrahedra mapper lights with vertex
-  /// gradients always and ignores it.
+  /// coarse. The shells default to vertex gradients, the hexahedral ray caster to the cell's; the
+  /// tetrahedra mapper lights with vertex gradients always and ignores it.
   vtkSetClampMacro(GradientMode, int, VERTEX_GRADIENTS, CELL_GRADIENTS);
   vtkGetMacro(GradientMode, int);
   void SetGradientModeToVertexGradients() { this->SetGradientMode(VERTEX_GRADIENTS); }
