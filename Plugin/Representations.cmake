@@ -38,6 +38,6 @@ uv_representation_entry(
   MENU "Volume (Hexahedral Ray Cast)"
   GROUP "Hexahedral Ray Cast"
   PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance OpacityThreshold MaximumPeels
-    ExactSegmentEnds
+    ExactSegmentEnds GradientMode
   # Accurate / Fast / Fixed steps, not the tetrahedra's average scalar / partial pre-integration.
   UNSHARED IntegrationMode HexahedralIntegrationMode)

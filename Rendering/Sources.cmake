@@ -32,7 +32,7 @@ foreach (header IN ITEMS
     vtkUnstructuredVolumeHexahedralMesh vtkUnstructuredVolumeIndexBuffer vtkUnstructuredVolumeMeshContent vtkUnstructuredVolumeOpenGL
     vtkUnstructuredVolumePointData vtkUnstructuredVolumeTetrahedralMesh vtkUnstructuredVolumeTexture
     vtkUnstructuredVolumeTexture3D vtkUnstructuredVolumeSegmentLengthTable
-    vtkUnstructuredVolumeTransferFunction vtkUnstructuredVolumeTransferFunctionTexture)
+    vtkUnstructuredVolumeTransferFunction vtkUnstructuredVolumeTransferFunctionTexture vtkUnstructuredVolumeVertexGradients)
   list(APPEND uv_rendering_private_headers "${CMAKE_CURRENT_LIST_DIR}/${header}.h")
 endforeach ()
 # The float target has a source file of its own (the other OpenGL-layer classes are header-only).

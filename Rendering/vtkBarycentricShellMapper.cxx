@@ -384,13 +384,7 @@ void vtkBarycentricShellMapper::Internals::UpdateGradients(
   this->Now.Lit = this->Now.Shade || (!this->Isovalues.empty() && !this->Now.CellSurfaces); // faces light those
   this->Now.NeedGradients = this->Now.Lit && self->GradientMode == VERTEX_GRADIENTS;
   if (this->Now.NeedGradients)
-  {
-    bool ignoredArray = false;
-    this->Gradients.Update(this->Mesh, self->GradientArrayName, ignoredArray);
-    if (ignoredArray)
-      vtkWarningWithObjectMacro(self,
-        "the gradient array '" << self->GradientArrayName << "' does not have 3 components; computing gradients");
-  }
+    self->UpdateVertexGradients(this->Gradients, this->Mesh.Tetrahedra, this->Mesh.Scalar, this->Mesh.Version);
 }
 
 /// SampleDistance, or the automatic one from the volume's bounds as of the last full build (or change
@@ -754,16 +748,12 @@ bool vtkBarycentricShellMapper::Internals::DrawShells(vtkBarycentricShellMapper*
 vtkBarycentricShellMapper::vtkBarycentricShellMapper()
   : Impl(new Internals)
 {
-  this->SetGradientArrayName("Gradients");
   // Above the hexahedral mapper's 0.99, whose loss the benchmark found larger than the error of
   // fine sampling.
   this->OpacityThreshold = 0.999;
 }
 
-vtkBarycentricShellMapper::~vtkBarycentricShellMapper()
-{
-  this->SetGradientArrayName(nullptr);
-}
+vtkBarycentricShellMapper::~vtkBarycentricShellMapper() = default;
 
 void vtkBarycentricShellMapper::SetTextureImage(vtkImageData* image)
 {
@@ -833,9 +823,6 @@ void vtkBarycentricShellMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticSamplesAcross: " << this->AutomaticSamplesAcross << "\n";
   os << indent << "SlicesPerShell: " << this->SlicesPerShell << "\n";
   os << indent << "IsosurfaceLayers: " << this->IsosurfaceLayers << "\n";
-  os << indent << "GradientMode: " << (this->GradientMode == VERTEX_GRADIENTS ? "VertexGradients" : "CellGradients")
-     << "\n";
-  os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
 }
 
 bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)

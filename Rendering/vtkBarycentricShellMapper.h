@@ -26,8 +26,9 @@
  * Isosurfaces (vtkUnstructuredVolumeMapper::AddIsosurface): in SHELLS mode, passes over the
  * tetrahedra that hold an isovalue find each pixel's crossings in closed form per tetrahedron,
  * nearest first, one per pass (depth peeling, up to IsosurfaceLayers, stopping when a pass finds
- * none), Phong-lit with the vertex gradients interpolated at the hit or the tetrahedron's own
- * gradient (GradientMode); the shells composite each at its exact distance. In CELL_PROJECTION every
+ * none), Phong-lit with the vertex gradients interpolated at the hit (GradientMode's default here;
+ * computed again each frame a deforming mesh moves) or the tetrahedron's own gradient, computed on
+ * the GPU; the shells composite each at its exact distance. In CELL_PROJECTION every
  * crossing is drawn. Volume shading (vtkVolumeProperty::Shade) applies to CELL_PROJECTION only.
  *
  * Skipped work: tetrahedra the transfer function makes transparent (and holding no isovalue) are in
@@ -97,30 +98,6 @@ public:
   vtkGetMacro(IsosurfaceLayers, int);
   ///@}
 
-  enum GradientModes
-  {
-    VERTEX_GRADIENTS = 0,
-    CELL_GRADIENTS = 1
-  };
-  ///@{
-  /// What lights isosurfaces (and, in cell projection, the shaded volume). VERTEX_GRADIENTS
-  /// (default): per-vertex gradients interpolated at each point (smooth; GradientArrayName, or
-  /// vtkVertexGradientFilter once per change of the mesh, so once per frame for a deforming mesh).
-  /// CELL_GRADIENTS: each tetrahedron's own gradient, computed on the GPU with its transform (flat
-  /// facets, no preprocessing at all).
-  vtkSetClampMacro(GradientMode, int, VERTEX_GRADIENTS, CELL_GRADIENTS);
-  vtkGetMacro(GradientMode, int);
-  void SetGradientModeToVertexGradients() { this->SetGradientMode(VERTEX_GRADIENTS); }
-  void SetGradientModeToCellGradients() { this->SetGradientMode(CELL_GRADIENTS); }
-  ///@}
-
-  ///@{
-  /// A point array of scalar gradients to light isosurfaces with; when the input has no array of
-  /// this name (default "Gradients"), vtkVertexGradientFilter computes one.
-  vtkSetStringMacro(GradientArrayName);
-  vtkGetStringMacro(GradientArrayName);
-  ///@}
-
   ///@{
   /// An image (point scalars, first component) to render instead of the mesh's own scalar, sampled
   /// (trilinearly) through the input's 3-component point texture coordinates, 0 to 1 across the
@@ -166,8 +143,6 @@ protected:
   int AutomaticSamplesAcross = 128;
   int SlicesPerShell = 7;
   int IsosurfaceLayers = 4;
-  int GradientMode = VERTEX_GRADIENTS;
-  char* GradientArrayName = nullptr;
 
 private:
   vtkBarycentricShellMapper(const vtkBarycentricShellMapper&) = delete;

@@ -11,6 +11,7 @@
 #include "vtkUnstructuredVolumeTexture.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
 #include "vtkUnstructuredVolumeTransferFunctionTexture.h"
+#include "vtkUnstructuredVolumeVertexGradients.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -171,13 +172,14 @@ struct GpuResources
   vtkUnstructuredVolumeBufferTexture CellPoints, Points, Neighbours, BoundaryFaces;
   vtkUnstructuredVolumeBufferTexture CellScalars; // cell data only
   vtkUnstructuredVolumeBufferTexture VisibleCells; // skipping only
+  vtkUnstructuredVolumeBufferTexture PointGradients; // vertex-gradient lighting only
   vtkUnstructuredVolumeTransferFunctionTexture TransferFunction;
   vtkUnstructuredVolumeTexture Isosurfaces;
 
   void Release()
   {
     for (vtkUnstructuredVolumeBufferTexture* texture : { &this->CellPoints, &this->Points, &this->Neighbours,
-           &this->BoundaryFaces, &this->CellScalars, &this->VisibleCells })
+           &this->BoundaryFaces, &this->CellScalars, &this->VisibleCells, &this->PointGradients })
       texture->Release();
     this->TransferFunction.Release();
     this->Isosurfaces.Release();
@@ -374,6 +376,7 @@ struct TraversalSettings
   int IsosurfaceCount = 0;
   bool CellScalars = false;    // the mesh's scalar is per cell (uploaded to GpuResources::CellScalars)
   bool SkipInvisibleCells = false; // rays enter and leave at the visible region (GpuResources::VisibleCells)
+  bool VertexGradients = false;    // isosurfaces lit by GpuResources::PointGradients
   bool LastPeel = false;           // no peel is left to pick a ray up
 };
 
@@ -391,8 +394,9 @@ public:
     images.Framebuffer->AddColorAttachment(1, images.Exit);
     images.Framebuffer->ActivateDrawBuffers(2);
     const bool cellScalars = settings.CellScalars, skip = settings.SkipInvisibleCells;
-    vtkShaderProgram* program = this->Ready(
-      pass.Frame->Window, { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip });
+    const bool vertexGradients = settings.VertexGradients;
+    vtkShaderProgram* program = this->Ready(pass.Frame->Window,
+      { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip, vertexGradients });
     if (program)
     {
       images.Entry->Activate();
@@ -409,6 +413,8 @@ public:
         gpu.CellScalars.Bind(program, "cellScalars");
       if (skip)
         gpu.VisibleCells.Bind(program, "visibleCells");
+      if (vertexGradients)
+        gpu.PointGradients.Bind(program, "pointGradients");
       gpu.TransferFunction.Bind(program);
       gpu.Isosurfaces.Bind(program, "isosurfaces");
       SetUniforms(program, pass, settings);
@@ -424,6 +430,8 @@ public:
         gpu.CellScalars.Unbind();
       if (skip)
         gpu.VisibleCells.Unbind();
+      if (vertexGradients)
+        gpu.PointGradients.Unbind();
       gpu.TransferFunction.Unbind();
       gpu.Isosurfaces.Unbind();
     }
@@ -475,6 +483,8 @@ class vtkHexahedralRayCastMapper::Internals
 public:
   // CPU state, versioned for the GPU copies.
   uvvtk::HexahedralMesh Mesh;
+  uvvtk::VertexGradientCache Gradients;
+  bool NeedGradients = false; // this frame lights isosurfaces with vertex gradients
   uvvtk::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
   EntryFaces Entries;
@@ -523,6 +533,8 @@ vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
   : Impl(new Internals)
 {
   this->OpacityThreshold = 0.99;
+  // The exact field's own gradient needs nothing computed ahead; the plugin picks vertex gradients.
+  this->GradientMode = CELL_GRADIENTS;
 }
 
 vtkHexahedralRayCastMapper::~vtkHexahedralRayCastMapper() = default;
@@ -557,7 +569,11 @@ vtkIdType vtkHexahedralRayCastMapper::GetNumberOfTangledCells()
 }
 vtkIdType vtkHexahedralRayCastMapper::GetMeshMemoryInBytes()
 {
-  return static_cast<vtkIdType>(this->Impl->Mesh.Bytes());
+  return static_cast<vtkIdType>(this->Impl->Mesh.Bytes() + sizeof(float) * this->Impl->Gradients.Values.size());
+}
+int vtkHexahedralRayCastMapper::GetNumberOfGradientComputations()
+{
+  return this->Impl->Gradients.Computations;
 }
 
 void vtkHexahedralRayCastMapper::SetInputData(vtkDataSet* input)
@@ -652,6 +668,9 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
   // A cell scalar's isosurfaces are faces between cells (the walk draws them as it crosses); the
   // volume is unlit anyway (the shader lights only isosurfaces).
   this->WarnCellScalarLimits(scalar, false, true);
+  impl.NeedGradients = this->GradientMode == VERTEX_GRADIENTS && !scalar.OnCells && !impl.DrawnIsosurfaces.empty();
+  if (impl.NeedGradients)
+    this->UpdateVertexGradients(impl.Gradients, impl.Mesh.Drawn, impl.Mesh.DrawnScalar, impl.Mesh.Version);
   impl.Entries.Update(impl.Mesh, this->SkipInvisibleCells, impl.TransferFunction.Nodes, impl.DrawnIsosurfaces);
   const glm::dvec3& center = impl.Mesh.Points.Center;
   // Also in an invisible cell: with skipping, the walk leaves its rays to the next peel's entry faces
@@ -675,6 +694,8 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
     impl.Gpu.VisibleCells.Sync(window, impl.Entries.VisibleCellBits(), 1, impl.Entries.Version);
   if (!mesh.CellScalars.empty())
     impl.Gpu.CellScalars.Sync(window, mesh.CellScalars, 1, mesh.Version);
+  if (impl.NeedGradients)
+    impl.Gpu.PointGradients.Sync(window, impl.Gradients.Values, 4, impl.Gradients.Version);
   impl.Gpu.TransferFunction.Sync(window, impl.TransferFunction.Nodes);
   impl.Gpu.Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(impl.DrawnIsosurfaces), 2, 4,
     uv::IsosurfaceList::Texels(impl.DrawnIsosurfaces));
@@ -695,6 +716,7 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.SkipInvisibleCells = impl.Entries.Skipping();
   settings.IsosurfaceCount = static_cast<int>(impl.DrawnIsosurfaces.size());
   settings.CellScalars = !impl.Mesh.CellScalars.empty();
+  settings.VertexGradients = impl.NeedGradients;
 
   impl.Images.Framebuffer->SaveCurrentBindingsAndBuffers();
   impl.Images.Framebuffer->Bind();

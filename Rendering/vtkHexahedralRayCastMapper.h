@@ -23,7 +23,10 @@
  *
  * Isosurfaces (any number, each with a colour and opacity) are further split points: where the
  * cubic crosses an isovalue the surface is composited, Phong-lit from the vtkVolumeProperty and the
- * renderer's first light with the exact gradient of the cell's trilinear field (no gradient array).
+ * renderer's first light with the exact gradient of the cell's trilinear field (GradientMode
+ * CELL_GRADIENTS, the default here: faceted on coarse cells), or with VERTEX_GRADIENTS the vertex
+ * gradients interpolated by the cell's own trilinear weights at the hit (smooth). Isosurfaces of a
+ * cell scalar are lit by their faces either way.
  *
  * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.99); with
  * SkipInvisibleCells (default) rays enter only where the cells the transfer function makes visible
@@ -116,6 +119,9 @@ public:
   int GetNumberOfPeels();
   ///@}
 
+  /// Times vtkVertexGradientFilter ran since creation (VERTEX_GRADIENTS without a gradient array).
+  int GetNumberOfGradientComputations();
+
   ///@{
   /// Skipping (SkipInvisibleCells): the cells the walk takes (every cell when off), the faces rays
   /// enter them by (the visible region's boundary, or the mesh's), and how often the region was
@@ -125,7 +131,7 @@ public:
   int GetNumberOfVisibleRegionBuilds();
   ///@}
 
-  /// Cells, points, adjacency and boundary faces (not the screen-sized images).
+  /// Cells, points, adjacency, boundary faces and vertex gradients (not the screen-sized images).
   vtkIdType GetMeshMemoryInBytes() override;
 
   /// Any vtkDataSet (the superclass takes vtkUnstructuredGridBase only).

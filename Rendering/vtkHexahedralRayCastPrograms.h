@@ -3,7 +3,8 @@
  * @brief Every shader program vtkHexahedralRayCastMapper can use, by its options.
  *
  * Two programs per peel: the entry pass (boundary faces, no options) and the full-screen traversal,
- * whose defines follow the transfer function's node count. The mapper resamples the transfer
+ * whose defines follow the transfer function's node count, the scalar's kind, skipping and the
+ * isosurfaces' gradients. The mapper resamples the transfer
  * function to the uniform capacity, so it uses NodeTexture = false; the traversal also builds with
  * the node texture, and Testing/Cxx/TestEmbeddedShaders compiles both, so lifting that limit needs
  * no shader work. (OpenGL layer; not wrapped.)
@@ -31,11 +32,12 @@ struct vtkHexahedralRayCastPrograms
     bool NodeTexture = false; // more transfer-function nodes than fit in uniforms
     bool CellScalars = false; // one scalar per cell (cell data), constant inside it
     bool SkipInvisibleCells = false; // rays leave the visible region to the next peel
+    bool VertexGradients = false; // isosurfaces lit by interpolated vertex gradients (point scalars only)
 
     bool operator==(const TraversalOptions& other) const
     {
       return this->NodeTexture == other.NodeTexture && this->CellScalars == other.CellScalars &&
-        this->SkipInvisibleCells == other.SkipInvisibleCells;
+        this->SkipInvisibleCells == other.SkipInvisibleCells && this->VertexGradients == other.VertexGradients;
     }
   };
 
@@ -57,6 +59,8 @@ struct vtkHexahedralRayCastPrograms
       defines += "#define UV_CELL_SCALARS\n";
     if (options.SkipInvisibleCells)
       defines += "#define UV_SKIP_INVISIBLE_CELLS\n";
+    if (options.VertexGradients)
+      defines += "#define UV_VERTEX_GRADIENTS\n";
     sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
       { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
         { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
@@ -69,7 +73,9 @@ struct vtkHexahedralRayCastPrograms
     for (bool nodeTexture : { false, true })
       for (bool cellScalars : { false, true })
         for (bool skip : { false, true })
-          all.push_back({ nodeTexture, cellScalars, skip });
+          for (bool vertexGradients : { false, true })
+            if (!(cellScalars && vertexGradients)) // a cell scalar's surfaces are lit by their faces
+              all.push_back({ nodeTexture, cellScalars, skip, vertexGradients });
     return all;
   }
 };

@@ -236,14 +236,10 @@ public:
 vtkPreIntegratedTetrahedraMapper::vtkPreIntegratedTetrahedraMapper()
   : Impl(new Internals)
 {
-  this->SetGradientArrayName("Gradients");
   this->OpacityThreshold = 0.999;
 }
 
-vtkPreIntegratedTetrahedraMapper::~vtkPreIntegratedTetrahedraMapper()
-{
-  this->SetGradientArrayName(nullptr);
-}
+vtkPreIntegratedTetrahedraMapper::~vtkPreIntegratedTetrahedraMapper() = default;
 
 vtkIdType vtkPreIntegratedTetrahedraMapper::GetNumberOfDrawnTetrahedra()
 {
@@ -326,7 +322,6 @@ void vtkPreIntegratedTetrahedraMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: "
      << (this->IntegrationMode == AVERAGE_SCALAR ? "AverageScalar" : "PartialPreIntegration") << "\n";
-  os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
   os << indent << "CountShadedFragments: " << this->CountShadedFragments << "\n";
 }
 
@@ -394,12 +389,7 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   impl.Shade = property->GetShade() != 0 && !onCells;
   impl.NeedGradients = !onCells && (impl.Shade || !impl.Isovalues.empty()); // a face's normal lights a cell's
   if (impl.NeedGradients)
-  {
-    bool ignoredArray = false;
-    impl.Gradients.Update(impl.Mesh, this->GradientArrayName, ignoredArray);
-    if (ignoredArray)
-      vtkWarningMacro("the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
-  }
+    this->UpdateVertexGradients(impl.Gradients, impl.Mesh.Tetrahedra, impl.Mesh.Scalar, impl.Mesh.Version);
 
   impl.UseTable = this->ChooseSegmentTable(frame);
 

@@ -91,13 +91,6 @@ public:
   ///@}
 
   ///@{
-  /// A point array of scalar gradients to shade with. When the input has no array of this name
-  /// (default "Gradients"), vtkVertexGradientFilter computes one.
-  vtkSetStringMacro(GradientArrayName);
-  vtkGetStringMacro(GradientArrayName);
-  ///@}
-
-  ///@{
   /// What the last frames did, for tests: tetrahedra drawn in the last frame, visibility sorts,
   /// gradient computations, uploads of the mesh and of the transfer function, visible-list builds.
   vtkIdType GetNumberOfDrawnTetrahedra();
@@ -163,7 +156,6 @@ protected:
 
   bool CountShadedFragments = false;
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
-  char* GradientArrayName = nullptr;
 
 private:
   vtkPreIntegratedTetrahedraMapper(const vtkPreIntegratedTetrahedraMapper&) = delete;

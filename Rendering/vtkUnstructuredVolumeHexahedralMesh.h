@@ -2,7 +2,7 @@
 // cell (tetrahedra, pyramids and wedges as collapsed hexahedra), the recentred points with the normalised point scalar (vtkUnstructuredVolumePointData.h) or
 // one normalised value per cell for cell data, face adjacency and boundary faces (uvHexahedralMesh.h),
 // rebuilt only when the input's cells or its scalar's selection change (positions and values alone are
-// refreshed). Reads VTK data through the generic cell API,
+// refreshed); the dataset they index, for vertex gradients. Reads VTK data through the generic cell API,
 // so no input type needs a conversion.
 #ifndef vtkUnstructuredVolumeHexahedralMesh_h
 #define vtkUnstructuredVolumeHexahedralMesh_h
@@ -44,6 +44,10 @@ public:
   std::vector<float> CellScalars;        // per cell, normalised, for a cell scalar (else empty)
   RecentredPoints Points;
   uv::HexahedralFaces Faces;
+  // What CellPoints' ids index (the input, or its subdivision) and the scalar rendered on it, as of
+  // the last build: vertex gradients are computed on these.
+  vtkSmartPointer<vtkDataSet> Drawn;
+  RenderedScalar DrawnScalar;
   vtkIdType TangledCells = 0, NaNCells = 0;
   vtkIdType FlatCells = 0; // vertices, lines and polygons: not volumes, left out
   int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;
@@ -108,6 +112,8 @@ private:
     if (changed.Points)
       this->TangledCells =
         static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
+    this->Drawn = input;
+    this->DrawnScalar = scalar;
     return true;
   }
 
@@ -116,6 +122,8 @@ private:
     progress(0.0); // the adjacency can take seconds on large meshes
     ++this->Version;
     ++this->CellsVersion;
+    this->Drawn = nullptr;
+    this->DrawnScalar = RenderedScalar();
     RenderedScalar drawn = scalar;
     vtkDataSet* linear = this->Linearise(input, drawn);
     if (!linear)
@@ -139,6 +147,8 @@ private:
     this->Faces = uv::MakeHexahedralFaces(
       this->CellPoints, samePoint, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
       [&progress](double fraction) { progress(0.8 * fraction); });
+    this->Drawn = linear;
+    this->DrawnScalar = drawn;
     ++this->Builds;
     progress(1.0);
     return std::string();

@@ -4,6 +4,7 @@
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
 #include "vtkUnstructuredVolumeScalar.h"
+#include "vtkUnstructuredVolumeVertexGradients.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -30,9 +31,13 @@ struct vtkUnstructuredVolumeMapper::Shared
 vtkUnstructuredVolumeMapper::vtkUnstructuredVolumeMapper()
   : Base(new Shared)
 {
+  this->SetGradientArrayName("Gradients");
 }
 
-vtkUnstructuredVolumeMapper::~vtkUnstructuredVolumeMapper() = default;
+vtkUnstructuredVolumeMapper::~vtkUnstructuredVolumeMapper()
+{
+  this->SetGradientArrayName(nullptr);
+}
 
 void vtkUnstructuredVolumeMapper::AddIsosurface(double value, double red, double green, double blue, double opacity)
 {
@@ -235,8 +240,23 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SegmentIntegration: "
      << (this->SegmentIntegration == AUTOMATIC ? "Automatic" : this->SegmentIntegration == TABLE ? "Table" : "Exact")
      << "\n";
+  os << indent << "GradientMode: " << (this->GradientMode == VERTEX_GRADIENTS ? "VertexGradients" : "CellGradients")
+     << "\n";
+  os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
   // What the mesh updates redid (readable where the mapper is not wrapped, as in ParaView's Python).
   os << indent << "MeshBuilds: " << this->MeshUpdates.Builds << "\n";
   os << indent << "PointRefreshes: " << this->MeshUpdates.PointRefreshes << "\n";
   os << indent << "ValueRefreshes: " << this->MeshUpdates.ValueRefreshes << "\n";
+}
+
+void vtkUnstructuredVolumeMapper::UpdateVertexGradients(uvvtk::VertexGradientCache& gradients, vtkDataSet* cells,
+  const uvvtk::RenderedScalar& scalar, std::uint64_t meshVersion)
+{
+  bool ignoredArray = false;
+  gradients.Update(cells, scalar, meshVersion, this->GradientArrayName, ignoredArray);
+  if (ignoredArray)
+  {
+    vtkWarningMacro(
+      "the gradient array '" << this->GradientArrayName << "' does not have 3 components; computing gradients");
+  }
 }

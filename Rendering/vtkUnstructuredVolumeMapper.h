@@ -6,8 +6,8 @@
  * or cell array by the scalar mode and SelectScalarArray, the default taking point scalars, else
  * cell scalars; of a multi-component array its magnitude or one component, as the colour transfer
  * function's vector mode and component say, which ParaView's "Magnitude" / "X" entries set), the
- * isosurface list, the float image a test or the benchmark may keep, the projection route of the
- * tetrahedral mappers, the checks of the render call's arguments with one set of error messages,
+ * isosurface list and the gradients that light them, the float image a test or the benchmark may
+ * keep, the projection route of the tetrahedral mappers, the checks of the render call's arguments with one set of error messages,
  * the camera (vtkUnstructuredVolumeFrame), the premultiplied float target with the scene's depth
  * (vtkUnstructuredVolumeFloatTarget), the OpenGL state saved around the mapper's passes, the final
  * blend into VTK's scene, and releasing it all. A cell scalar is constant in each cell: no mapper
@@ -28,7 +28,8 @@
 #include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
-#include <memory> // for std::unique_ptr
+#include <cstdint> // for std::uint64_t
+#include <memory>  // for std::unique_ptr
 
 class vtkDataArray;
 class vtkDataSet;
@@ -44,6 +45,7 @@ class IsosurfaceList;
 namespace uvvtk
 {
 struct RenderedScalar;
+struct VertexGradientCache;
 }
 
 class VTKUNSTRUCTUREDVOLUME_EXPORT vtkUnstructuredVolumeMapper : public vtkUnstructuredGridVolumeMapper
@@ -154,6 +156,31 @@ public:
   vtkGetMacro(NumberOfCyclesBroken, vtkIdType);
   ///@}
 
+  enum GradientModes
+  {
+    VERTEX_GRADIENTS = 0,
+    CELL_GRADIENTS = 1
+  };
+  ///@{
+  /// What lights isosurfaces of a point scalar (and the shells' shaded cell projection).
+  /// VERTEX_GRADIENTS: per-vertex gradients (GradientArrayName, else vtkVertexGradientFilter on the
+  /// rendered scalar, once per change of the mesh or its scalar) interpolated at each point: smooth.
+  /// CELL_GRADIENTS: each cell's own exact gradient, nothing computed ahead: faceted where cells are
+  /// coarse. The shells default to vertex gradients, the hexahedral ray caster to the cell's; the
+  /// tetrahedra mapper lights with vertex gradients always and ignores it.
+  vtkSetClampMacro(GradientMode, int, VERTEX_GRADIENTS, CELL_GRADIENTS);
+  vtkGetMacro(GradientMode, int);
+  void SetGradientModeToVertexGradients() { this->SetGradientMode(VERTEX_GRADIENTS); }
+  void SetGradientModeToCellGradients() { this->SetGradientMode(CELL_GRADIENTS); }
+  ///@}
+
+  ///@{
+  /// A 3-component point array of scalar gradients that vertex gradients are read from; when the
+  /// input has no array of this name (default "Gradients"), vtkVertexGradientFilter computes them.
+  vtkSetStringMacro(GradientArrayName);
+  vtkGetStringMacro(GradientArrayName);
+  ///@}
+
   ///@{
   /// Early ray termination: a pixel's ray stops once its accumulated opacity reaches this (1: never).
   /// The hexahedral caster stops each ray (default 0.99), the shells mask pixels between shells
@@ -206,6 +233,11 @@ protected:
   /// The isosurfaces, in value order.
   const uv::IsosurfaceList& GetIsosurfaces() const;
 
+  /// Brings `gradients` to the mesh of version `meshVersion`, built from `cells` and its rendered
+  /// `scalar`: GradientArrayName's array, else computed. Warns when that array has not 3 components.
+  void UpdateVertexGradients(uvvtk::VertexGradientCache& gradients, vtkDataSet* cells,
+    const uvvtk::RenderedScalar& scalar, std::uint64_t meshVersion);
+
   bool KeepFloatImage = false;
   int ProjectionRoute = VERTEX_PULLING;
   bool SkipInvisibleCells = true;
@@ -213,6 +245,8 @@ protected:
   double TransferFunctionTolerance = 1e-3;
   int SegmentIntegration = AUTOMATIC;
   int VisibilityOrder = FACE_ORDER;
+  int GradientMode = VERTEX_GRADIENTS;
+  char* GradientArrayName = nullptr;
   vtkIdType NumberOfCyclesBroken = 0; ///< set by the mappers that order tetrahedra
   struct
   {

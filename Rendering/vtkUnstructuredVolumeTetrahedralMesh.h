@@ -1,7 +1,8 @@
 // The tetrahedra of a mapper's input as the tetrahedral mappers upload them (vtkPreIntegratedTetrahedra-
 // Mapper, vtkBarycentricShellMapper): other linear cells split, a normalised scalar, recentred float
 // positions, per-tetrahedron scalar ranges and centroids; the cells the transfer function makes
-// invisible; vertex gradients. Reads VTK data; the mappers' GPU code is elsewhere.
+// invisible (vertex gradients: vtkUnstructuredVolumeVertexGradients.h). Reads VTK data; the mappers'
+// GPU code is elsewhere.
 #ifndef vtkUnstructuredVolumeTetrahedralMesh_h
 #define vtkUnstructuredVolumeTetrahedralMesh_h
 
@@ -12,13 +13,13 @@
 #include "vtkUnstructuredVolumeMeshContent.h"
 #include "vtkUnstructuredVolumePointData.h"
 #include "vtkUnstructuredVolumeScalar.h"
+#include "vtkUnstructuredVolumeVertexGradients.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
 #include "vtkHexahedraToTetrahedra.h"
 #include "vtkIdTypeArray.h"
 #include "vtkPointData.h"
@@ -27,7 +28,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkVertexGradientFilter.h"
 
 #include <glm/glm.hpp>
 
@@ -404,85 +404,6 @@ struct MeshWarnings
     }
     return messages;
   }
-};
-
-/// Vertex gradients of the mesh's rendered scalar (component 0), 4 floats per point (w unused):
-/// `given` when it is a 3-component point array, otherwise computed by vtkVertexGradientFilter.
-inline std::vector<float> VertexGradients(const TetrahedralMesh& mesh, vtkDataArray* given)
-{
-  vtkSmartPointer<vtkDataArray> gradients = given;
-  if (!given)
-  {
-    vtkNew<vtkUnstructuredGrid> scalarOnly;
-    scalarOnly->CopyStructure(mesh.Tetrahedra);
-    vtkSmartPointer<vtkDataArray> named = vtk::TakeSmartPointer(mesh.Scalars->NewInstance());
-    if (mesh.Scalars->GetNumberOfComponents() == 1)
-    {
-      named->ShallowCopy(mesh.Scalars);
-    }
-    else // the rendered magnitude or component
-    {
-      named = vtkSmartPointer<vtkDoubleArray>::New();
-      named->SetNumberOfTuples(mesh.Scalars->GetNumberOfTuples());
-      for (vtkIdType p = 0; p < named->GetNumberOfTuples(); ++p)
-        named->SetComponent(p, 0, mesh.Scalar(p));
-    }
-    named->SetName("uvScalar");
-    scalarOnly->GetPointData()->AddArray(named);
-    vtkNew<vtkVertexGradientFilter> filter;
-    filter->SetInputData(scalarOnly);
-    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "uvScalar");
-    filter->SetResultArrayName("uvGradient");
-    filter->Update();
-    gradients = vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0))->GetPointData()->GetArray("uvGradient");
-  }
-  const vtkIdType pointCount = mesh.Tetrahedra->GetNumberOfPoints();
-  std::vector<float> result(4 * pointCount, 0.0f);
-  if (gradients)
-  {
-    vtkSMPTools::For(0, pointCount, [&](vtkIdType begin, vtkIdType end) {
-      double g[3];
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        gradients->GetTuple(p, g);
-        for (int d = 0; d < 3; ++d)
-          result[4 * p + d] = std::isfinite(g[d]) ? static_cast<float>(g[d]) : 0.0f;
-      }
-    });
-  }
-  return result;
-}
-
-/// Vertex gradients for lighting (4 floats per point): the point array `arrayName` of the mesh when it
-/// has 3 components, else computed (vtkVertexGradientFilter), each only once per mesh change.
-struct VertexGradientCache
-{
-  std::vector<float> Values;
-  int Computations = 0; ///< times the filter ran
-
-  /// True when the values changed (upload them again). `ignoredArray` is set when an array of that
-  /// name exists but has not 3 components (the caller warns).
-  bool Update(const TetrahedralMesh& mesh, const char* arrayName, bool& ignoredArray)
-  {
-    vtkDataArray* given = arrayName ? mesh.Tetrahedra->GetPointData()->GetArray(arrayName) : nullptr;
-    ignoredArray = given && given->GetNumberOfComponents() != 3;
-    if (ignoredArray)
-      given = nullptr;
-    if (mesh.Version == this->MeshVersion && (given != nullptr) == this->Given)
-      return false;
-    this->Values = VertexGradients(mesh, given);
-    this->Computations += given ? 0 : 1;
-    this->MeshVersion = mesh.Version;
-    this->Given = given != nullptr;
-    ++this->Version;
-    return true;
-  }
-
-  std::uint64_t Version = 0; ///< bumped whenever Values change
-
-private:
-  std::uint64_t MeshVersion = 0;
-  bool Given = false;
 };
 
 /// Tetrahedra in back-to-front order of their centroids' distance from the eye (along the view under

@@ -13,8 +13,10 @@
 // every cell (uvBilinearFaceLib.glsl): the exit found in one cell is the entry of the next.
 //
 // Isosurfaces are further cuts: where the cubic crosses an isovalue the surface's colour is
-// composited, Phong-lit with the exact gradient of the cell's trilinear field there. For a cell
-// scalar they are the faces between cells on either side of the value, lit with the face's normal.
+// composited, Phong-lit with the exact gradient of the cell's trilinear field there, or with
+// UV_VERTEX_GRADIENTS the vertex gradients interpolated by the cell's trilinear weights there
+// (smooth across cells). For a cell scalar they are the faces between cells on either side of the
+// value, lit with the face's normal.
 uniform sampler2D entry;        // (ray parameter, boundary face) of this peel, face < 0: none
 uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
 uniform sampler2D opaqueDepth;
@@ -22,6 +24,9 @@ uniform isamplerBuffer boundaryFaces;
 uniform isamplerBuffer cellNeighbours; // per cell 6 values (2 texels): neighbour * 8 + its face, or -1
 #ifdef UV_CELL_SCALARS
 uniform samplerBuffer cellScalars;      // cell data: one normalised value per cell, constant in it
+#endif
+#ifdef UV_VERTEX_GRADIENTS
+uniform samplerBuffer pointGradients;   // per point: the scalar's gradient in model space (xyz)
 #endif
 uniform mat4 clipToModel;       // for the opaque geometry's depth
 uniform vec3 nearPlane[3];      // the rays (EyeRay)
@@ -248,10 +253,43 @@ void CompositeLitSurface(int k, vec3 x, vec3 normal)
   transmittance *= 1.0 - surface.a;
 }
 
+#ifdef UV_VERTEX_GRADIENTS
+/// The loaded cell's vertex gradients interpolated at model point x (trilinear coordinates near
+/// `xi`) with the cell's own trilinear weights. A tetrahedron's collapsed corners make those weights
+/// its barycentric coordinates, found directly; other cells' xi is refined by the inverse map, as
+/// the segment's coordinates are exact at its ends only.
+vec3 InterpolatedVertexGradient(vec3 x, vec3 xi)
+{
+  float weights[8];
+  if (cellShape == TETRAHEDRON)
+  {
+    mat3 edges = mat3(points[1] - points[0], points[2] - points[0], points[4] - points[0]);
+    vec3 b = abs(determinant(edges)) < 1e-30 ? vec3(0.0) : inverse(edges) * (x - points[0]);
+    weights = float[8](1.0 - b.x - b.y - b.z, b.x, b.y, 0.0, b.z, 0.0, 0.0, 0.0);
+  }
+  else
+  {
+    vec3 at = InverseTrilinear(x, xi);
+    vec3 m = vec3(1.0) - at;
+    weights = float[8](m.x * m.y * m.z, at.x * m.y * m.z, at.x * at.y * m.z, m.x * at.y * m.z, m.x * m.y * at.z,
+      at.x * m.y * at.z, at.x * at.y * at.z, m.x * at.y * at.z);
+  }
+  vec3 gradient = vec3(0.0);
+  for (int k = 0; k < 8; ++k)
+    gradient += weights[k] * texelFetch(pointGradients, int(cellIds[k])).xyz;
+  return gradient;
+}
+#endif
+
 /// Composites isosurface `k` where the segment's parameter is u.
 void CompositeSurface(int k, float u)
 {
-  CompositeLitSurface(k, mix(segmentStartPoint, segmentEndPoint, u), FieldGradient(mix(segmentXi0, segmentXi1, u)));
+  vec3 x = mix(segmentStartPoint, segmentEndPoint, u), xi = mix(segmentXi0, segmentXi1, u);
+#ifdef UV_VERTEX_GRADIENTS
+  CompositeLitSurface(k, x, InterpolatedVertexGradient(x, xi));
+#else
+  CompositeLitSurface(k, x, FieldGradient(xi));
+#endif
 }
 
 float IsoValue(int k)

@@ -41,9 +41,3 @@ void vtkBarycentricShellRepresentation::SetIsosurfaceLayers(int layers)
   this->ShellMapper->SetIsosurfaceLayers(layers);
   this->MarkModified();
 }
-
-void vtkBarycentricShellRepresentation::SetGradientMode(int mode)
-{
-  this->ShellMapper->SetGradientMode(mode);
-  this->MarkModified();
-}

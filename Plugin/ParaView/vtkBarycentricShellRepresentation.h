@@ -30,7 +30,6 @@ public:
   void SetAutomaticSamplesAcross(int samples);
   void SetSlicesPerShell(int slices);
   void SetIsosurfaceLayers(int layers);
-  void SetGradientMode(int mode);
   ///@}
 
 protected:

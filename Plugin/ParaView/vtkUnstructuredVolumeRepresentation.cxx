@@ -95,6 +95,12 @@ void vtkUnstructuredVolumeRepresentation::SetVisibilityOrder(int order)
   this->MarkModified();
 }
 
+void vtkUnstructuredVolumeRepresentation::SetGradientMode(int mode)
+{
+  this->PinnedMapper->SetGradientMode(mode);
+  this->MarkModified();
+}
+
 void vtkUnstructuredVolumeRepresentation::SetOpacityThreshold(double threshold)
 {
   this->PinnedMapper->SetOpacityThreshold(threshold);

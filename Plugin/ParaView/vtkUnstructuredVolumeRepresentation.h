@@ -61,6 +61,9 @@ public:
   /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetVisibilityOrder).
   void SetVisibilityOrder(int order);
 
+  /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetGradientMode).
+  void SetGradientMode(int mode);
+
 protected:
   vtkUnstructuredVolumeRepresentation();
   ~vtkUnstructuredVolumeRepresentation() override;

@@ -105,11 +105,12 @@ TEST_F(EmbeddedShaders, EveryHexahedralRayCastProgramLinks)
 {
   this->ExpectLinks(vtkHexahedralRayCastPrograms::Entry(), "hexahedral entry program");
   const auto all = vtkHexahedralRayCastPrograms::AllTraversalOptions();
-  EXPECT_EQ(all.size(), 8u);
+  EXPECT_EQ(all.size(), 12u); // vertex gradients only with point scalars
   for (const auto& options : all)
     this->ExpectLinks(vtkHexahedralRayCastPrograms::Traversal(options),
       std::string("hexahedral traversal program") + (options.NodeTexture ? ", node texture" : "") +
-        (options.CellScalars ? ", cell scalars" : "") + (options.SkipInvisibleCells ? ", skipping" : ""));
+        (options.CellScalars ? ", cell scalars" : "") + (options.SkipInvisibleCells ? ", skipping" : "") +
+        (options.VertexGradients ? ", vertex gradients" : ""));
 }
 
 TEST_F(EmbeddedShaders, CompositePassCopiesAFloatImage)

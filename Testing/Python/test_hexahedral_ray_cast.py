@@ -299,6 +299,194 @@ class IsosurfaceTests(SceneTestCase):
         self.assertGreater(images[0].GetPointData().GetScalars().GetRange(3)[1], 0.79)
 
 
+SPHERE_RADIUS = 0.75
+
+
+def sphere_mesh(resolution, analytic_gradients=False):
+    """[-1, 1]^3 in resolution^3 hexahedra with the scalar |x|, whose isosurfaces are spheres about the
+    origin; with `analytic_gradients` also its exact gradient x / |x| as the point array "Gradients"."""
+    mesh = analytic_hexahedra(resolution)
+    radius, gradients = vtkDoubleArray(), vtkDoubleArray()
+    radius.SetName("radius")
+    gradients.SetName("Gradients")
+    gradients.SetNumberOfComponents(3)
+    for i in range(mesh.GetNumberOfPoints()):
+        x = mesh.GetPoint(i)
+        length = math.sqrt(sum(c * c for c in x))
+        radius.InsertNextValue(length)
+        gradients.InsertNextTuple3(*(c / length if length > 0 else 0.0 for c in x))
+    mesh.GetPointData().SetScalars(radius)
+    if analytic_gradients:
+        mesh.GetPointData().AddArray(gradients)
+    return mesh
+
+
+def sphere_camera():
+    """An oblique parallel view of the origin, the sphere filling most of it (the renderer's own
+    headlight then shines along the view)."""
+    camera = vtkCamera()
+    camera.SetFocalPoint(0, 0, 0)
+    camera.SetPosition(1.5, -5.0, 2.2)
+    camera.SetViewUp(0, 0, 1)
+    camera.OrthogonalizeViewUp()
+    camera.SetParallelProjection(True)
+    camera.SetParallelScale(0.85)
+    camera.SetClippingRange(0.1, 20)
+    return camera
+
+
+def diffuse_white_property():
+    """A transparent volume whose isosurfaces reflect diffusely alone: a white surface's colour is then
+    cos(angle between its normal and a headlight), nothing else."""
+    prop = transparent_property((1.0, 1.0, 1.0))
+    prop.SetAmbient(0.0)
+    prop.SetDiffuse(1.0)
+    prop.SetSpecular(0.0)
+    return prop
+
+
+def trilinear_radius(x, resolution):
+    """The trilinear interpolant of |x| on the lattice of sphere_mesh(resolution) at x: the field the
+    mapper renders, so its isosurface is the surface the rays hit."""
+    h = 2.0 / resolution
+    cell, local = [], []
+    for c in x:
+        i = min(max(int((c + 1.0) / h), 0), resolution - 1)
+        cell.append(i)
+        local.append((c + 1.0) / h - i)
+    value = 0.0
+    for a in (0, 1):
+        for b in (0, 1):
+            for d in (0, 1):
+                corner = (-1.0 + h * (cell[0] + a), -1.0 + h * (cell[1] + b), -1.0 + h * (cell[2] + d))
+                weight = ((local[0] if a else 1 - local[0]) * (local[1] if b else 1 - local[1]) *
+                          (local[2] if d else 1 - local[2]))
+                value += weight * math.sqrt(sum(c * c for c in corner))
+    return value
+
+
+def first_crossing(origin, direction, near, far, resolution):
+    """Where the ray origin + t direction crosses the isosurface of trilinear_radius at SPHERE_RADIUS
+    between t = near (outside it) and far (inside), by bisection."""
+    def along(t):
+        return [p + t * d for p, d in zip(origin, direction)]
+    assert trilinear_radius(along(near), resolution) > SPHERE_RADIUS > trilinear_radius(along(far), resolution)
+    for _ in range(30):
+        middle = 0.5 * (near + far)
+        if trilinear_radius(along(middle), resolution) > SPHERE_RADIUS:
+            near = middle
+        else:
+            far = middle
+    return along(0.5 * (near + far))
+
+
+def sphere_hits(camera, size, resolution, inside=0.9):
+    """{pixel index: Lambert term the analytic normal gives} for the pixels of a size x size image whose
+    ray meets the sphere within `inside` of its silhouette's radius (away from grazing rays): each
+    ray's first crossing of the rendered (trilinear) isosurface is found (first_crossing), and the
+    analytic normal there, x / |x|, is dotted with the headlight's direction, the view's. Also the
+    pixels well outside the silhouette, which must stay empty."""
+    view = camera.GetDirectionOfProjection()
+    up = camera.GetViewUp()
+    right = (view[1] * up[2] - view[2] * up[1], view[2] * up[0] - view[0] * up[2], view[0] * up[1] - view[1] * up[0])
+    scale = camera.GetParallelScale()
+    hits, outside = {}, []
+    for j in range(size):
+        for i in range(size):
+            u, v = ((i + 0.5) / size * 2 - 1) * scale, ((j + 0.5) / size * 2 - 1) * scale
+            plane = [u * r + v * w for r, w in zip(right, up)]  # the ray's point in the focal plane
+            offset = math.sqrt(u * u + v * v) / SPHERE_RADIUS
+            if offset > 1.1:
+                outside.append(i + size * j)
+            if offset >= inside:
+                continue
+            depth = math.sqrt(SPHERE_RADIUS ** 2 - (u * u + v * v))  # the exact sphere's, a bracket's centre
+            x = first_crossing(plane, view, -depth - 0.15, -depth + 0.15, resolution)
+            hits[i + size * j] = abs(sum(c * d for c, d in zip(x, view))) / math.sqrt(sum(c * c for c in x))
+    return hits, outside
+
+
+class SmoothIsosurfaceTests(SceneTestCase):
+    """GradientMode on a sphere (|x| on coarse hexahedra, an opaque isosurface, one headlight): the
+    shading against the analytic normal at each ray's hit."""
+
+    RESOLUTION, SIZE = 6, 80  # cells almost half the sphere's radius across, about 16 pixels each
+
+    def shading_error(self, mesh, hits, outside, mode):
+        """(RMS, maximum) of |rendered - analytic Lambert| over `hits`, and the scene."""
+        scene = HexScene(mesh, diffuse_white_property(), sphere_camera(), self.SIZE, GradientMode=mode)
+        scene.mapper.AddIsosurface(SPHERE_RADIUS, 1.0, 1.0, 1.0, 1.0)
+        rgba = scene.render().GetPointData().GetScalars()
+        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+        self.assertTrue(all(rgba.GetTuple4(p)[3] > 0.999 for p in hits), "a ray inside the sphere missed it")
+        self.assertTrue(all(rgba.GetTuple4(p)[3] == 0.0 for p in outside), "a ray outside the sphere met it")
+        errors = [rgba.GetTuple4(p)[0] - lambert for p, lambert in hits.items()]
+        return math.sqrt(sum(e * e for e in errors) / len(errors)), max(abs(e) for e in errors), scene
+
+    def test_vertex_gradients_light_a_sphere_smoothly(self):
+        mesh = sphere_mesh(self.RESOLUTION)
+        hits, outside = sphere_hits(sphere_camera(), self.SIZE, self.RESOLUTION)
+        self.assertGreater(len(hits), 2500)
+        cell_rms, cell_max, cell = self.shading_error(
+            mesh, hits, outside, vtkHexahedralRayCastMapper.CELL_GRADIENTS)
+        vertex_rms, vertex_max, vertex = self.shading_error(
+            mesh, hits, outside, vtkHexahedralRayCastMapper.VERTEX_GRADIENTS)
+        given_rms, given_max, given = self.shading_error(
+            sphere_mesh(self.RESOLUTION, analytic_gradients=True), hits, outside,
+            vtkHexahedralRayCastMapper.VERTEX_GRADIENTS)
+        print(f"\n  {len(hits)} pixels; |shade - cos(analytic normal, light)| RMS / max: cell gradients "
+              f"{cell_rms:.3g} / {cell_max:.3g}, vertex gradients (computed) {vertex_rms:.3g} / {vertex_max:.3g}, "
+              f"(analytic array) {given_rms:.3g} / {given_max:.3g}", end="")
+        # The coarse cells really facet the exact gradient; interpolated vertex gradients, computed or
+        # given, follow the analytic normal far more closely.
+        self.assertGreater(cell_rms, 0.04)
+        self.assertLess(vertex_rms, 0.01)
+        self.assertLess(vertex_rms, 0.25 * cell_rms)
+        self.assertLess(vertex_max, 0.25 * cell_max)
+        self.assertLess(given_rms, 0.01)
+        # Computed once per mesh and scalar, not per frame or isovalue; never for a given array or cell
+        # gradients.
+        vertex.render()
+        vertex.mapper.RemoveAllIsosurfaces()
+        vertex.mapper.AddIsosurface(0.6, 1.0, 1.0, 1.0, 1.0)
+        vertex.render()
+        self.assertEqual(vertex.mapper.GetNumberOfGradientComputations(), 1)
+        mesh.GetPointData().GetScalars().Modified()
+        vertex.render()
+        self.assertEqual(vertex.mapper.GetNumberOfGradientComputations(), 2)
+        self.assertEqual(given.mapper.GetNumberOfGradientComputations(), 0)
+        self.assertEqual(cell.mapper.GetNumberOfGradientComputations(), 0)
+
+    def test_vertex_gradients_of_a_linear_field_light_every_cell_kind_exactly(self):
+        # vtkVertexGradientFilter is exact for a linear field and interpolating one gradient gives it
+        # back: the plane isosurface takes the analytic Phong colour through jittered hexahedra, wedges,
+        # pyramids and tetrahedra (whose repeated corners repeat their gradient).
+        mesh = hex_dominant(6)
+        camera = camera_for(mesh, 30, 25, parallel=True)
+        color = (0.2, 0.6, 1.0)
+        prop, expected = plane_scene_setup(mesh, camera, color)
+        scene = HexScene(mesh, prop, camera, GradientMode=vtkHexahedralRayCastMapper.VERTEX_GRADIENTS)
+        scene.mapper.AddIsosurface(0.1, *color, 1.0)
+        covered, worst = covered_colour_error(scene.render(), expected)
+        print(f"\n  {covered} covered pixels, worst colour error {worst:.3g}", end="")
+        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+        self.assertGreater(covered, 2000)
+        self.assertLess(worst, 2e-3)
+        # A cell scalar's surfaces stay lit by their faces: nothing to compute.
+        to_cells = vtkPointDataToCellData()
+        to_cells.SetInputData(mesh)
+        to_cells.Update()
+        on_cells = HexScene(to_cells.GetOutput(), prop, camera, 32,
+                            GradientMode=vtkHexahedralRayCastMapper.VERTEX_GRADIENTS)
+        on_cells.mapper.AddIsosurface(0.1, *color, 1.0)
+        on_cells.render()
+        self.assertEqual(on_cells.events.errors, 0)
+        self.assertEqual(on_cells.mapper.GetNumberOfGradientComputations(), 0)
+
+    def test_the_default_is_the_cell_gradient(self):
+        self.assertEqual(vtkHexahedralRayCastMapper().GetGradientMode(), vtkHexahedralRayCastMapper.CELL_GRADIENTS)
+
+
 def sparse_property(low, high, unit, visible_from=0.55):
     """Nothing below `visible_from` of the range, a ramp above it: most cells are invisible."""
     start = low + visible_from * (high - low)
