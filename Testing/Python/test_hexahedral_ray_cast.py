@@ -451,7 +451,12 @@ class SmoothIsosurfaceTests(SceneTestCase):
         vertex.mapper.AddIsosurface(0.6, 1.0, 1.0, 1.0, 1.0)
         vertex.render()
         self.assertEqual(vertex.mapper.GetNumberOfGradientComputations(), 1)
-        mesh.GetPointData().GetScalars().Modified()
+        scalars = mesh.GetPointData().GetScalars()
+        scalars.Modified()  # touched, not changed: the mapper compares content
+        vertex.render()
+        self.assertEqual(vertex.mapper.GetNumberOfGradientComputations(), 1)
+        scalars.SetTuple1(0, scalars.GetTuple1(0) + 0.01)
+        scalars.Modified()
         vertex.render()
         self.assertEqual(vertex.mapper.GetNumberOfGradientComputations(), 2)
         self.assertEqual(given.mapper.GetNumberOfGradientComputations(), 0)
