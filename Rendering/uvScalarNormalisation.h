@@ -43,6 +43,17 @@ struct ScalarNormalisation
   }
 
   double operator()(double s) const { return (s - this->Offset) * this->Scale; }
+
+  /// `previous` where it maps this normalisation's range into [0, 1] and spans at most twice it (a
+  /// time step whose values move inside the last step's range), else this one: the normalised
+  /// transfer function, and the tables built from it, then stay as they are.
+  ScalarNormalisation KeptFrom(const ScalarNormalisation& previous) const
+  {
+    const double low = this->Offset, high = this->Offset + 1.0 / this->Scale;
+    const double previousLow = previous.Offset, previousHigh = previous.Offset + 1.0 / previous.Scale;
+    const bool inside = previousLow <= low && high <= previousHigh;
+    return inside && 2.0 * (high - low) >= previousHigh - previousLow ? previous : *this;
+  }
 };
 
 /// True when every one of the `count` points `ids` has a finite normalised scalar in `pointData`

@@ -97,7 +97,8 @@ private:
   {
     std::vector<std::uint32_t> cells = std::move(this->CellPoints);
     std::vector<float> cellScalars = std::move(this->CellScalars);
-    this->Points.Build(input, scalar);
+    const uv::ScalarNormalisation normalisation = this->Points.Normalisation;
+    this->Points.Build(input, scalar, &normalisation);
     if (changed.Values)
     {
       this->ReadCells(input);

@@ -28,13 +28,16 @@ struct RecentredPoints
   uv::ScalarNormalisation Normalisation;
 
   /// From `data`'s points (through vtkDataSet::GetPoint, so image data and rectilinear grids need no
-  /// vtkPoints) and the rendered scalar, on its points or its cells.
-  void Build(vtkDataSet* data, const RenderedScalar& scalar)
+  /// vtkPoints) and the rendered scalar, on its points or its cells. With `kept` (a time step of the
+  /// same mesh), that normalisation where it still fits the values (ScalarNormalisation::KeptFrom).
+  void Build(vtkDataSet* data, const RenderedScalar& scalar, const uv::ScalarNormalisation* kept = nullptr)
   {
     const vtkIdType pointCount = data->GetNumberOfPoints();
     const vtkIdType valueCount = scalar.OnCells ? data->GetNumberOfCells() : pointCount;
     this->Normalisation = uv::ScalarNormalisation::OfFiniteValues(static_cast<std::size_t>(valueCount),
       [&scalar](std::size_t id) { return scalar(static_cast<vtkIdType>(id)); });
+    if (kept)
+      this->Normalisation = this->Normalisation.KeptFrom(*kept);
     const uv::ScalarNormalisation normalisation = this->Normalisation;
     this->CellValues.assign(scalar.OnCells ? valueCount : 0, 0.0f);
     if (scalar.OnCells)

@@ -5,7 +5,8 @@
  *
  * uvTetrahedronSegmentTable.h's table of the current nodes for lengths up to the longest edge of the
  * mesh as drawn (its longest model-space edge, found once per mesh change, times the most the
- * model-to-eye matrix stretches), built in parallel only when either changes, with what reading it
+ * model-to-eye matrix stretches), built in parallel only when the nodes change or that length leaves
+ * [half the table's, the table's], with what reading it
  * trilinearly costs in accuracy measured against the exact segments: the AUTOMATIC integration reads
  * it where that error is within the transfer-function tolerance. Its GPU copy (a 3D texture) is
  * uploaded when the build's version changes; Bind sets uvSegmentLengthTableLib.glsl's uniforms.
@@ -45,7 +46,10 @@ public:
     const double longest = this->LongestEdge * uv::LargestStretch(glm::dmat3(modelToEye));
     if (!(longest > 0.0))
       return false;
-    if (this->Version > 0 && longest == this->Table.MaxLength && nodes == this->Nodes)
+    // A table of somewhat longer segments than the mesh now holds still covers it (moving points
+    // of a time series shorten and lengthen edges): kept down to half its length.
+    const bool covers = longest <= this->Table.MaxLength && 2.0 * longest >= this->Table.MaxLength;
+    if (this->Version > 0 && covers && nodes == this->Nodes)
       return true;
     const uv::TransferFunction function(nodes);
     this->Table = uv::MakeTetrahedronSegmentTable(function, longest, ScalarSize, LengthSize, uv::SharedPsiTable(),

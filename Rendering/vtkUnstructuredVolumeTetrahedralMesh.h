@@ -208,7 +208,7 @@ private:
   bool RefreshValues()
   {
     RecentredPoints recentred;
-    recentred.Build(this->Tetrahedra, this->Scalar);
+    recentred.Build(this->Tetrahedra, this->Scalar, &this->Normalisation);
     this->PointData = std::move(recentred.Values);
     this->Center = recentred.Center;
     this->Normalisation = recentred.Normalisation;
@@ -232,7 +232,7 @@ private:
     }
     // Normalised scalar and recentred positions, in double then float.
     RecentredPoints recentred;
-    recentred.Build(this->Tetrahedra, this->Scalar);
+    recentred.Build(this->Tetrahedra, this->Scalar, &this->Normalisation);
     this->PointData = std::move(recentred.Values);
     this->Center = recentred.Center;
     this->Normalisation = recentred.Normalisation;

@@ -135,6 +135,21 @@ TEST(HexahedronMesh, ScalarNormalisationIgnoresNaN)
   EXPECT_FALSE(uv::ScalarsFinite(points, both, 2));
 }
 
+TEST(HexahedronMesh, ATimeStepKeepsTheNormalisationItsValuesFit)
+{
+  const auto of = [](double low, double high) {
+    const std::vector<double> values = { low, high };
+    return uv::ScalarNormalisation::OfFiniteValues(2, [&](std::size_t p) { return values[p]; });
+  };
+  const uv::ScalarNormalisation previous = of(-2.0, 6.0);
+  const auto kept = of(-1.0, 4.0).KeptFrom(previous); // inside, over half the span
+  EXPECT_EQ(kept.Offset, previous.Offset);
+  EXPECT_EQ(kept.Scale, previous.Scale);
+  EXPECT_DOUBLE_EQ(of(1.0, 2.0).KeptFrom(previous).Scale, 1.0); // a quarter of the span: its own
+  EXPECT_EQ(of(-3.0, 4.0).KeptFrom(previous).Offset, -3.0);      // beyond the low end
+  EXPECT_DOUBLE_EQ(of(0.0, 7.0).KeptFrom(previous).Scale, 1.0 / 7.0); // beyond the high end
+}
+
 TEST(HexahedronMesh, TetrahedronFaceNeighboursAcrossEachCorner)
 {
   // Two tetrahedra sharing face (1, 2, 3): across corner 0 of the first lies the second, across
