@@ -44,15 +44,22 @@ struct ScalarNormalisation
 
   double operator()(double s) const { return (s - this->Offset) * this->Scale; }
 
-  /// `previous` where it maps this normalisation's range into [0, 1] and spans at most twice it (a
-  /// time step whose values move inside the last step's range), else this one: the normalised
-  /// transfer function, and the tables built from it, then stay as they are.
-  ScalarNormalisation KeptFrom(const ScalarNormalisation& previous) const
+  /// The normalisation for a time step of the same mesh whose values this one normalises, `previous`
+  /// the last step's: `previous` where it maps these values into [0, 1] and spans at most twice them
+  /// (values moving inside the last range), else this one widened by an eighth of its span at each
+  /// end, so that values moving a little beyond it next step fit too. While it stays, the normalised
+  /// transfer function, and the tables built from it, stay as they are.
+  ScalarNormalisation ForTimeStep(const ScalarNormalisation& previous) const
   {
     const double low = this->Offset, high = this->Offset + 1.0 / this->Scale;
     const double previousLow = previous.Offset, previousHigh = previous.Offset + 1.0 / previous.Scale;
-    const bool inside = previousLow <= low && high <= previousHigh;
-    return inside && 2.0 * (high - low) >= previousHigh - previousLow ? previous : *this;
+    if (previousLow <= low && high <= previousHigh && 2.0 * (high - low) >= previousHigh - previousLow)
+      return previous;
+    const double margin = (high - low) / 8.0;
+    ScalarNormalisation widened;
+    widened.Offset = low - margin;
+    widened.Scale = 1.0 / (high - low + 2.0 * margin);
+    return widened;
   }
 };
 

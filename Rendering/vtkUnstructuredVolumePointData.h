@@ -28,16 +28,17 @@ struct RecentredPoints
   uv::ScalarNormalisation Normalisation;
 
   /// From `data`'s points (through vtkDataSet::GetPoint, so image data and rectilinear grids need no
-  /// vtkPoints) and the rendered scalar, on its points or its cells. With `kept` (a time step of the
-  /// same mesh), that normalisation where it still fits the values (ScalarNormalisation::KeptFrom).
-  void Build(vtkDataSet* data, const RenderedScalar& scalar, const uv::ScalarNormalisation* kept = nullptr)
+  /// vtkPoints) and the rendered scalar, on its points or its cells. With `previous` (a time step of
+  /// the same mesh: the last step's), a normalisation that changes only when the values leave it
+  /// (ScalarNormalisation::ForTimeStep).
+  void Build(vtkDataSet* data, const RenderedScalar& scalar, const uv::ScalarNormalisation* previous = nullptr)
   {
     const vtkIdType pointCount = data->GetNumberOfPoints();
     const vtkIdType valueCount = scalar.OnCells ? data->GetNumberOfCells() : pointCount;
     this->Normalisation = uv::ScalarNormalisation::OfFiniteValues(static_cast<std::size_t>(valueCount),
       [&scalar](std::size_t id) { return scalar(static_cast<vtkIdType>(id)); });
-    if (kept)
-      this->Normalisation = this->Normalisation.KeptFrom(*kept);
+    if (previous)
+      this->Normalisation = this->Normalisation.ForTimeStep(*previous);
     const uv::ScalarNormalisation normalisation = this->Normalisation;
     this->CellValues.assign(scalar.OnCells ? valueCount : 0, 0.0f);
     if (scalar.OnCells)

@@ -142,12 +142,20 @@ TEST(HexahedronMesh, ATimeStepKeepsTheNormalisationItsValuesFit)
     return uv::ScalarNormalisation::OfFiniteValues(2, [&](std::size_t p) { return values[p]; });
   };
   const uv::ScalarNormalisation previous = of(-2.0, 6.0);
-  const auto kept = of(-1.0, 4.0).KeptFrom(previous); // inside, over half the span
+  const auto kept = of(-1.0, 4.0).ForTimeStep(previous); // inside, over half the span
   EXPECT_EQ(kept.Offset, previous.Offset);
   EXPECT_EQ(kept.Scale, previous.Scale);
-  EXPECT_DOUBLE_EQ(of(1.0, 2.0).KeptFrom(previous).Scale, 1.0); // a quarter of the span: its own
-  EXPECT_EQ(of(-3.0, 4.0).KeptFrom(previous).Offset, -3.0);      // beyond the low end
-  EXPECT_DOUBLE_EQ(of(0.0, 7.0).KeptFrom(previous).Scale, 1.0 / 7.0); // beyond the high end
+  // Outside, or a quarter of the span: its own range with an eighth of it as headroom at each end,
+  // which the next step's values a little beyond it keep.
+  for (const auto& range : { std::pair<double, double>(1.0, 2.0), { -3.0, 4.0 }, { 0.0, 7.0 } })
+  {
+    const auto own = of(range.first, range.second).ForTimeStep(previous);
+    const double span = range.second - range.first;
+    EXPECT_DOUBLE_EQ(own(range.first), 0.1);
+    EXPECT_DOUBLE_EQ(own(range.second), 0.9);
+    const auto next = of(range.first - 0.1 * span, range.second).ForTimeStep(own);
+    EXPECT_EQ(next.Offset, own.Offset);
+  }
 }
 
 TEST(HexahedronMesh, TetrahedronFaceNeighboursAcrossEachCorner)
