@@ -741,8 +741,9 @@ def readme_text(rows, command, started, machine, partial):
         "",
         "`--quick` (two small scenes, 128 px, 4 views), `--scenes a,b` and `--mappers substring,...` run less;",
         "the per-scene plots of time against error and montages go to `--output` (default `out/benchmark`).",
-        "Other benchmarks: `deforming.py` (a mesh whose points move every frame), `paraview_ranks.py`",
-        "(ParaView, 1 against N ranks), `reference_render.py` (the reference alone) and",
+        "Other benchmarks: `deforming.py` (a mesh whose points move every frame), `time_series.py` and",
+        "`paraview_time_series.py` (a reader's time steps: values or points changing, against a static frame),",
+        "`paraview_ranks.py` (ParaView, 1 against N ranks), `reference_render.py` (the reference alone) and",
         "`build/vtk/bin/uvBenchmarkFilters` (the filters against VTK's).",
         "",
     ]
