@@ -128,7 +128,7 @@ public:
   struct
   {
     std::uint64_t TopologyVersion = 0;
-    vtkMTimeType MatrixTime = 0;
+    glm::dmat4 Matrix{ 0.0 };
     int SamplesAcross = 0;
     double Value = 0.0;
   } Automatic; // the automatic sample distance and what it was computed from
@@ -396,8 +396,9 @@ void vtkBarycentricShellMapper::Internals::UpdateSampleDistance(
   this->Now.SampleDistance = self->SampleDistance;
   if (this->Now.SampleDistance > 0.0)
     return;
-  const vtkMTimeType matrixTime = frame.Volume->GetMatrix()->GetMTime();
-  if (this->Automatic.TopologyVersion != this->Mesh.TopologyVersion || this->Automatic.MatrixTime != matrixTime ||
+  // The matrix by value: ParaView sets the volume's matrix again whenever its data changes.
+  const glm::dmat4& matrix = frame.VolumeToWorld;
+  if (this->Automatic.TopologyVersion != this->Mesh.TopologyVersion || this->Automatic.Matrix != matrix ||
     this->Automatic.SamplesAcross != self->AutomaticSamplesAcross || !(this->Automatic.Value > 0.0))
   {
     double bounds[6];
@@ -406,7 +407,7 @@ void vtkBarycentricShellMapper::Internals::UpdateSampleDistance(
       std::pow(bounds[5] - bounds[4], 2));
     this->Automatic.Value = diagonal / self->AutomaticSamplesAcross;
     this->Automatic.TopologyVersion = this->Mesh.TopologyVersion;
-    this->Automatic.MatrixTime = matrixTime;
+    this->Automatic.Matrix = matrix;
     this->Automatic.SamplesAcross = self->AutomaticSamplesAcross;
   }
   this->Now.SampleDistance = this->Automatic.Value;
