@@ -61,9 +61,11 @@ public:
   }
 
   /// Draws the layers with `program` (bound, its cell uniforms set) over the `cells` isosurface cells;
-  /// returns the layers that found a crossing and adds the tetrahedra drawn to `drawn`.
+  /// returns the layers that found a crossing and adds the tetrahedra drawn to `drawn`. Calls
+  /// `checkGLErrors(pass)` after each layer (the mapper's GL-error debug mode).
+  template <typename CheckGLErrors>
   int Run(vtkOpenGLState* state, vtkShaderProgram* program, vtkBarycentricShellCellDrawer& drawer, std::size_t cells,
-    vtkIdType& drawn)
+    vtkIdType& drawn, const CheckGLErrors& checkGLErrors)
   {
     this->PreviousLayer->Activate();
     program->SetUniformi("previousLayer", this->PreviousLayer->GetTextureUnit());
@@ -76,6 +78,7 @@ public:
       this->BindLayer(state, layer);
       program->SetUniformi("layer", layer);
       const GLuint samples = uvgl::SamplesPassed([&] { drawer.Draw(state, program, this->Cells, 0, cells); });
+      checkGLErrors("an isosurface layer of the shells");
       drawn += static_cast<vtkIdType>(cells);
       if (samples == 0)
         break; // no pixel has another crossing
@@ -85,6 +88,7 @@ public:
         // The next pass starts beyond this layer's hits.
         this->Framebuffer->ActivateReadBuffer(1);
         this->PreviousLayer->CopyFromFrameBuffer(0, 0, 0, 0, this->Width, this->Height);
+        checkGLErrors("the copy of an isosurface layer of the shells");
       }
     }
     this->PreviousLayer->Deactivate();

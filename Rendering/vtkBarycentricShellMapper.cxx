@@ -109,6 +109,12 @@ private:
 class vtkBarycentricShellMapper::Internals
 {
 public:
+  explicit Internals(vtkBarycentricShellMapper* self)
+    : Self(self)
+  {
+  }
+  vtkBarycentricShellMapper* Self; // reports the GL errors of its passes (the debug mode)
+
   // ---- CPU state, each piece versioned (or compared exactly) for its GPU copy.
   uvvtk::TetrahedralMesh Mesh;
   std::vector<std::uint32_t> OrientedPoints; // Mesh.TetrahedronPoints, each positively oriented
@@ -638,6 +644,7 @@ bool vtkBarycentricShellMapper::Internals::DrawCellProjection(
   if (this->Now.SegmentTable)
     this->LengthTable.Bind(program);
   this->Projection.Run(frame.Window->GetState(), program, this->Cells, this->Order.Order.size());
+  this->Self->CheckGLErrors("the cell projection");
   this->DrawnTetrahedra = static_cast<vtkIdType>(this->Order.Order.size());
   if (this->Now.SegmentTable)
     this->LengthTable.Unbind();
@@ -662,8 +669,9 @@ int vtkBarycentricShellMapper::Internals::DrawIsosurfaceLayers(
   this->Isosurfaces.Bind(program, "isosurfaces");
   program->SetUniformi("isosurfaceCount", static_cast<int>(this->Isovalues.size()));
   uvgl::SetPhongUniforms(program, frame.Renderer, frame.Property, frame.WorldToEye);
-  this->IsosurfaceLayers = this->Peel.Run(
-    frame.Window->GetState(), program, this->Cells, this->Lists.Isosurface.size(), this->DrawnTetrahedra);
+  this->IsosurfaceLayers = this->Peel.Run(frame.Window->GetState(), program, this->Cells,
+    this->Lists.Isosurface.size(), this->DrawnTetrahedra,
+    [this](const char* pass) { return this->Self->CheckGLErrors(pass); });
   return this->IsosurfaceLayers;
 }
 
@@ -708,13 +716,16 @@ void vtkBarycentricShellMapper::Internals::DrawShell(int s, const vtkUnstructure
   const float start = this->Layout.Start(s);
   const std::uint32_t count = this->Buckets.CellCount(s);
   this->Slices.Run(state, programs, shell.Slice, this->Cells, this->Buckets.Offsets[s], count, start);
+  this->Self->CheckGLErrors("the shells' slices");
   this->DrawnTetrahedra += count;
   this->Blend.Run(state, programs, shell.Blend, target, this->Slices, start);
+  this->Self->CheckGLErrors("the shells' blend");
   if (shell.TerminateEarly && s + 1 < this->Buckets.Count())
   {
     this->Slices.BindTargets();
     programs.Use(shell.Mask);
     this->Mask.Run(state, shell.Mask, target.GetColor());
+    this->Self->CheckGLErrors("the shells' opacity mask");
   }
 }
 
@@ -747,7 +758,7 @@ bool vtkBarycentricShellMapper::Internals::DrawShells(vtkBarycentricShellMapper*
 }
 
 vtkBarycentricShellMapper::vtkBarycentricShellMapper()
-  : Impl(new Internals)
+  : Impl(new Internals(this))
 {
   // Above the hexahedral mapper's 0.99, whose loss the benchmark found larger than the error of
   // fine sampling.
@@ -887,6 +898,7 @@ bool vtkBarycentricShellMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vt
   target.GetNoAttributes()->Bind(); // every pass pulls its vertices from buffer textures
   bool opaqueGeometry = false;
   bool drawn = impl.Opaque.Run(frame, target, opaqueGeometry);
+  this->CheckGLErrors("the shells' opaque distances");
   if (!drawn)
   {
     vtkErrorMacro("the opaque-distance shaders failed to compile or link");

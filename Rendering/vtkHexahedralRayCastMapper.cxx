@@ -481,6 +481,12 @@ private:
 class vtkHexahedralRayCastMapper::Internals
 {
 public:
+  explicit Internals(vtkHexahedralRayCastMapper* self)
+    : Self(self)
+  {
+  }
+  vtkHexahedralRayCastMapper* Self; // reports the GL errors of its passes (the debug mode)
+
   // CPU state, versioned for the GPU copies.
   uvvtk::HexahedralMesh Mesh;
   uvvtk::VertexGradientCache Gradients;
@@ -512,6 +518,7 @@ public:
       bool entered = false;
       if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Entries.BoundaryCount(), peel == 0, entered))
         return false;
+      this->Self->CheckGLErrors("the hexahedral entry pass");
       const bool fromStartCell = peel == 0 && this->StartCellOfFrame >= 0;
       if (!entered && !fromStartCell)
         break; // no ray enters the mesh again
@@ -521,16 +528,20 @@ public:
       if (!this->Traverse.Draw(pass, this->Images, this->Gpu, settings, target.GetSceneDepth(), accumulation[last],
             accumulation[1 - last]))
         return false;
+      this->Self->CheckGLErrors("the hexahedral traversal pass");
       last = 1 - last;
     }
     if (last == 1)
+    {
       this->Images.CopyAccumulationInto(target);
+      this->Self->CheckGLErrors("the hexahedral accumulation copy");
+    }
     return true;
   }
 };
 
 vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
-  : Impl(new Internals)
+  : Impl(new Internals(this))
 {
   this->OpacityThreshold = 0.99;
   // The exact field's own gradient needs nothing computed ahead; the plugin picks vertex gradients.

@@ -446,14 +446,19 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
     vtkErrorMacro("the projected-tetrahedra shaders failed to compile or link");
     return false;
   }
+  this->CheckGLErrors("the projected tetrahedra's program and textures");
   target.GetNoAttributes()->Bind();
   bool drawn = true;
   if (impl.FrontToBack)
     drawn = this->DrawFrontToBack(frame, target, program);
   else
     this->DrawBackToFront(frame);
+  this->CheckGLErrors("the projected tetrahedra");
   if (drawn && this->OrderIsChosen())
+  {
     drawn = this->MeasureOpaqueShare(frame, target);
+    this->CheckGLErrors("the tetrahedra's opaque-share measure");
+  }
   target.GetNoAttributes()->Release();
   this->UnbindTetrahedraResources(target);
   impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Order.Order.size());
@@ -655,6 +660,7 @@ bool vtkPreIntegratedTetrahedraMapper::DrawFrontToBack(
     {
       shaders->ReadyShaderProgram(mask);
       impl.Mask.RunAlone(state, mask, target.GetColor());
+      this->CheckGLErrors("the tetrahedra's opacity mask");
       ++impl.MaskRefreshes;
     }
   }

@@ -18,6 +18,53 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+
+namespace
+{
+bool GLErrorChecksFromEnvironment()
+{
+  const char* value = std::getenv("UV_CHECK_GL_ERRORS");
+  return value && std::strcmp(value, "1") == 0;
+}
+
+/// Drains the GL error flags (an implementation may hold several): their names, or "" when none.
+std::string TakeGLErrors()
+{
+  std::ostringstream names;
+  for (int k = 0; k < 16; ++k)
+  {
+    const GLenum code = glGetError();
+    if (code == GL_NO_ERROR)
+      break;
+    names << (k ? ", " : "") << vtkOpenGLStrError(code) << " (0x" << std::hex << code << std::dec << ")";
+  }
+  return names.str();
+}
+}
+
+bool vtkUnstructuredVolumeMapper::GLErrorChecks = GLErrorChecksFromEnvironment();
+
+void vtkUnstructuredVolumeMapper::SetGLErrorChecks(bool on)
+{
+  GLErrorChecks = on;
+}
+
+bool vtkUnstructuredVolumeMapper::GetGLErrorChecks()
+{
+  return GLErrorChecks;
+}
+
+bool vtkUnstructuredVolumeMapper::ReportGLErrors(const char* pass)
+{
+  const std::string errors = TakeGLErrors();
+  if (errors.empty())
+    return true;
+  vtkErrorMacro("GL error after " << pass << ": " << errors);
+  return false;
+}
 
 struct vtkUnstructuredVolumeMapper::Shared
 {
@@ -143,16 +190,16 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     return;
   }
   this->UseContext(window);
-  vtkOpenGLClearErrorMacro();
-  if (!this->Upload(frame))
+  if (GLErrorChecks)
+    TakeGLErrors(); // what VTK left before the volume is not this mapper's
+  const bool uploaded = this->Upload(frame);
+  this->CheckGLErrors("the upload");
+  if (!uploaded)
   {
     this->KeepTransparentImage(frame);
     return;
   }
-  if (this->DrawAndComposite(frame))
-  {
-    vtkOpenGLCheckErrorMacro("failed after rendering the volume");
-  }
+  this->DrawAndComposite(frame);
 }
 
 void vtkUnstructuredVolumeMapper::KeepTransparentImage(const vtkUnstructuredVolumeFrame& frame)
@@ -197,10 +244,12 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   target.Clear();
+  this->CheckGLErrors("binding and clearing the float target");
   const bool drawn = this->Draw(frame, target);
   if (drawn && this->KeepFloatImage)
   {
     target.ReadBack(this->Base->FloatImage);
+    this->CheckGLErrors("reading the float image back");
   }
   target.Unbind();
   if (!drawn)
@@ -216,7 +265,7 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
     vtkErrorMacro("the composite shaders failed to compile or link");
     return false;
   }
-  return true;
+  return this->CheckGLErrors("the blend into the scene");
 }
 
 void vtkUnstructuredVolumeMapper::ReleaseGraphicsResources(vtkWindow*)

@@ -20,7 +20,8 @@
  *   3. Upload: GPU resources brought to the versions Prepare produced;
  *   4. Draw: the mapper's passes into the bound float target, which the base cleared;
  *   5. read back (KeepFloatImage), blend into the scene, check for a GL error.
- * Each subclass implements those three steps, ReleaseMapperGraphics and GetMeshMemoryInBytes.
+ * Each subclass implements those three steps, ReleaseMapperGraphics and GetMeshMemoryInBytes, and
+ * calls CheckGLErrors after each of its passes (the GL-error debug mode, SetGLErrorChecks).
  */
 #ifndef vtkUnstructuredVolumeMapper_h
 #define vtkUnstructuredVolumeMapper_h
@@ -203,6 +204,16 @@ public:
   /// Bytes of GPU buffers the mesh takes (not the screen-sized images), as of the last frame.
   virtual vtkIdType GetMeshMemoryInBytes() = 0;
 
+  ///@{
+  /// The GL-error debug mode, for every mapper of the process: after each named pass (uploads, each
+  /// mapper's draw passes, the final blend) glGetError is checked and an error naming the pass and
+  /// the GL error is reported (vtkErrorMacro), so that a test observing errors fails. Off by default;
+  /// on from the start when the environment has UV_CHECK_GL_ERRORS=1 (read once). Off, a check costs
+  /// one test of this flag; on, each check waits for the GPU.
+  static void SetGLErrorChecks(bool on);
+  static bool GetGLErrorChecks();
+  ///@}
+
   void Render(vtkRenderer* renderer, vtkVolume* volume) final;
   void ReleaseGraphicsResources(vtkWindow* window) final;
 
@@ -229,6 +240,10 @@ protected:
   /// (`facesBetweenCells`: the faces between cells on either side of the value). Returns true when
   /// the scalar is on cells.
   bool WarnCellScalarLimits(const uvvtk::RenderedScalar& scalar, bool shade, bool facesBetweenCells);
+
+  /// In the GL-error debug mode, reports the GL errors raised since the last check, naming `pass`;
+  /// false when there was one. Does nothing (true) when the mode is off.
+  bool CheckGLErrors(const char* pass) { return !GLErrorChecks || this->ReportGLErrors(pass); }
 
   /// The isosurfaces, in value order.
   const uv::IsosurfaceList& GetIsosurfaces() const;
@@ -261,6 +276,9 @@ private:
   /// A frame that draws nothing (empty viewport, nothing visible, bad input) keeps a transparent
   /// float image of its size, not the last drawn one.
   void KeepTransparentImage(const vtkUnstructuredVolumeFrame& frame);
+
+  static bool GLErrorChecks;
+  bool ReportGLErrors(const char* pass);
 
   bool CheckArguments(vtkRenderer* renderer, vtkVolume* volume);
   void UseContext(vtkOpenGLRenderWindow* window);

@@ -367,13 +367,13 @@ def HexScene(mesh, prop, camera, size=128, mapper=None, **settings):  # noqa: N8
 
 # ---------------------------------------------------------------------------------------------
 # The reference and error measures
-def reference(mesh, prop, camera, size):
-    """vtkUnstructuredVolumeReferenceRenderer's float image of the mesh at size x size."""
+def reference(mesh, prop, camera, size, height=None):
+    """vtkUnstructuredVolumeReferenceRenderer's float image of the mesh at size x size (size x height)."""
     renderer = vtkUnstructuredVolumeReferenceRenderer()
     renderer.SetInputData(mesh)
     renderer.SetVolumeProperty(prop)
     renderer.SetCamera(camera)
-    renderer.SetImageSize(size, size)
+    renderer.SetImageSize(size, size if height is None else height)
     assert renderer.Render()
     return renderer.GetOutput()
 

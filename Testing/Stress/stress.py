@@ -2,8 +2,9 @@
 reference, in a process of its own, so that a crash or a hang is reported as such.
 
 A case draws one choice from each axis below (the seed and the case number decide). Each mapper's
-float image must be finite, premultiplied within [0, 1], raise no VTK error, and agree with the
-reference: RMSE within the case's bound, and the reference's covered pixels covered.
+float image must be finite, premultiplied within [0, 1], raise no VTK error (the mappers' GL-error
+debug mode is on, so a GL error after any pass is one), and agree with the reference: RMSE within
+the case's bound, and the reference's covered pixels covered.
 
     python3 Testing/Stress/stress.py --cases 500 --seed 7     # the long run
     python3 Testing/Stress/stress.py --case 12 --seed 7       # one case, in this process
@@ -212,6 +213,8 @@ def mappers_for(mesh):
 def run_case(seed, number):
     """Renders the case; returns a list of failures (empty: passed)."""
     from fixtures import Scene, finite_image, reference, rmse
+    from unstructuredvolume import vtkUnstructuredVolumeMapper
+    vtkUnstructuredVolumeMapper.SetGLErrorChecks(True)
     case = choose(seed, number)
     mesh = place(apply_scalars(build_mesh(case), case), case)
     prop, camera, size = make_property(mesh, case), make_camera(mesh, case), case["size"]
