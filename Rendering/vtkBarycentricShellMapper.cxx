@@ -119,6 +119,7 @@ public:
   uvvtk::TetrahedralMesh Mesh;
   std::vector<std::uint32_t> OrientedPoints; // Mesh.TetrahedronPoints, each positively oriented
   std::uint64_t OrientedVersion = 0;
+  std::pair<std::uint64_t, std::uint64_t> OrientedFor{ 0, 0 }; // the mesh's Topology- and PositionsVersion
   uvvtk::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
   std::vector<double> Isovalues;
@@ -286,9 +287,14 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(
     for (const std::string& warning : this->Warned.New(this->Mesh, input->GetNumberOfCells()))
       vtkWarningWithObjectMacro(self, << warning);
   }
-  if (change == uvvtk::TetrahedralMesh::Change::All || change == uvvtk::TetrahedralMesh::Change::Points)
+  if (change == uvvtk::TetrahedralMesh::Change::All)
+    this->Order.Invalidate(); // new cells (the order sees moved points itself)
+  // Each tetrahedron's corners in positive order, again for other tetrahedra or moved points (new
+  // values alone keep it).
+  const std::pair<std::uint64_t, std::uint64_t> orientedFor(this->Mesh.TopologyVersion, this->Mesh.PositionsVersion);
+  if (this->OrientedFor != orientedFor)
   {
-    this->Order.Invalidate(); // centroids moved, or new cells (new values alone keep both)
+    this->OrientedFor = orientedFor;
     std::vector<std::uint32_t> oriented = OrientedTetrahedra(this->Mesh);
     if (oriented != this->OrientedPoints)
     {

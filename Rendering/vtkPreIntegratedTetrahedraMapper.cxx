@@ -348,8 +348,8 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
     vtkErrorMacro(<< error);
     return false;
   }
-  if (change == uvvtk::TetrahedralMesh::Change::All || change == uvvtk::TetrahedralMesh::Change::Points)
-    impl.Order.Invalidate(); // new values alone change the order only through the visible list
+  if (change == uvvtk::TetrahedralMesh::Change::All)
+    impl.Order.Invalidate(); // moved points it sees itself; new values change it only through the list
   if (change != uvvtk::TetrahedralMesh::Change::Nothing)
   {
     for (const std::string& warning : impl.Warned.New(impl.Mesh, input->GetNumberOfCells()))

@@ -59,7 +59,7 @@ public:
   {
     Nothing,
     Points, ///< only the point positions (a deforming mesh): PointData's xyz
-    Values, ///< the scalar's values (and maybe the points), the same tetrahedra drawn
+    Values, ///< the scalar's values (and maybe the points: PositionsVersion), the same tetrahedra drawn
     All
   };
 
@@ -82,6 +82,7 @@ public:
   std::uint64_t Version = 0;      // anything: positions, scalar, cells
   std::uint64_t CellsVersion = 0; // ScalarLow/High and TetrahedronPoints (not a point-only refresh)
   std::uint64_t TopologyVersion = 0; // TetrahedronPoints alone (not a refresh leaving the same drawn)
+  std::uint64_t PositionsVersion = 0; // PointData's positions: builds and refreshes that moved points
 
   std::size_t Size() const { return this->TetrahedronPoints.size() / 4; }
   /// Host bytes of the copies above (not the input or its split).
@@ -128,6 +129,7 @@ public:
     {
       this->Adopt(grid, scalar, changed);
       ++this->Version;
+      this->PositionsVersion += changed.Points ? 1 : 0;
       if (!changed.Values)
       {
         this->RefreshPoints();
@@ -144,6 +146,7 @@ public:
     ++this->Version;
     ++this->CellsVersion;
     ++this->TopologyVersion;
+    ++this->PositionsVersion;
     std::string error = this->Build(input, scalar, progress);
     this->Built = error.empty();
     if (!this->Built)
@@ -409,8 +412,8 @@ struct MeshWarnings
 /// Tetrahedra in back-to-front order of their centroids' distance from the eye (along the view under
 /// parallel projection; parallel radix sort), and with `exact`, that order changed where the faces
 /// between tetrahedra say it is wrong (uvFaceAdjacencyOrder.h; the face adjacency is built on the
-/// first exact order of new cells). Sorted again only when the view or `exact` changes, or after
-/// Invalidate (new cells, moved points).
+/// first exact order of new cells). Sorted again only when the view, `exact` or the mesh's positions
+/// change, or after Invalidate (new cells).
 class VisibilityOrder
 {
 public:
@@ -426,8 +429,8 @@ public:
   bool Update(const TetrahedralMesh& mesh, const std::vector<std::uint32_t>& cells, const glm::dvec3& eye,
     const glm::dvec3& direction, bool parallel, bool frontToBack = false, bool exact = false)
   {
-    if (this->Valid && eye == this->Eye && direction == this->Direction && parallel == this->Parallel &&
-      exact == this->Exact)
+    if (this->Valid && mesh.PositionsVersion == this->PositionsFor && eye == this->Eye &&
+      direction == this->Direction && parallel == this->Parallel && exact == this->Exact)
     {
       if (frontToBack == this->FrontToBack)
         return false;
@@ -447,6 +450,7 @@ public:
     this->Direction = direction;
     this->Parallel = parallel;
     this->Exact = exact;
+    this->PositionsFor = mesh.PositionsVersion;
     this->Valid = true;
     ++this->Sorts;
     ++this->Version;
@@ -530,6 +534,7 @@ private:
   uv::FaceAdjacencyOrder Faces;
   glm::dvec3 Eye{ 0.0 }, Direction{ 0.0 };
   bool Parallel = false, Valid = false, FrontToBack = false, Exact = false;
+  std::uint64_t PositionsFor = 0; // the mesh's PositionsVersion sorted for
 };
 
 } // namespace uvvtk
