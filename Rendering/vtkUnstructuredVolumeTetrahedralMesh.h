@@ -235,7 +235,7 @@ private:
     }
     // Normalised scalar and recentred positions, in double then float.
     RecentredPoints recentred;
-    recentred.Build(this->Tetrahedra, this->Scalar, &this->Normalisation);
+    recentred.Build(this->Tetrahedra, this->Scalar);
     this->PointData = std::move(recentred.Values);
     this->Center = recentred.Center;
     this->Normalisation = recentred.Normalisation;
