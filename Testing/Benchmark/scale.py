@@ -112,7 +112,7 @@ def watch(command, log_path, limit_s, cap_mb):
             if time.monotonic() - start > limit_s:
                 status = f"timeout (> {limit_s:.0f} s)"
             elif seen > cap_mb:
-                status = f"over the memory cap ({cap_mb / 1024:.0f} GB)"
+                status = f"over the memory cap ({cap_mb / 1024:g} GB)"
             if status:
                 child.kill()
                 child.wait()
@@ -204,8 +204,8 @@ def markdown_table(rows):
     for r in sorted(rows, key=lambda r: (order.index(r["mapper"]), r["cells"])):
         unit = "tets" if r["kind"] == "tets" else "hex"
         if r["status"] != "ok":
-            lines.append(f"| {r['cells']:,} {unit} | {r['mapper']} | | | | | "
-                         f"{r.get('watched_peak_mb', 0):.0f} (seen) | | | {r['status']} |")
+            seen = f"{r['watched_peak_mb']:.0f} (seen)" if r.get("watched_peak_mb") else ""
+            lines.append(f"| {r['cells']:,} {unit} | {r['mapper']} | | | | | {seen} | | | {r['status']} |")
             continue
         host = f"{r['host_bytes_per_cell']:.0f}" + ("" if r["host_counted"] else " (RSS)")
         gpu = "" if r["gpu_bytes_per_cell"] is None else f"{r['gpu_bytes_per_cell']:.0f}"
@@ -382,7 +382,7 @@ def main():
         limit = min(args.large_timeout if half == SIZES[kind][-1] else args.timeout, left)
         if failed_smaller:
             status, seconds, seen, result = f"not run ({failed_smaller[0]['cells']:,} failed)", 0.0, 0.0, None
-        elif limit < 10:
+        elif left < 10:
             status, seconds, seen, result = "not run (time budget spent)", 0.0, 0.0, None
         else:
             print(f"{cells:>10,} {kind:9s} {name:30s} (limit {limit:.0f} s) ...", end=" ", flush=True)
