@@ -44,13 +44,13 @@ void vtkUnstructuredVolumeFloatTarget::AttachDepth(vtkTextureObject* depth)
   {
     return;
   }
-  this->Framebuffer->SaveCurrentBindingsAndBuffers();
-  this->Framebuffer->Bind();
+  // No Save/RestorePreviousBindingsAndBuffers here: the target is usually bound (Bind saved VTK's
+  // bindings), and VTK's saved-bindings flag is per framebuffer, not a count, so a nested save on
+  // the same framebuffer leaves the target bound after Unbind. Attaching binds and restores itself.
   if (depth)
     this->Framebuffer->AddDepthAttachment(depth);
   else
     this->Framebuffer->RemoveDepthAttachment();
-  this->Framebuffer->RestorePreviousBindingsAndBuffers();
   this->AttachedDepth = depth;
 }
 

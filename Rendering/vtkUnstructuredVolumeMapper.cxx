@@ -170,7 +170,7 @@ void vtkUnstructuredVolumeMapper::UseContext(vtkOpenGLRenderWindow* window)
 {
   if (this->Base->Context != window)
   {
-    this->ReleaseGraphicsResources(this->Base->Context);
+    this->ReleaseGraphicsResources(this->Base->Context); // the old window's objects, in its context
     this->Base->Context = window;
   }
   window->MakeCurrent();
@@ -268,10 +268,18 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
   return this->CheckGLErrors("the blend into the scene");
 }
 
-void vtkUnstructuredVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
+void vtkUnstructuredVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
+  vtkOpenGLRenderWindow* context = this->Base->Context;
+  // The objects live in one window's context: another window (a renderer of it dropping a shared
+  // volume, or closing) has none of them to release.
+  if (!context || (window && window != context))
+    return;
+  // Buffers and vertex arrays are deleted by name in whichever context is current: make it theirs.
+  context->PushContext();
   this->ReleaseMapperGraphics();
   this->Base->Target.Release();
+  context->PopContext();
   this->Base->Context = nullptr;
 }
 

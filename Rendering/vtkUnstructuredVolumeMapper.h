@@ -215,6 +215,8 @@ public:
   ///@}
 
   void Render(vtkRenderer* renderer, vtkVolume* volume) final;
+  /// Frees the GPU objects, in the context of the window they were made in; a window the mapper does
+  /// not render in (the other of two sharing it) holds none, and is ignored.
   void ReleaseGraphicsResources(vtkWindow* window) final;
 
 protected:

@@ -35,16 +35,8 @@ ISOSURFACES = 300
 ISOSURFACE_RMSE = 0.06
 
 # (mapper, case): why the mapper is known to fail the case. Each is a bug left open: its subtest must
-# still fail (a fix makes it pass, and then it must be taken out of this list).
-KNOWN = {
-    ("shells", "viewports"): "a viewport away from the window's corner, or after one, is drawn wrong",
-    ("cell projection", "viewports"): "a viewport away from the window's corner, or after one, is drawn wrong",
-    ("shells", "one pixel"): "the single pixel differs from the reference's by 0.22",
-    ("hexahedral", "one pixel"): "the single pixel differs from the reference's by 0.125",
-    ("shells", "strip"): "the 2000 x 3 window: RMSE 0.105 against the reference",
-    ("hexahedral", "strip"): "the 2000 x 3 window: RMSE 0.169 against the reference",
-    ("shells", "isosurfaces"): "hundreds of isosurfaces: RMSE 0.37 against the reference",
-}
+# still fail (a fix makes it pass, and then it must be taken out of this list). None is open.
+KNOWN = {}
 
 SECOND_WINDOW = []
 
@@ -250,6 +242,31 @@ class RenderWindowTests(SceneTestCase):
             self.assertLessEqual(largest_error(drawn, image), SAME_SCENE, f"viewport {k}")
             tile = window_pixels(window, size * (k % 2), size * (k // 2), size, size)
             self.assertLessEqual(largest_error(tile, pixels), WINDOW_PIXELS, f"viewport {k}'s pixels")
+
+    def test_the_renderer_after_each_mapper_draws_as_alone(self):
+        """Each mapper's first frame in the left half, then a new ray caster in the right half of the
+        same frame: the mapper must leave VTK's framebuffer bound for the next renderer."""
+        size = 32
+        _, next_factory, next_settings, next_mesh = MAPPERS[3]
+        after = next_mesh()
+        after_prop, after_camera = ramp_property(after), camera_for(after, azimuth=-40.0)
+        alone = self.alone(next_factory, next_settings, after, after_prop, after_camera, size)[0]
+        for name, factory, settings, make_mesh in MAPPERS:
+            with self.subTest(mapper=name):
+                mesh = make_mesh()
+                volumes = []
+                for f, s, m, p in ((factory, settings, mesh, ramp_property(mesh)),
+                                   (next_factory, next_settings, after, after_prop)):
+                    volume = vtkVolume()
+                    volume.SetMapper(new_mapper(f, s, m))
+                    volume.SetProperty(p)
+                    volumes.append(volume)
+                window = bare_shared_window()
+                self.viewports(window, [camera_for(mesh), after_camera], volumes)
+                window.SetSize(2 * size, size)
+                window.Render()
+                drawn = volumes[1].GetMapper().GetFloatImage()
+                self.assertLessEqual(largest_error(drawn, alone), SAME_SCENE)
 
     def test_one_volume_in_two_viewports(self):
         size = 32
