@@ -8,7 +8,6 @@ set -euo pipefail
 UV_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 UV_BUILD="${UV_BUILD:-$UV_ROOT/build}"
 build="$UV_BUILD/sanitize"
-scripts="$UV_ROOT/Testing/Scripts"
 jobs="${UV_JOBS:-$(nproc)}"
 say() { printf '\n== %s\n' "$*"; }
 
@@ -20,12 +19,11 @@ cmake -S "$UV_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build "$build" -j "$jobs"
 
 # Every report also goes to a file of its own, so that one from a process whose exit status is lost
-# still fails the run.
+# still fails the run. The Python tests add their leak suppressions (Testing/Scripts/lsan.supp).
 reports="$build/Testing/sanitizer-reports"
 rm -rf "$reports"
 mkdir -p "$reports"
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:log_path=$reports/asan"
-export LSAN_OPTIONS="suppressions=$scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:log_path=$reports/ubsan"
 
 say "Running the tests labelled sanitize in $build under Xvfb"
