@@ -20,12 +20,12 @@ import time
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Benchmark"))
 import benchmark  # noqa: E402
+import time_series  # noqa: E402
 
 from unstructuredvolume import vtkBarycentricShellMapper, vtkPreIntegratedTetrahedraMapper  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkVolume  # noqa: E402
 from vtkmodules.vtkRenderingVolume import vtkProjectedTetrahedraMapper  # noqa: E402
 import numpy as np  # noqa: E402
 
@@ -57,21 +57,8 @@ def run(name, factory, mesh, prop, cameras, size, deform):
     points.SetData(numpy_to_vtk(rest.astype(np.float32), deep=True))
     mesh.SetPoints(points)
     coordinates = vtk_to_numpy(points.GetData())
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
-    window.SetSize(size, size)
-    renderer = vtkRenderer()
-    window.AddRenderer(renderer)
-    mapper = factory()
-    mapper.SetInputData(mesh)
-    mapper.SetScalarModeToUsePointFieldData()
-    mapper.SelectScalarArray("RTData")
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    renderer.AddVolume(volume)
-    renderer.SetActiveCamera(cameras[0])
+    window, _ = time_series.offscreen_volume(factory, mesh, prop, cameras[0], size)
+    renderer = window.GetRenderers().GetFirstRenderer()
     window.Render()
     window.WaitForCompletion()
     extent = rest.max(axis=0) - rest.min(axis=0)

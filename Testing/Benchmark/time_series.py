@@ -91,7 +91,8 @@ def timed_render(window):
     return time.perf_counter() - start
 
 
-def run(factory, base, prop, camera, size, steps):
+def offscreen_volume(factory, mesh, prop, camera, size):
+    """A new mapper of `factory` rendering `mesh`'s RTData in an off-screen window: (window, mapper)."""
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetMultiSamples(0)
@@ -99,7 +100,7 @@ def run(factory, base, prop, camera, size, steps):
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
     mapper = factory()
-    mapper.SetInputData(base)
+    mapper.SetInputData(mesh)
     mapper.SetScalarModeToUsePointFieldData()
     mapper.SelectScalarArray("RTData")
     volume = vtkVolume()
@@ -107,6 +108,11 @@ def run(factory, base, prop, camera, size, steps):
     volume.SetProperty(prop)
     renderer.AddVolume(volume)
     renderer.SetActiveCamera(camera)
+    return window, mapper
+
+
+def run(factory, base, prop, camera, size, steps):
+    window, mapper = offscreen_volume(factory, base, prop, camera, size)
     result = {"first": timed_render(window)}
     timed_render(window)  # warm-up
     result["static"] = statistics.median(timed_render(window) for _ in range(steps))
