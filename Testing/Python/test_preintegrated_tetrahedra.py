@@ -381,7 +381,9 @@ class IsovalueNormalisationTests(SceneTestCase):
         changed = copy_image(scene.render())
         fresh = Scene(mesh, prop, camera, 64)
         fresh.mapper.AddIsosurface(low + 0.5 * (high - low), 1.0, 1.0, 1.0, 1.0)
-        self.assertLess(rmse(changed, fresh.render())[1], 1e-6)
+        # The changed mesh keeps a widened normalisation of its own (a time step's, so that the next
+        # steps need no new tables) where the fresh one normalises exactly: rounding apart, the same.
+        self.assertLess(rmse(changed, fresh.render())[1], 1e-5)
 
 
 class InputTests(TetrahedralInputChecks, SceneTestCase):
