@@ -160,20 +160,47 @@ inline double Difference(const PieceIntegral& x, const PieceIntegral& y)
   return std::max({ std::abs(x.Depth - y.Depth), d.x, d.y, d.z });
 }
 
-/// Adaptive bisection until whole and halves agree within `tolerance`; composited in order.
+/// Gauss-Legendre integrates exp(-depth) well only over pieces of small optical depth: a denser piece
+/// is bisected even where its halves agree, or the thin layer in front where all its light comes from
+/// falls between the nodes (an opaque medium came out black).
+constexpr double MaximumPieceDepth = 0.25;
+
+/// A piece too short to bisect further: its medium taken as constant, the colour of its front.
+template <typename MediumAt>
+void CompositeConstantPiece(const MediumAt& mediumAt, double a, const PieceIntegral& whole, RayAccumulator& accumulator)
+{
+  const Medium front = mediumAt(a);
+  const glm::dvec3 color = front.Extinction > 0.0 ? front.Emission / front.Extinction : glm::dvec3(0.0);
+  accumulator.Composite(color * -std::expm1(-whole.Depth), whole.Depth);
+}
+
+/// Adaptive bisection until whole and halves agree within `tolerance` and each piece is thin
+/// (MaximumPieceDepth); composited in order, left first, so that what lies behind a piece that
+/// made the ray opaque (to within a thousandth of the tolerance) is never integrated: an opaque
+/// medium costs the bisections down to its front layer, not its whole length.
 /// `budget` bounds the bisections of one segment: a scalar that never resolves (a cell so distorted
 /// its inverse map fails) costs at most that many, not 2^depth.
 template <typename MediumAt>
 void AdaptivePiece(const MediumAt& mediumAt, double a, double b, const PieceIntegral& whole,
   double tolerance, int depth, int& budget, RayAccumulator& accumulator)
 {
+  if (accumulator.Transmittance <= 1e-3 * tolerance)
+  {
+    return;
+  }
   const double m = 0.5 * (a + b);
+  if (depth >= 80 || !(m > a && m < b))
+  {
+    CompositeConstantPiece(mediumAt, a, whole, accumulator);
+    return;
+  }
   const PieceIntegral left = GaussPiece(mediumAt, a, m);
   const PieceIntegral right = GaussPiece(mediumAt, m, b);
   PieceIntegral halves;
   halves.Depth = left.Depth + right.Depth;
   halves.Color = left.Color + std::exp(-left.Depth) * right.Color;
-  if (depth >= 40 || --budget <= 0 || Difference(whole, halves) <= tolerance)
+  const bool resolved = whole.Depth <= MaximumPieceDepth && Difference(whole, halves) <= tolerance;
+  if (resolved || --budget <= 0)
   {
     accumulator.Composite(left.Color, left.Depth);
     accumulator.Composite(right.Color, right.Depth);

@@ -66,6 +66,31 @@ TEST(OpticalModel, ConstantTransferFunctionIsClosedForm)
   }
 }
 
+TEST(OpticalModel, DenseMediaShowTheColourOfTheirFrontLayer)
+{
+  // Optical depths up to 1e21 along a segment whose colour changes along it: all the light comes
+  // from a front layer far thinner than the spacing of any fixed set of quadrature nodes, and it is
+  // the colour at the front (the stress cases' unit distance of 1e-9 on a unit mesh drew black).
+  const uv::TransferFunction tf({ { 0.0, { 1.0, 0.2, 0.0 }, 0.0 }, { 1.0, { 0.0, 0.2, 1.0 }, 0.0 } });
+  for (double extinction : { 1e3, 1e9, 1e21 })
+  {
+    SCOPED_TRACE(extinction);
+    const uv::TransferFunction dense({ { 0.0, { 1.0, 0.2, 0.0 }, extinction }, { 1.0, { 0.0, 0.2, 1.0 }, extinction } });
+    for (double front : { 0.1, 0.7 })
+    {
+      uv::RayAccumulator accumulator;
+      uv::IntegrateSegment(dense, [front](double t) { return front + 0.2 * t; }, 0.0, 1.0, 1e-7, accumulator);
+      EXPECT_NEAR(accumulator.Opacity(), 1.0, 1e-9);
+      EXPECT_NEAR(accumulator.Color.x, 1.0 - front, 1e-3 * (1.0 + 1e3 / extinction));
+      EXPECT_NEAR(accumulator.Color.z, front, 1e-3 * (1.0 + 1e3 / extinction));
+    }
+  }
+  // A transparent medium stays transparent.
+  uv::RayAccumulator clear;
+  uv::IntegrateSegment(tf, [](double t) { return t; }, 0.0, 1.0, 1e-7, clear);
+  EXPECT_EQ(clear.Opacity(), 0.0);
+}
+
 TEST(OpticalModel, LinearExtinctionDepthIsExact)
 {
   // tau linear in s, s linear in t: depth = length * mean(tau).
