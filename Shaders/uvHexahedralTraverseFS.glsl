@@ -327,6 +327,32 @@ float CubicIntegral(vec4 p, float x)
   return x * (p.x + x * (p.y / 2.0 + x * (p.z / 3.0 + x * p.w / 4.0)));
 }
 
+/// The w in [0, width] where CubicIntegral(tau, w) reaches `depth` (the extinction tau is not
+/// negative, so the integral rises). The power of two of width that brackets it first (a dense
+/// medium reaches it within a 1e-20th of the width), then bisection inside that bracket.
+float WidthOfDepth(vec4 tau, float width, float depth)
+{
+  int fewer = 0, more = 126; // halvings: the integral reaches depth at width / 2^fewer, not at width / 2^more
+  while (more - fewer > 1)
+  {
+    int middle = (fewer + more) / 2;
+    if (CubicIntegral(tau, width * exp2(-float(middle))) >= depth)
+      fewer = middle;
+    else
+      more = middle;
+  }
+  float high = width * exp2(-float(fewer)), low = 0.5 * high;
+  for (int i = 0; i < 24; ++i)
+  {
+    float middle = 0.5 * (low + high);
+    if (CubicIntegral(tau, middle) < depth)
+      low = middle;
+    else
+      high = middle;
+  }
+  return high;
+}
+
 vec4 TrilinearAlongSegment(float f[8], vec3 xi0, vec3 xi1)
 {
   float a000 = f[0], a100 = f[1] - f[0], a010 = f[3] - f[0], a001 = f[4] - f[0];
@@ -417,9 +443,15 @@ void IntegratePieceAccurate(vec4 c, float len, float u0, float u1)
   if (!(totalDepth > 0.0))
     return;
   int pieces = int(clamp(ceil(4.0 * totalDepth), 1.0, 16.0));
+  // A dense piece: equal widths would leave every sub-piece deep, and the thin front layer all the
+  // light comes from between the Gauss nodes (black). There sub-piece k ends where the depth reaches
+  // k + 1; behind the last, the transmittance is below exp(-16) and only the depth is composited.
+  bool dense = totalDepth > 16.0;
+  float w1 = 0.0;
   for (int k = 0; k < pieces; ++k)
   {
-    float w0 = width * float(k) / float(pieces), w1 = width * float(k + 1) / float(pieces);
+    float w0 = w1;
+    w1 = dense ? WidthOfDepth(tau, width, float(k + 1)) : width * float(k + 1) / float(pieces);
     float depthBefore = CubicIntegral(tau, w0);
     float halfWidth = 0.5 * (w1 - w0), centre = 0.5 * (w0 + w1);
     vec3 pieceColour = vec3(0.0);
@@ -433,6 +465,8 @@ void IntegratePieceAccurate(vec4 c, float len, float u0, float u1)
     }
     Composite(pieceColour * halfWidth, CubicIntegral(tau, w1) - depthBefore);
   }
+  if (dense)
+    Composite(vec3(0.0), totalDepth - CubicIntegral(tau, w1));
 }
 
 // The segment's split points, ascending, and the isosurface each is on (or -1).
