@@ -26,14 +26,21 @@ namespace uvvtk
 /// colour (every channel) and opacity at a quarter, half and three quarters of it, into at most
 /// `maximumSubdivisions` pieces: the piecewise-linear model follows the curves, with nodes only where
 /// they bend (every node is a split point of every ray integral, so their number is frame time).
-/// Returns no nodes when the property has no opacity function.
+/// An opacity function without nodes (VTK evaluates it to zero everywhere) gives one transparent
+/// node, so every renderer draws nothing of the volume but its isosurfaces, as for any invisible one.
+/// Returns no nodes only without a property.
 inline std::vector<uv::TransferFunction::Node> TransferFunctionNodes(
   vtkVolumeProperty* property, int maximumSubdivisions = 32, double tolerance = 2e-3)
 {
   std::vector<uv::TransferFunction::Node> nodes;
   vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
-  if (!opacity || opacity->GetSize() == 0)
+  if (!opacity)
   {
+    return nodes;
+  }
+  if (opacity->GetSize() == 0)
+  {
+    nodes.push_back({ 0.0, glm::dvec3(0.0), 0.0 });
     return nodes;
   }
   const bool gray = property->GetColorChannels(0) == 1;
