@@ -12,6 +12,7 @@ the case's bound, and the reference's covered pixels covered.
 ctest runs a small fixed set (stress.quick). Run with the VTK build's Python path and a display, as
 the Python tests are."""
 import argparse
+import itertools
 import math
 import os
 import random
@@ -22,12 +23,19 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "Python"))
 
-MESHES = ("tetrahedra", "hexahedra", "twisted_hexahedra", "hex_dominant", "collapsed_layers", "jittered_tetrahedra")
-SCALARS = ("smooth", "constant", "huge_range", "tiny_range", "some_nan", "int8", "uint16", "cell_data")
-PLACEMENTS = ("unit", "offset_1e6", "scale_1e-6", "scale_1e6")
-CAMERAS = ("outside", "parallel", "inside", "on_boundary_face", "near_plane_inside", "axis_aligned", "far_away")
-FUNCTIONS = ("ramp", "spike", "all_opaque", "all_transparent", "single_node")
+MESHES = ("tetrahedra", "hexahedra", "twisted_hexahedra", "hex_dominant", "collapsed_layers", "jittered_tetrahedra",
+          "slivers", "flat_tetrahedra", "inverted_tetrahedra", "inverted_hexahedra", "duplicate_points_tetrahedra",
+          "duplicate_points_hexahedra", "tangled_tetrahedra", "with_2d_1d_cells")
+SCALARS = ("smooth", "constant", "huge_range", "tiny_range", "some_nan", "all_nan", "some_inf", "int8", "uint16",
+           "int64", "uint64", "float32", "cell_data")
+PLACEMENTS = ("unit", "offset_1e6", "offset_1e9", "scale_1e-6", "scale_1e-9", "scale_1e6", "scale_1e12")
+CAMERAS = ("outside", "parallel", "inside", "on_boundary_face", "on_vertex", "grazing", "near_plane_inside",
+           "axis_aligned", "far_away")
+FUNCTIONS = ("ramp", "spike", "all_opaque", "all_transparent", "single_node", "empty", "unit_distance_1e-9",
+             "unit_distance_1e9")
 SIZES = (1, 17, 48)
+AXES = {"mesh": MESHES, "scalars": SCALARS, "placement": PLACEMENTS, "camera": CAMERAS, "function": FUNCTIONS,
+        "size": SIZES}
 TIMEOUT_S = 120
 
 # RMSE against the reference each case must stay within: loose enough for the mappers' stated
@@ -54,45 +62,161 @@ def known_limit(case, mapper):
 def choose(seed, number):
     """The case's choice on every axis."""
     rng = random.Random(seed * 100003 + number)
-    return {"mesh": rng.choice(MESHES), "scalars": rng.choice(SCALARS), "placement": rng.choice(PLACEMENTS),
-            "camera": rng.choice(CAMERAS), "function": rng.choice(FUNCTIONS), "size": rng.choice(SIZES)}
+    return {axis: rng.choice(choices) for axis, choices in AXES.items()}
 
 
 def build_mesh(case):
     from fixtures import analytic, analytic_hexahedra, hex_dominant
     from unstructuredvolume import vtkAnalyticMeshSource
     kind = case["mesh"]
+    base = kind.rsplit("_", 1)[-1]
     if kind == "tetrahedra":
-        mesh = analytic(5)
-    elif kind == "jittered_tetrahedra":
-        mesh = analytic(5, distortion=vtkAnalyticMeshSource.JITTER)
-    elif kind == "hexahedra":
-        mesh = analytic_hexahedra(5)
-    elif kind == "twisted_hexahedra":
-        mesh = analytic_hexahedra(5, distortion=vtkAnalyticMeshSource.TWIST)
-    elif kind == "hex_dominant":
-        mesh = hex_dominant(5)
-    else:  # every other layer of a hexahedral grid collapsed to zero thickness
-        mesh = analytic_hexahedra(6)
-        points = mesh.GetPoints()
-        layers = sorted({round(points.GetPoint(i)[2], 9) for i in range(points.GetNumberOfPoints())})
-        for i in range(points.GetNumberOfPoints()):
-            x, y, z = points.GetPoint(i)
-            k = layers.index(round(z, 9))
-            if k % 2:
-                points.SetPoint(i, x, y, layers[k - 1])
+        return analytic(5)
+    if kind == "jittered_tetrahedra":
+        return analytic(5, distortion=vtkAnalyticMeshSource.JITTER)
+    if kind == "hexahedra":
+        return analytic_hexahedra(5)
+    if kind == "twisted_hexahedra":
+        return analytic_hexahedra(5, distortion=vtkAnalyticMeshSource.TWIST)
+    if kind == "hex_dominant":
+        return hex_dominant(5)
+    if kind == "collapsed_layers":
+        return collapse_layers(analytic_hexahedra(6))
+    if kind == "flat_tetrahedra":
+        return collapse_layers(analytic(6))
+    if kind == "slivers":
+        return delaunay_slivers()
+    source = analytic(4) if base == "tetrahedra" else analytic_hexahedra(4)
+    if kind.startswith("inverted"):
+        return invert_every_other_cell(source)
+    if kind.startswith("duplicate_points"):
+        return points_of_their_own(source)
+    if kind == "tangled_tetrahedra":
+        return every_cell_twice(source)
+    return with_lower_dimensional_cells(analytic(4))
+
+
+def collapse_layers(mesh):
+    """Every other layer of the grid's points moved onto the layer below: zero-thickness cells."""
+    points = mesh.GetPoints()
+    layers = sorted({round(points.GetPoint(i)[2], 9) for i in range(points.GetNumberOfPoints())})
+    for i in range(points.GetNumberOfPoints()):
+        x, y, z = points.GetPoint(i)
+        k = layers.index(round(z, 9))
+        if k % 2:
+            points.SetPoint(i, x, y, layers[k - 1])
     return mesh
 
 
+def field_at(x, y, z):
+    return 0.5 + 0.3 * math.sin(2.0 * x) * math.cos(1.5 * y) + 0.2 * z
+
+
+def delaunay_slivers():
+    """vtkDelaunay3D of a regular 7^3 lattice moved by a millionth of its spacing: the lattice's
+    co-spherical points make flat slivers (tetrahedra of almost no volume) all through the mesh."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkFiltersCore import vtkDelaunay3D
+    rng = random.Random(5)
+    points, values = vtkPoints(), vtkDoubleArray()
+    for k in range(7):
+        for j in range(7):
+            for i in range(7):
+                p = [-1.0 + c / 3.0 + 1e-6 * rng.uniform(-1, 1) / 3.0 for c in (i, j, k)]
+                points.InsertNextPoint(*p)
+                values.InsertNextValue(field_at(*p))
+    cloud = vtkPolyData()
+    cloud.SetPoints(points)
+    cloud.GetPointData().SetScalars(values)
+    delaunay = vtkDelaunay3D()
+    delaunay.SetInputData(cloud)
+    delaunay.Update()
+    return delaunay.GetOutput()
+
+
+def cells_of(mesh):
+    from vtkmodules.vtkCommonCore import vtkIdList
+    ids = vtkIdList()
+    for c in range(mesh.GetNumberOfCells()):
+        mesh.GetCellPoints(c, ids)
+        yield mesh.GetCellType(c), [ids.GetId(k) for k in range(ids.GetNumberOfIds())]
+
+
+def rebuilt(mesh, cells, points=None, values=None):
+    """An unstructured grid of (type, ids) cells over `points` and `values` (default: the mesh's)."""
+    from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(points or mesh.GetPoints())
+    grid.GetPointData().SetScalars(values or mesh.GetPointData().GetScalars())
+    for kind, ids in cells:
+        grid.InsertNextCell(kind, len(ids), ids)
+    return grid
+
+
+def invert_every_other_cell(mesh):
+    """Every other cell turned inside out (negative volume) over the same space: a tetrahedron's first
+    two corners swapped, a hexahedron's top and bottom faces swapped."""
+    from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON
+    cells = []
+    for c, (kind, ids) in enumerate(cells_of(mesh)):
+        if c % 2:
+            ids = ids[4:] + ids[:4] if kind == VTK_HEXAHEDRON else [ids[1], ids[0]] + ids[2:]
+        cells.append((kind, ids))
+    return rebuilt(mesh, cells)
+
+
+def points_of_their_own(mesh):
+    """Every cell on copies of its points, as exporters of discontinuous fields write meshes: no two
+    cells share a point id, so no face is shared by id though every interior face is by position."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+    points, values = vtkPoints(), vtkDoubleArray()
+    source = mesh.GetPointData().GetScalars()
+    cells = []
+    for kind, ids in cells_of(mesh):
+        copies = []
+        for i in ids:
+            copies.append(points.InsertNextPoint(mesh.GetPoint(i)))
+            values.InsertNextValue(source.GetValue(i))
+        cells.append((kind, copies))
+    return rebuilt(mesh, cells, points, values)
+
+
+def every_cell_twice(mesh):
+    """Each cell twice over the same points: coincident (tangled) cells whose media superpose."""
+    cells = []
+    for cell in cells_of(mesh):
+        cells += [cell, cell]
+    return rebuilt(mesh, cells)
+
+
+def with_lower_dimensional_cells(mesh):
+    """The tetrahedra with triangles on some of their faces, lines along some edges and vertex and
+    polyvertex cells mixed in between them: only the 3D cells hold the volume."""
+    from vtkmodules.vtkCommonDataModel import VTK_LINE, VTK_POLY_VERTEX, VTK_TRIANGLE, VTK_VERTEX
+    cells = []
+    for c, (kind, ids) in enumerate(cells_of(mesh)):
+        if c % 5 == 0:
+            cells.append((VTK_TRIANGLE, ids[:3]))
+        if c % 7 == 0:
+            cells.append((VTK_LINE, ids[1:3]))
+        if c % 11 == 0:
+            cells += [(VTK_VERTEX, ids[:1]), (VTK_POLY_VERTEX, ids[:3])]
+        cells.append((kind, ids))
+    return rebuilt(mesh, cells)
+
+
 def apply_scalars(mesh, case):
-    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkTypeInt8Array, vtkTypeUInt16Array
+    from vtkmodules.vtkCommonCore import (vtkDoubleArray, vtkFloatArray, vtkTypeInt8Array, vtkTypeInt64Array,
+                                          vtkTypeUInt16Array, vtkTypeUInt64Array)
     from vtkmodules.vtkFiltersCore import vtkPointDataToCellData
     source = mesh.GetPointData().GetScalars()
     values = [source.GetValue(i) for i in range(source.GetNumberOfTuples())]
     low, high = min(values), max(values)
     unit = [(v - low) / (high - low) for v in values]
     kind = case["scalars"]
-    array = {"int8": vtkTypeInt8Array, "uint16": vtkTypeUInt16Array}.get(kind, vtkDoubleArray)()
+    array = {"int8": vtkTypeInt8Array, "uint16": vtkTypeUInt16Array, "int64": vtkTypeInt64Array,
+             "uint64": vtkTypeUInt64Array, "float32": vtkFloatArray}.get(kind, vtkDoubleArray)()
     array.SetName("f")
     for i, u in enumerate(unit):
         if kind == "constant":
@@ -103,6 +227,14 @@ def apply_scalars(mesh, case):
             v = 1.0 + 1e-12 * u
         elif kind == "some_nan":
             v = float("nan") if i % 17 == 5 else u
+        elif kind == "all_nan":
+            v = float("nan")
+        elif kind == "some_inf":
+            v = (float("inf"), float("-inf"))[i % 2] if i % 13 == 4 else u
+        elif kind == "int64":  # beyond a double's integers: 2^62 steps of one
+            v = 2 ** 62 - 1000 + round(2000 * u)
+        elif kind == "uint64":  # the top of the unsigned range
+            v = 2 ** 64 - 1 - round(1e15 * u)
         elif kind == "int8":
             v = round(-100 + 200 * u)
         elif kind == "uint16":
@@ -128,10 +260,11 @@ def place(mesh, case):
     if kind == "unit":
         return mesh
     transform = vtkTransform()
-    if kind == "offset_1e6":
-        transform.Translate(1e6, -2e6, 3e6)
+    if kind.startswith("offset"):
+        offset = float(kind.split("_")[1])
+        transform.Translate(offset, -2 * offset, 3 * offset)
     else:
-        factor = 1e-6 if kind == "scale_1e-6" else 1e6
+        factor = float(kind.split("_")[1])
         transform.Scale(factor, factor, factor)
     moved = vtkTransformFilter()
     moved.SetTransform(transform)
@@ -145,7 +278,7 @@ def scalar_range(mesh):
     data = mesh.GetPointData().GetScalars() or mesh.GetCellData().GetScalars()
     values = [data.GetValue(i) for i in range(data.GetNumberOfTuples())]
     finite = [v for v in values if math.isfinite(v)]
-    return min(finite), max(finite)
+    return (min(finite), max(finite)) if finite else (0.0, 1.0)
 
 
 def make_property(mesh, case):
@@ -156,6 +289,10 @@ def make_property(mesh, case):
     unit = 0.3 * mesh.GetLength()
     kind = case["function"]
     colours = ((low, (0.2, 0.3, 0.9)), (high, (0.9, 0.3, 0.1)))
+    if kind == "empty":  # no node at all: VTK evaluates both functions to zero
+        return property_from_nodes((), (), unit)
+    if kind.startswith("unit_distance"):
+        return property_from_nodes(((low, 0.0), (high, 0.8)), colours, float(kind.split("_")[-1]))
     if kind == "spike":
         centre = low + 0.6 * (high - low)
         opacity = ((low, 0.0), (centre - 0.01 * (high - low), 0.0), (centre, 0.9), (centre + 0.01 * (high - low), 0.0),
@@ -185,6 +322,27 @@ def make_camera(mesh, case):
         camera.SetClippingRange(0.01 * size, 10 * (distance + 1) * size)  # in proportion, as VTK's reset
         return camera
     camera = vtkCamera()
+    if kind == "on_vertex":
+        # Exactly on the mesh's point nearest its lowest corner, looking at the centre.
+        corner = min(range(mesh.GetNumberOfPoints()),
+                     key=lambda i: sum((mesh.GetPoint(i)[a] - bounds[2 * a]) ** 2 for a in range(3)))
+        camera.SetPosition(mesh.GetPoint(corner))
+        camera.SetFocalPoint(centre)
+        camera.SetViewUp(0, 0, 1)
+        camera.SetViewAngle(60)
+        camera.SetClippingRange(0.005 * size, 5 * size)
+        return camera
+    if kind == "grazing":
+        # The view direction in the plane of a layer of points near the middle, so the middle row of
+        # pixels (odd sizes) runs along the faces in that plane.
+        middle = min(range(mesh.GetNumberOfPoints()), key=lambda i: abs(mesh.GetPoint(i)[2] - centre[2]))
+        z = mesh.GetPoint(middle)[2]
+        camera.SetPosition(centre[0], bounds[2] - 1.5 * size, z)
+        camera.SetFocalPoint(centre[0], centre[1], z)
+        camera.SetViewUp(0, 0, 1)
+        camera.SetViewAngle(30)
+        camera.SetClippingRange(0.01 * size, 5 * size)
+        return camera
     # Inside, on the boundary face x = xmin, or just outside it with the near plane beyond it.
     x = {"inside": centre[0] - 0.2 * size, "on_boundary_face": bounds[0],
          "near_plane_inside": bounds[0] - 0.003 * size}[kind]
@@ -203,7 +361,8 @@ def mappers_for(mesh):
     from unstructuredvolume import (vtkBarycentricShellMapper, vtkHexahedralRayCastMapper,
                                     vtkPreIntegratedTetrahedraMapper)
     found = [("hexahedral", vtkHexahedralRayCastMapper, {})]
-    if all(mesh.GetCellType(c) == VTK_TETRA for c in range(mesh.GetNumberOfCells())):
+    solid = [mesh.GetCellType(c) for c in range(mesh.GetNumberOfCells()) if mesh.GetCell(c).GetCellDimension() == 3]
+    if all(kind == VTK_TETRA for kind in solid):
         found += [("tetrahedra", vtkPreIntegratedTetrahedraMapper, {}),
                   ("shells", vtkBarycentricShellMapper, {}),
                   ("cell projection", vtkBarycentricShellMapper, {"RenderMode": 1})]
@@ -249,9 +408,18 @@ def run_case(seed, number):
     return failures
 
 
-def run_all(seed, count):
+def run_all(seed, count, where=()):
+    """Runs `count` cases, each in its own process; with `where` ("axis=value" ...), the first `count`
+    case numbers whose choices match."""
     failed = known_count = 0
-    for number in range(count):
+    wanted = dict(condition.split("=", 1) for condition in where)
+    for axis, value in wanted.items():
+        choices = AXES.get(axis)
+        if choices is None or value not in map(str, choices):
+            sys.exit(f"--where {axis}={value}: the axes are {', '.join(AXES)}; {axis}'s values: {choices}")
+    numbers = (n for n in itertools.count()
+               if all(str(choose(seed, n)[axis]) == value for axis, value in wanted.items()))
+    for _, number in zip(range(count), numbers):
         case = choose(seed, number)
         start = time.time()
         try:
@@ -279,13 +447,15 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--cases", type=int, default=12, help="how many cases, each in its own process")
     parser.add_argument("--case", type=int, default=None, help="run this one case here")
+    parser.add_argument("--where", action="append", default=[], metavar="AXIS=VALUE",
+                        help="only cases with this choice (e.g. mesh=slivers); repeatable")
     args = parser.parse_args()
     if args.case is not None:
         failures = run_case(args.seed, args.case)
         for failure in failures:
             print(failure if failure.startswith("KNOWN") else "FAIL " + failure)
         sys.exit(1 if any(not failure.startswith("KNOWN") for failure in failures) else 0)
-    sys.exit(0 if run_all(args.seed, args.cases) else 1)
+    sys.exit(0 if run_all(args.seed, args.cases, args.where) else 1)
 
 
 if __name__ == "__main__":
