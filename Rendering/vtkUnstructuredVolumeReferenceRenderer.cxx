@@ -6,6 +6,7 @@
 #include "uvLinearCellSplit.h"
 #include "uvOpticalModel.h"
 #include "uvRayCellGeometry.h"
+#include "uvScalarNormalisation.h"
 #include "uvLatticeBasis.h"
 #include "vtkUnstructuredVolumeScalar.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
@@ -351,7 +352,8 @@ struct Mesh
 
   bool OnCells() const { return !this->CellValues.empty(); }
 
-  void LoadPoints(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
+  /// Points relative to the bounds' centre, scalars relative to `offset`.
+  void LoadPoints(vtkDataSet* input, const uvvtk::RenderedScalar& scalar, double offset)
   {
     double bounds[6];
     input->GetBounds(bounds);
@@ -364,11 +366,11 @@ struct Mesh
       input->GetPoint(i, &this->Points[i].x);
       this->Points[i] -= this->Centre;
       if (!scalar.OnCells)
-        this->Values[i] = scalar(i);
+        this->Values[i] = scalar(i) - offset;
     }
     this->CellValues.resize(scalar.OnCells ? input->GetNumberOfCells() : 0);
     for (std::size_t c = 0; c < this->CellValues.size(); ++c)
-      this->CellValues[c] = scalar(static_cast<vtkIdType>(c));
+      this->CellValues[c] = scalar(static_cast<vtkIdType>(c)) - offset;
   }
 
   /// A higher-order cell's nodes, values (of a point scalar) and shape functions.
@@ -881,6 +883,18 @@ uvvtk::RenderedScalar vtkUnstructuredVolumeReferenceRenderer::FindScalar(vtkData
     input, mode, VTK_GET_ARRAY_BY_NAME, -1, name ? name : "", this->VolumeProperty);
 }
 
+namespace
+{
+/// The least finite value of the rendered scalar (0 when there is none).
+double ScalarOffset(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
+{
+  const vtkIdType count = scalar.OnCells ? input->GetNumberOfCells() : input->GetNumberOfPoints();
+  return uv::ScalarNormalisation::OfFiniteValues(
+    static_cast<std::size_t>(count), [&](std::size_t i) { return scalar(static_cast<vtkIdType>(i)); })
+    .Offset;
+}
+} // namespace
+
 bool vtkUnstructuredVolumeReferenceRenderer::Render()
 {
   const int width = this->ImageSize[0], height = this->ImageSize[1];
@@ -918,14 +932,19 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
                         << " on the input.");
     return false;
   }
-  const std::vector<uv::TransferFunction::Node> nodes = uvvtk::TransferFunctionNodes(this->VolumeProperty);
+  std::vector<uv::TransferFunction::Node> nodes = uvvtk::TransferFunctionNodes(this->VolumeProperty);
   if (nodes.empty())
   {
     vtkErrorMacro("The volume property has no scalar opacity function.");
     return false;
   }
+  // Scalars, nodes and isovalues are taken relative to the least finite scalar: a field of small
+  // range far from zero (int64 values near 2^62) keeps its digits through interpolation.
+  const double offset = ScalarOffset(input, scalar);
+  for (uv::TransferFunction::Node& node : nodes)
+    node.Scalar -= offset;
   const uv::TransferFunction transfer(nodes);
-  if (transfer.IsInvisible() && this->Isosurfaces->Drawn(0.0, 1.0).empty())
+  if (transfer.IsInvisible() && this->Isosurfaces->Drawn(offset, 1.0).empty())
   {
     return true;
   }
@@ -936,7 +955,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     return false;
   }
   Mesh mesh;
-  mesh.LoadPoints(input, scalar);
+  mesh.LoadPoints(input, scalar, offset);
   if (!mesh.LoadCells(input))
   {
     vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges, pyramids, "
@@ -954,7 +973,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     vtkWarningMacro("Left out " << mesh.NonFinite << " cells with non-finite scalars.");
   }
   CellFaceSurfaces surfaces;
-  surfaces.Drawn = this->Isosurfaces->Drawn(0.0, 1.0);
+  surfaces.Drawn = this->Isosurfaces->Drawn(offset, 1.0);
   surfaces.Shading = this->VolumeProperty->GetAmbient() + this->VolumeProperty->GetDiffuse();
   surfaces.Touching = 1e-7 * input->GetLength(); // shared faces meet exactly; internal walls nearly
   if (!surfaces.Drawn.empty() && !mesh.OnCells())

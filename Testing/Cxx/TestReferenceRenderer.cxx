@@ -13,6 +13,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
 
@@ -297,6 +298,53 @@ TEST(ReferenceRenderer, OffsetsChangeNothing)
         << "offset " << offset << (grazing ? ", grazing" : "");
     }
   }
+}
+
+TEST(ReferenceRenderer, ScalarOffsetsChangeNothing)
+{
+  // The same field as 64-bit integers near 2^62 (steps of 1024, which doubles hold exactly there)
+  // and as small doubles, with the transfer function moved along: the reference renders both the
+  // same (before, interpolating values near 4.6e18 in double lost a thousandth of the range).
+  vtkNew<vtkAnalyticMeshSource> source;
+  source->SetResolution(4, 4, 4);
+  source->SetDistortion(vtkAnalyticMeshSource::TWIST);
+  source->Update();
+  vtkDataArray* field = source->GetOutput()->GetPointData()->GetScalars();
+  const double base = std::ldexp(1.0, 62);
+  const auto steps = [&](vtkIdType i) { return 1024.0 * std::round(1024.0 * field->GetComponent(i, 0)); };
+  vtkNew<vtkTypeInt64Array> far;
+  vtkNew<vtkDoubleArray> near;
+  for (vtkIdType i = 0; i < field->GetNumberOfTuples(); ++i)
+  {
+    far->InsertNextValue(static_cast<vtkTypeInt64>(base) + static_cast<vtkTypeInt64>(steps(i)));
+    near->InsertNextValue(steps(i));
+  }
+  const auto mesh = [&](vtkDataArray* values) {
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    grid->ShallowCopy(source->GetOutput());
+    grid->GetPointData()->SetScalars(values);
+    return grid;
+  };
+  const auto property = [](double offset) {
+    auto moved = Property({}, 0.4);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    vtkNew<vtkColorTransferFunction> color;
+    for (double u : { 0.0, 0.375, 0.625, 1.0 }) // nodes on multiples of 1024 too
+    {
+      opacity->AddPoint(offset + u * 1024.0 * 1024.0, u == 0.625 ? 0.9 : 0.2 * u);
+      color->AddRGBPoint(offset + u * 1024.0 * 1024.0, u, 0.5, 1.0 - u);
+    }
+    moved->SetScalarOpacity(opacity);
+    moved->SetColor(color);
+    return moved;
+  };
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(2.5, 3.0, 4.0);
+  camera->SetClippingRange(0.5, 20.0);
+  vtkSmartPointer<vtkImageData> expected = Render(mesh(near), property(0.0), camera, 24);
+  vtkSmartPointer<vtkImageData> image = Render(mesh(far), property(base), camera, 24);
+  EXPECT_GT(expected->GetPointData()->GetScalars()->GetRange(3)[1], 0.5);
+  EXPECT_LT(MaxDifference(expected, image), 1e-6);
 }
 
 TEST(ReferenceRenderer, HalvingTheToleranceChangesNoPixelByMoreThan1e6)
