@@ -52,10 +52,22 @@ def known_limit(case, mapper):
         # (llvmpipe: to 1/256 pixel), so the faces or tetrahedra it gives the pixel's centre can be
         # ones the exact ray misses.
         return "sub-pixel mesh: snapped corners"
-    if mapper == "shells" and case["function"] == "all_opaque":
+    if mapper == "tetrahedra" and case["size"] == 1:
+        # Cells a tenth of a pixel across: the segment ends interpolated over projected triangles
+        # whose corners the rasteriser snapped are off by a few percent of the cell.
+        return "tetrahedra: segment ends over snapped sub-pixel triangles"
+    if mapper == "shells" and case["function"] in ("all_opaque", "unit_distance_1e-9"):
         # A silhouette ray whose path through the mesh lies between two samples is not sampled, and
         # under an opaque function even that short path covers the pixel in the reference.
         return "shells: silhouette paths between two samples"
+    if mapper in ("hexahedral", "shells") and case["mesh"] == "tangled_tetrahedra":
+        # The optical model superposes coincident cells; the walk enters one of them, and a shell
+        # sample reads the one cell whose faces won the depth test.
+        return "coincident cells drawn once"
+    if case["camera"] == "grazing" and case["size"] % 2 and mapper in ("hexahedral", "shells", "cell projection"):
+        # The middle pixel row's rays (odd sizes) run inside a plane of faces: the walk's exit face
+        # and the barycentric shells' face lookup are ambiguous for a ray exactly in a face.
+        return "rays lying in a face plane"
     return None
 
 
