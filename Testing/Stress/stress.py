@@ -64,9 +64,14 @@ def known_limit(case, mapper):
         # The optical model superposes coincident cells; the walk enters one of them, and a shell
         # sample reads the one cell whose faces won the depth test.
         return "coincident cells drawn once"
-    if case["camera"] == "grazing" and case["size"] % 2 and mapper in ("hexahedral", "shells", "cell projection"):
-        # The middle pixel row's rays (odd sizes) run inside a plane of faces: the walk's exit face
-        # and the barycentric shells' face lookup are ambiguous for a ray exactly in a face.
+    if case["camera"] in ("on_vertex", "axis_aligned") and case["size"] % 2 and mapper in ("shells", "cell projection"):
+        # The middle pixel's ray (odd sizes) runs through a line of the lattice's vertices: the
+        # barycentric lookup of the fragment's tetrahedron is ambiguous at each.
+        return "rays through vertices"
+    if case["camera"] in ("grazing", "axis_aligned") and case["size"] % 2 and mapper in ("hexahedral", "shells",
+                                                                                        "cell projection"):
+        # The middle pixel row's or column's rays (odd sizes) run inside a plane of faces: the walk's
+        # exit face and the barycentric shells' face lookup are ambiguous for a ray exactly in a face.
         return "rays lying in a face plane"
     return None
 
