@@ -45,8 +45,14 @@ RMSE_BOUND = 0.03
 COVERED_ALPHA = 0.2  # a pixel the reference makes this opaque must be drawn by every mapper
 
 
-def known_limit(case, mapper):
-    """Why `mapper` is known to fail `case`, or None. Each is a bug left open, reported as KNOWN."""
+def known_limit(case, mapper, error, missed):
+    """Why `mapper` is known to fail `case` with this RMSE and count of covered pixels missed, or
+    None. Each is a bug left open, reported as KNOWN."""
+    opaque = case["function"] in ("all_opaque", "unit_distance_1e-9")
+    if opaque and missed <= 2 and error <= RMSE_BOUND:
+        # Opaque at the first touch, a ray that only grazes the mesh's silhouette covers its pixel in
+        # the reference; the rasteriser may leave a pixel centre within rounding of the silhouette out.
+        return "silhouette pixels within rounding under an opaque function"
     if case["camera"] == "far_away" and case["size"] == 1:
         # The whole mesh inside a twentieth of a pixel: the rasteriser snaps projected corners
         # (llvmpipe: to 1/256 pixel), so the faces or tetrahedra it gives the pixel's centre can be
@@ -398,7 +404,6 @@ def run_case(seed, number):
     truth = expected.GetPointData().GetScalars()
     failures = []
     for name, factory, settings in mappers_for(mesh):
-        found = len(failures)
         scene = Scene(mesh, prop, camera, size, mapper=factory(), **settings)
         image = scene.render()
         if image is None or image.GetNumberOfPoints() != size * size:
@@ -412,16 +417,18 @@ def run_case(seed, number):
         rgba = image.GetPointData().GetScalars()
         if any(max(rgba.GetTuple4(p)[:3]) > rgba.GetTuple4(p)[3] + 1e-3 for p in range(rgba.GetNumberOfTuples())):
             failures.append(f"{name}: colour above alpha (not premultiplied)")
+        # Accuracy failures only may be a known limit: errors, non-finite and unpremultiplied
+        # images never are.
+        accuracy = []
         error = rmse(image, expected)[0]
         if not error <= RMSE_BOUND:
-            failures.append(f"{name}: RMSE {error:.3g} > {RMSE_BOUND}")
+            accuracy.append(f"{name}: RMSE {error:.3g} > {RMSE_BOUND}")
         missed = sum(1 for p in range(truth.GetNumberOfTuples())
                      if truth.GetTuple4(p)[3] > COVERED_ALPHA and rgba.GetTuple4(p)[3] < 0.5 * COVERED_ALPHA)
         if missed:
-            failures.append(f"{name}: {missed} covered pixels not drawn")
-        reason = known_limit(case, name)
-        if reason and len(failures) > found:
-            failures[found:] = [f"KNOWN {name}: {reason}"]
+            accuracy.append(f"{name}: {missed} covered pixels not drawn")
+        reason = known_limit(case, name, error, missed) if accuracy else None
+        failures += [f"KNOWN {name}: {reason}"] if reason else accuracy
     return failures
 
 
