@@ -775,6 +775,20 @@ class StressTests(SceneTestCase):
                     wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(32 * 32)]
                     self.assertLess(largest_difference(pixels, wanted), 0.05)
 
+    def test_delaunay_slivers_on_the_boundary(self):
+        # A flat boundary tetrahedron's centre lies in its face's plane up to rounding: turning the
+        # face's normal away from it pointed it inwards at random, and the rays entering there were lost.
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
+        from stress import delaunay_slivers
+        mesh = delaunay_slivers()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        for camera in (camera_for(mesh), camera_for(mesh, parallel=True)):
+            image, expected = HexScene(mesh, prop, camera, 24).render(), reference(mesh, prop, camera, 24)
+            self.assertLess(rmse(image, expected)[0], 5e-3)
+            pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
+            wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
+            self.assertLess(largest_difference(pixels, wanted), 0.05)
+
     def test_tangled_hexahedron_is_told_and_rendered_finite(self):
         mesh = single_hexahedron([0.1, 0.9, 0.4, 0.6, 0.8, 0.2, 1.0, 0.3])
         mesh.GetPoints().SetPoint(6, -0.2, -0.2, -1.0)  # corner 6 pushed through the opposite face
