@@ -42,7 +42,12 @@ int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out 
   float scale = abs(qa) + abs(qb) + abs(qc);
   if (!(scale > 0.0))
     return 0;
-  if (abs(qa) <= 1e-6 * scale)
+  // The coefficients go as a length squared, the discriminant as its fourth power: it underflows
+  // in float on tiny cells and overflows on huge ones. Divided by their scale, the roots stay.
+  qa /= scale;
+  qb /= scale;
+  qc /= scale;
+  if (abs(qa) <= 1e-6)
   {
     if (qb != 0.0)
       roots[rootCount++] = -qc / qb;

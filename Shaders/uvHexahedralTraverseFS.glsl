@@ -100,7 +100,7 @@ vec3 tetrahedronGradient;
 vec3 LinearFieldGradient()
 {
   mat3 edges = mat3(points[1] - points[0], points[2] - points[0], points[4] - points[0]);
-  if (abs(determinant(edges)) < 1e-30)
+  if (IsSingular(edges))
     return vec3(0.0);
   return transpose(inverse(edges)) * vec3(scalars[1] - scalars[0], scalars[2] - scalars[0], scalars[4] - scalars[0]);
 }
@@ -178,7 +178,7 @@ vec3 InverseTrilinear(vec3 x, vec3 xi)
     vec3 mapped = points[0] + mapB * r + mapC * s + mapD * t + mapE * r * s + mapF * r * t + mapG * s * t +
       mapH * r * s * t;
     mat3 jacobian = Jacobian(xi);
-    if (abs(determinant(jacobian)) < 1e-30)
+    if (IsSingular(jacobian))
       break;
     vec3 step = inverse(jacobian) * (mapped - x);
     xi = clamp(xi - step, vec3(-0.5), vec3(1.5));
@@ -201,7 +201,7 @@ vec3 InverseWedge(vec3 x)
     vec3 bottom = p0 + r * (p1 - p0) + s * (p2 - p0), top = p3 + r * (p4 - p3) + s * (p5 - p3);
     vec3 mapped = mix(bottom, top, t);
     mat3 jacobian = mat3(mix(p1 - p0, p4 - p3, t), mix(p2 - p0, p5 - p3, t), top - bottom);
-    if (abs(determinant(jacobian)) < 1e-30)
+    if (IsSingular(jacobian))
       break;
     vec3 step = inverse(jacobian) * (mapped - x);
     w = clamp(w - step, vec3(-0.5), vec3(1.5));
@@ -211,7 +211,7 @@ vec3 InverseWedge(vec3 x)
   return w;
 }
 
-/// Whether the loaded cell's map has bilinear terms/// Whether the loaded cell's map has bilinear terms: a parallelepiped's map is its frame, whose cubic
+/// Whether the loaded cell's map has bilinear terms: a parallelepiped's map is its frame, whose cubic
 /// is exact.
 bool IsCurved(HexahedronFrame frame)
 {
@@ -233,7 +233,7 @@ vec3 FieldGradient(vec3 xi)
   vec3 local = vec3(a100 + a110 * s + a101 * t + a111 * s * t, a010 + a110 * r + a011 * t + a111 * r * t,
     a001 + a101 * r + a011 * s + a111 * r * s);
   mat3 jacobian = Jacobian(xi);
-  if (abs(determinant(jacobian)) < 1e-30)
+  if (IsSingular(jacobian))
     return vec3(0.0);
   return transpose(inverse(jacobian)) * local;
 }
@@ -264,7 +264,7 @@ vec3 InterpolatedVertexGradient(vec3 x, vec3 xi)
   if (cellShape == TETRAHEDRON)
   {
     mat3 edges = mat3(points[1] - points[0], points[2] - points[0], points[4] - points[0]);
-    vec3 b = abs(determinant(edges)) < 1e-30 ? vec3(0.0) : inverse(edges) * (x - points[0]);
+    vec3 b = IsSingular(edges) ? vec3(0.0) : inverse(edges) * (x - points[0]);
     weights = float[8](1.0 - b.x - b.y - b.z, b.x, b.y, 0.0, b.z, 0.0, 0.0, 0.0);
   }
   else
@@ -694,7 +694,7 @@ void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd)
 /// block.
 bool Leaves(vec3 normal, vec3 outward, vec3 direction)
 {
-  if (!(1e-6 * dot(outward, outward) > 0.0))
+  if (!(MaxComponent(outward) > 0.0))
     return true;
   return dot(OrientedNormal(normal, outward), direction) > 0.0;
 }
@@ -781,7 +781,7 @@ int StepTowards(vec3 target, int cell, out bool inside)
       vec3 a, b, c, d;
       int corners = LoadedCellFace(f, a, b, c, d);
       vec3 normal = PatchNormal(a, b, c, d, centre);
-      violation[f] = corners < 3 ? -1.0 : dot(normal, target - a) / (length(normal) * size);
+      violation[f] = corners < 3 ? -1.0 : dot(SafeNormalize(normal), target - a) / size;
     }
     violation[0] = -InverseTrilinear(target, FrameCoordinates(MakeHexahedronFrame(points), target)).z;
   }

@@ -78,11 +78,35 @@ void EyeRay(vec2 ndc, vec3 nearPlane[3], vec3 rayDirection[3], out vec3 origin, 
   direction = normalize(rayDirection[0] + ndc.x * rayDirection[1] + ndc.y * rayDirection[2]);
 }
 
-/// A face's normal at a point, turned to the side of `outward` (the face's mean outward normal). A
-/// vanishing normal (a collapsed edge) is replaced by `outward`.
+/// The largest absolute component: a vector's size without squares, which underflow or overflow
+/// in float on meshes a billionth or a trillion times the unit.
+float MaxComponent(vec3 v)
+{
+  return max(abs(v.x), max(abs(v.y), abs(v.z)));
+}
+
+/// v at unit length, by way of v over its largest component (normalize squares its components).
+vec3 SafeNormalize(vec3 v)
+{
+  float size = MaxComponent(v);
+  return size > 0.0 ? normalize(v / size) : vec3(0.0);
+}
+
+/// Whether m is singular up to float rounding of its columns' size (an absolute bound on the
+/// determinant, a cubed length, would hold every cell of a tiny mesh singular).
+bool IsSingular(mat3 m)
+{
+  float size = max(MaxComponent(m[0]), max(MaxComponent(m[1]), MaxComponent(m[2])));
+  return !(size > 0.0) || abs(determinant(m / size)) < 1e-30;
+}
+
+/// A face's normal at a point, turned to the side of `outward` (the face's mean outward normal), at
+/// no particular length. A vanishing normal (a collapsed edge) is replaced by `outward`. Both are
+/// scaled to a largest component of 1 first: their dot product goes as a length to the fourth.
 vec3 OrientedNormal(vec3 normal, vec3 outward)
 {
-  float tiny = 1e-6 * dot(outward, outward);
-  normal = dot(normal, normal) > tiny ? normal : outward;
-  return dot(normal, outward) < 0.0 ? -normal : normal;
+  float outwardSize = MaxComponent(outward), normalSize = MaxComponent(normal);
+  vec3 o = outwardSize > 0.0 ? outward / outwardSize : vec3(0.0);
+  vec3 n = normalSize > 1e-3 * outwardSize ? normal / normalSize : o;
+  return dot(n, o) < 0.0 ? -n : n;
 }

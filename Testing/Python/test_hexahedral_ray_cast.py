@@ -748,6 +748,47 @@ class StressTests(SceneTestCase):
                 error, _ = rmse(scene.render(), reference(mesh, prop, camera, 48))
                 self.assertLess(error, 5e-3)
 
+    def test_curved_faces_a_billionth_and_a_trillion_times_the_size(self):
+        # A curved face's ray quadratic has coefficients of a squared length and a discriminant of
+        # its fourth power, which underflows (a billionth) or overflows (a trillion) in float, as did
+        # a normal's orientation test: twisted and wedge/pyramid faces lost rays there.
+        from vtkmodules.vtkCommonTransforms import vtkTransform
+        from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
+        for name, source in (("twisted", analytic_hexahedra(5, distortion=vtkAnalyticMeshSource.TWIST)),
+                             ("hex-dominant", hex_dominant(5))):
+            for factor in (1e-9, 1e12):
+                with self.subTest(mesh=name, factor=factor):
+                    transform = vtkTransform()
+                    transform.Scale(factor, factor, factor)
+                    scaled = vtkTransformFilter()
+                    scaled.SetTransform(transform)
+                    scaled.SetInputData(source)
+                    scaled.Update()
+                    mesh = scaled.GetOutput()
+                    prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+                    prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
+                    camera = camera_for(mesh)
+                    camera.SetClippingRange(0.01 * mesh.GetLength(), 10 * mesh.GetLength())
+                    image, expected = HexScene(mesh, prop, camera, 32).render(), reference(mesh, prop, camera, 32)
+                    self.assertLess(rmse(image, expected)[0], 5e-3)
+                    pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(32 * 32)]
+                    wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(32 * 32)]
+                    self.assertLess(largest_difference(pixels, wanted), 0.05)
+
+    def test_delaunay_slivers_on_the_boundary(self):
+        # A flat boundary tetrahedron's centre lies in its face's plane up to rounding: turning the
+        # face's normal away from it pointed it inwards at random, and the rays entering there were lost.
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
+        from stress import delaunay_slivers
+        mesh = delaunay_slivers()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        for camera in (camera_for(mesh), camera_for(mesh, parallel=True)):
+            image, expected = HexScene(mesh, prop, camera, 24).render(), reference(mesh, prop, camera, 24)
+            self.assertLess(rmse(image, expected)[0], 5e-3)
+            pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
+            wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
+            self.assertLess(largest_difference(pixels, wanted), 0.05)
+
     def test_tangled_hexahedron_is_told_and_rendered_finite(self):
         mesh = single_hexahedron([0.1, 0.9, 0.4, 0.6, 0.8, 0.2, 1.0, 0.3])
         mesh.GetPoints().SetPoint(6, -0.2, -0.2, -1.0)  # corner 6 pushed through the opposite face
