@@ -139,20 +139,20 @@ def configured(factory, **settings):
 
 # ---------------------------------------------------------------------------------------------
 # Scenes
-def wavelet_through(conversion):
-    """VTK's wavelet on 64^3 points through `conversion` (a filter), updated."""
+def wavelet_through(conversion, points=64):
+    """VTK's wavelet on points^3 points through `conversion` (a filter), updated."""
     wavelet = vtkRTAnalyticSource()
-    wavelet.SetWholeExtent(-32, 31, -32, 31, -32, 31)
+    wavelet.SetWholeExtent(*(-points // 2, points // 2 - 1) * 3)
     conversion.SetInputConnection(wavelet.GetOutputPort())
     conversion.Update()
     return conversion.GetOutput()
 
 
-def wavelet_tets():
-    """The wavelet, five tetrahedra per cell: 1.25 M tetrahedra."""
+def wavelet_tets(points=64):
+    """The wavelet, five tetrahedra per cell: 1.25 M tetrahedra (10.2 M on 128^3 points)."""
     split = vtkHexahedraToTetrahedra()
     split.SetSplitModeToFiveTetrahedra()
-    return wavelet_through(split)
+    return wavelet_through(split, points)
 
 
 def wavelet_hexahedra():
@@ -218,6 +218,9 @@ def with_cell_data(load):
     return loaded
 
 
+ON_REQUEST = ("wavelet128_tets", "wavelet128_tets_colormap256")  # too large for every run: named in --scenes
+
+
 def scenes(quick):
     """(name, loader, scalar, transfer-function maker, unit distance as a fraction of the diagonal[,
     subdivision level of a higher-order mesh: the mappers draw that, the reference the mesh itself]).
@@ -239,6 +242,9 @@ def scenes(quick):
     found.append(("wavelet_tets_colormap256", wavelet_tets, "RTData", sampled_color_map, 0.05))
     # Dense and nearly opaque: most rays saturate well inside the mesh (early termination).
     found.append(("wavelet_tets_opaque", wavelet_tets, "RTData", smooth_ramp, 0.002))
+    # 10.2 M tetrahedra, with the ramp and the sampled map: run only when --scenes names them.
+    found.append(("wavelet128_tets", lambda: wavelet_tets(128), "RTData", smooth_ramp, 0.05))
+    found.append(("wavelet128_tets_colormap256", lambda: wavelet_tets(128), "RTData", sampled_color_map, 0.05))
     # Empty space: the same wavelet's hexahedra with only the top tenth of the range visible.
     found.append(("wavelet_hex_top_tenth", wavelet_hexahedra, "RTData", top_tenth, 0.05))
     found.append(("ml_twisted_hex_cells", with_cell_data(lambda: analytic(resolution, ml, twist, hexahedra)),
@@ -780,7 +786,7 @@ def main():
 
     rows = []
     for scene, load, scalar, maker, unit_fraction, *level in scenes(args.quick):
-        if wanted_scenes and scene not in wanted_scenes:
+        if (wanted_scenes and scene not in wanted_scenes) or (scene in ON_REQUEST and not wanted_scenes):
             continue
         mesh, scene_image = load(), None
         if mesh.IsA("vtkImageData"):
