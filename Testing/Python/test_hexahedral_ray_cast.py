@@ -789,6 +789,28 @@ class StressTests(SceneTestCase):
             wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
             self.assertLess(largest_difference(pixels, wanted), 0.05)
 
+    def assertMatchesReference(self, mesh, prop, camera, size):
+        image, expected = HexScene(mesh, prop, camera, size).render(), reference(mesh, prop, camera, size)
+        self.assertLess(rmse(image, expected)[0], 5e-3)
+        pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(size * size)]
+        wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(size * size)]
+        self.assertLess(largest_difference(pixels, wanted), 0.05)
+
+    def test_delaunay_slivers_a_millionth_and_a_trillion_times_the_size(self):
+        # A sliver's centre lies in its faces' planes up to rounding, and a ray can cross it within
+        # the walk's tolerance: its exit faces are oriented by their corners' order, and a ray leaves
+        # where it entered when no face lies beyond that tolerance.
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
+        from stress import delaunay_slivers, place
+        for factor in ("1e-6", "1e12"):
+            with self.subTest(factor=factor):
+                mesh = place(delaunay_slivers(), {"placement": "scale_" + factor})
+                prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+                prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
+                camera = camera_for(mesh)
+                camera.SetClippingRange(0.01 * mesh.GetLength(), 10 * mesh.GetLength())
+                self.assertMatchesReference(mesh, prop, camera, 32)
+
     def test_tangled_hexahedron_is_told_and_rendered_finite(self):
         mesh = single_hexahedron([0.1, 0.9, 0.4, 0.6, 0.8, 0.2, 1.0, 0.3])
         mesh.GetPoints().SetPoint(6, -0.2, -0.2, -1.0)  # corner 6 pushed through the opposite face
