@@ -100,40 +100,30 @@ std::vector<std::uint32_t> CoincidentPointRepresentatives(const std::vector<floa
   return representative;
 }
 
-/// Which cells share each face (uv::HexahedronFaces numbering): a face two cells share joins them;
-/// any other (a boundary face, or a non-manifold one, every copy) is a boundary face; a collapsed
-/// face (FaceKey) is neither, and has no neighbour. Points are compared through `samePoint`
-/// (CoincidentPointRepresentatives; empty: by id). Faces are
-/// matched by sorting them by their sorted point ids: `parallelFor(count, function(begin, end))` lists
-/// them, `sort(begin, end)` orders HexahedronFaceRecords, and `progress(fraction)` is told 0.5 once
-/// they are listed and 1 once sorted.
-template <typename ParallelFor, typename Sort, typename Progress>
-HexahedralFaces MakeHexahedralFaces(const std::vector<std::uint32_t>& cellPoints,
-  const std::vector<std::uint32_t>& samePoint, ParallelFor&& parallelFor, Sort&& sort, Progress&& progress)
+/// Face `cellFace` (cell * 8 + local face) keyed by its corners, compared through `samePoint` (empty:
+/// by id); a collapsed face (FaceKey) is keyed all NoPoint.
+inline HexahedronFaceRecord MakeFaceRecord(
+  const std::vector<std::uint32_t>& cellPoints, const std::vector<std::uint32_t>& samePoint, std::uint32_t cellFace)
 {
-  const std::size_t cellCount = cellPoints.size() / 8;
-  std::vector<HexahedronFaceRecord> faces(6 * cellCount);
-  parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t c = begin; c < end; ++c)
-      for (int f = 0; f < 6; ++f)
-      {
-        HexahedronFaceRecord& record = faces[6 * c + f];
-        std::uint32_t corners[4];
-        for (int k = 0; k < 4; ++k)
-        {
-          const std::uint32_t point = cellPoints[8 * c + HexahedronFaces[f].Vertices[k]];
-          corners[k] = samePoint.empty() ? point : samePoint[point];
-        }
-        if (FaceKey(corners, record.Key) < 3)
-          record.Key.fill(NoPoint); // sorts last, skipped below
-        record.CellFace = static_cast<std::uint32_t>(8 * c + f);
-      }
-  });
-  progress(0.5);
-  sort(faces.begin(), faces.end());
-  progress(1.0);
-  HexahedralFaces result;
-  result.Neighbours.assign(8 * cellCount, -1);
+  HexahedronFaceRecord record;
+  std::uint32_t corners[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    const std::uint32_t point = cellPoints[8 * (cellFace / 8) + HexahedronFaces[cellFace % 8].Vertices[k]];
+    corners[k] = samePoint.empty() ? point : samePoint[point];
+  }
+  if (FaceKey(corners, record.Key) < 3)
+    record.Key.fill(NoPoint);
+  record.CellFace = cellFace;
+  return record;
+}
+
+/// Joins the faces (sorted) whose key exactly two of them share, in `neighbours`; returns the others,
+/// but for the collapsed ones, which are neither joined nor boundary.
+inline std::vector<HexahedronFaceRecord> JoinFacePairs(
+  const std::vector<HexahedronFaceRecord>& faces, std::vector<std::int32_t>& neighbours)
+{
+  std::vector<HexahedronFaceRecord> unmatched;
   for (std::size_t i = 0; i < faces.size();)
   {
     std::size_t j = i + 1;
@@ -143,21 +133,54 @@ HexahedralFaces MakeHexahedralFaces(const std::vector<std::uint32_t>& cellPoints
       break; // the collapsed faces, all at the end
     if (j - i == 2)
     {
-      const std::uint32_t a = faces[i].CellFace, b = faces[i + 1].CellFace;
-      result.Neighbours[a] = static_cast<std::int32_t>(b);
-      result.Neighbours[b] = static_cast<std::int32_t>(a);
+      neighbours[faces[i].CellFace] = static_cast<std::int32_t>(faces[i + 1].CellFace);
+      neighbours[faces[i + 1].CellFace] = static_cast<std::int32_t>(faces[i].CellFace);
     }
     else
-    {
-      for (std::size_t k = i; k < j; ++k)
-      {
-        const std::uint32_t cellFace = faces[k].CellFace;
-        result.Boundary.insert(result.Boundary.end(),
-          { static_cast<std::int32_t>(cellFace / 8), static_cast<std::int32_t>(cellFace % 8), 0, 0 });
-      }
-    }
+      unmatched.insert(unmatched.end(), faces.begin() + static_cast<std::ptrdiff_t>(i),
+        faces.begin() + static_cast<std::ptrdiff_t>(j));
     i = j;
   }
+  return unmatched;
+}
+
+/// Which cells share each face (uv::HexahedronFaces numbering): a face two cells share joins them;
+/// any other (a boundary face, or a non-manifold one, every copy) is a boundary face; a collapsed
+/// face (FaceKey) is neither, and has no neighbour. Faces are matched by point id first; those left
+/// over, by the points' `samePoint` representatives (CoincidentPointRepresentatives; empty: none), so
+/// a mesh repeating its points along internal faces is joined across them. By id first: a flat
+/// layer of cells (its points moved onto the layer below) would otherwise make four faces of each
+/// key, non-manifold, and cut the mesh there. Faces are matched by sorting them by their sorted
+/// point ids: `parallelFor(count, function(begin, end))` lists them, `sort(begin, end)` orders
+/// HexahedronFaceRecords, and `progress(fraction)` is told 0.5 once they are listed and 1 once
+/// sorted.
+template <typename ParallelFor, typename Sort, typename Progress>
+HexahedralFaces MakeHexahedralFaces(const std::vector<std::uint32_t>& cellPoints,
+  const std::vector<std::uint32_t>& samePoint, ParallelFor&& parallelFor, Sort&& sort, Progress&& progress)
+{
+  const std::size_t cellCount = cellPoints.size() / 8;
+  std::vector<HexahedronFaceRecord> faces(6 * cellCount);
+  parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c)
+      for (int f = 0; f < 6; ++f)
+        faces[6 * c + f] = MakeFaceRecord(cellPoints, {}, static_cast<std::uint32_t>(8 * c + f));
+  });
+  progress(0.5);
+  sort(faces.begin(), faces.end());
+  HexahedralFaces result;
+  result.Neighbours.assign(8 * cellCount, -1);
+  std::vector<HexahedronFaceRecord> unmatched = JoinFacePairs(faces, result.Neighbours);
+  if (!samePoint.empty())
+  {
+    for (HexahedronFaceRecord& record : unmatched)
+      record = MakeFaceRecord(cellPoints, samePoint, record.CellFace);
+    sort(unmatched.begin(), unmatched.end());
+    unmatched = JoinFacePairs(unmatched, result.Neighbours);
+  }
+  progress(1.0);
+  for (const HexahedronFaceRecord& record : unmatched)
+    result.Boundary.insert(result.Boundary.end(),
+      { static_cast<std::int32_t>(record.CellFace / 8), static_cast<std::int32_t>(record.CellFace % 8), 0, 0 });
   return result;
 }
 

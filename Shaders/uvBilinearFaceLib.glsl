@@ -103,13 +103,6 @@ int HitPatch(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out fl
   return HitPatchAt(origin, direction, a, b, c, d, t0, t1, uv0, uv1);
 }
 
-/// The patch's mean normal (the cross product of its diagonals), turned away from the cell's centre.
-vec3 PatchNormal(vec3 a, vec3 b, vec3 c, vec3 d, vec3 cellCentre)
-{
-  vec3 n = cross(c - a, d - b);
-  return dot(n, 0.25 * (a + b + c + d) - cellCentre) < 0.0 ? -n : n;
-}
-
 /// The patch's normal at (u, v) (orientation of the canonical parameterisation).
 vec3 PatchNormalAt(vec3 a, vec3 b, vec3 c, vec3 d, vec2 uv)
 {

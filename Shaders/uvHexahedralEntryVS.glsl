@@ -32,14 +32,9 @@ void main()
     p[k] = corners[FaceCorner(local, k)];
     smallest = ids[k] < ids[smallest] ? k : smallest;
   }
-  // Newell normal of the quad, turned away from the cell's centre. A flat cell (a sliver) has its
-  // centre in the face's plane up to rounding, which would turn it at random and lose the rays
-  // entering there: its corners' cyclic order, outward in VTK's convention, decides instead.
-  vec3 n = cross(p[2] - p[0], p[3] - p[1]);
-  vec3 faceCentre = 0.25 * (p[0] + p[1] + p[2] + p[3]);
-  float height = dot(SafeNormalize(n), faceCentre - CellCentre(corners));
-  bool sliver = abs(height) <= 1e-4 * max(MaxComponent(p[2] - p[0]), MaxComponent(p[3] - p[1]));
-  outwardNormal = !sliver && height < 0.0 ? -n : n;
+  // A flat boundary cell (a sliver) has its centre in the face's plane up to rounding: the face's
+  // corner order orients it there.
+  outwardNormal = OutwardFaceNormal(p, CellCentre(corners));
   int order[6] = int[6](0, 1, 2, 0, 2, 3);
   vec3 position = p[(smallest + order[corner]) % 4];
   modelPosition = position;

@@ -95,6 +95,9 @@ vec3 mapB, mapC, mapD, mapE, mapF, mapG, mapH;
 const int HEXAHEDRON = 0, WEDGE = 1, PYRAMID = 2, TETRAHEDRON = 3;
 int cellShape;
 vec3 tetrahedronGradient;
+// Whether it has no thickness up to rounding (a collapsed layer, a sliver): it holds no point, adds
+// nothing to the ray, and its inverse map and frame are singular.
+bool cellFlat;
 
 /// A tetrahedron (corners 0, 1, 2, 4 distinct) has a linear field: its gradient.
 vec3 LinearFieldGradient()
@@ -103,6 +106,27 @@ vec3 LinearFieldGradient()
   if (IsSingular(edges))
     return vec3(0.0);
   return transpose(inverse(edges)) * vec3(scalars[1] - scalars[0], scalars[2] - scalars[0], scalars[4] - scalars[0]);
+}
+
+/// Face f of the loaded cell's corners in cyclic order (outward for a cell of positive volume).
+void CyclicFace(int f, out vec3 q[4])
+{
+  for (int k = 0; k < 4; ++k)
+    q[k] = points[FaceCorner(f, k)];
+}
+
+/// Whether the loaded cell's centre lies in the plane of each of its faces up to rounding.
+bool IsFlat()
+{
+  vec3 centre = CellCentre(points);
+  for (int f = 0; f < 6; ++f)
+  {
+    vec3 q[4];
+    CyclicFace(f, q);
+    if (!CentreInFacePlane(q, centre))
+      return false;
+  }
+  return true;
 }
 
 void LoadCell(int cell)
@@ -132,6 +156,7 @@ void LoadCell(int cell)
   cellShape = apex ? (collapsedEdge ? TETRAHEDRON : PYRAMID)
                    : (collapsedEdge && cellIds[6] == cellIds[7] ? WEDGE : HEXAHEDRON);
   tetrahedronGradient = cellShape == TETRAHEDRON ? LinearFieldGradient() : vec3(0.0);
+  cellFlat = IsFlat();
 }
 
 /// Face f of the loaded cell as CanonicalFace gives it; returns its distinct corners.
@@ -700,7 +725,8 @@ bool Leaves(vec3 normal, vec3 outward, vec3 direction)
 }
 
 /// The face of the loaded cell (other than `enterFace`) where the ray leaves it nearest beyond t, with
-/// that parameter in exitT; -1 when no face claims the ray.
+/// that parameter in exitT; -1 when no face claims the ray. Where none does beyond rounding of t, the
+/// ray leaves where it entered (a flat cell, whose faces coincide): exitT is then t, no length.
 vec3 exitNormal; // the face's normal where FindExit found the ray leaving
 
 int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
@@ -710,36 +736,56 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
   vec3 cellCentre = CellCentre(points);
   // In proportion to the ray parameter and the cell, not absolute: meshes of any size and distance.
   float tolerance = 1e-6 * (abs(t) + 2.0 * length(points[0] - cellCentre));
-  for (int f = 0; f < 6; ++f)
+  for (int pass = 0; pass < 2 && exitFace < 0; ++pass)
   {
-    if (f == enterFace)
-      continue;
-    // The face exactly, as the bilinear patch (or triangle) through its corners, parameterised
-    // canonically; a collapsed face is no way out.
-    vec3 a, b, c, d;
-    int corners = LoadedCellFace(f, a, b, c, d);
-    if (corners < 3)
-      continue;
-    float h0, h1;
-    vec3 n0, n1;
-    int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
-    // Only where the ray leaves the cell: near an edge the ray can also meet (within the edge
-    // slack) a face it enters through, just after the entry on the neighbouring face.
-    vec3 outward = PatchNormal(a, b, c, d, cellCentre);
-    if (hits > 0 && h0 > t + tolerance && h0 < exitT && Leaves(n0, outward, direction))
+    float after = pass == 0 ? t + tolerance : t - tolerance;
+    for (int f = 0; f < 6; ++f)
     {
-      exitT = h0;
-      exitFace = f;
-      exitNormal = n0;
+      if (f == enterFace)
+        continue;
+      // The face exactly, as the bilinear patch (or triangle) through its corners, parameterised
+      // canonically; a collapsed face is no way out.
+      vec3 a, b, c, d;
+      int corners = LoadedCellFace(f, a, b, c, d);
+      if (corners < 3)
+        continue;
+      float h0, h1;
+      vec3 n0, n1;
+      int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
+      // Only where the ray leaves the cell: near an edge the ray can also meet (within the edge
+      // slack) a face it enters through, just after the entry on the neighbouring face.
+      vec3 q[4];
+      CyclicFace(f, q);
+      vec3 outward = OutwardFaceNormal(q, cellCentre);
+      if (hits > 0 && h0 > after && h0 < exitT && Leaves(n0, outward, direction))
+      {
+        exitT = h0;
+        exitFace = f;
+        exitNormal = n0;
+      }
+      if (hits > 1 && h1 > after && h1 < exitT && Leaves(n1, outward, direction))
+      {
+        exitT = h1;
+        exitFace = f;
+        exitNormal = n1;
+      }
     }
-    if (hits > 1 && h1 > t + tolerance && h1 < exitT && Leaves(n1, outward, direction))
-    {
-      exitT = h1;
-      exitFace = f;
-      exitNormal = n1;
-    }
+    if (pass == 1 && exitFace >= 0)
+      exitT = max(exitT, t);
   }
   return exitFace;
+}
+
+/// How far `target` lies beyond the plane of the loaded cell's face f, per cell size (-1 for a
+/// collapsed face).
+float BeyondFace(int f, vec3 target)
+{
+  vec3 q[4];
+  CyclicFace(f, q);
+  if (FaceCornerCount(f) < 3)
+    return -1.0;
+  vec3 normal = OutwardFaceNormal(q, CellCentre(points));
+  return dot(SafeNormalize(normal), target - q[0]) / length(points[6] - points[0]);
 }
 
 /// One step of the walk towards `target` from the loaded cell `cell`: the neighbour to cross to
@@ -753,7 +799,14 @@ int StepTowards(vec3 target, int cell, out bool inside)
   int across[6];
   CellNeighbours(cell, across);
   float violation[6];
-  if (cellShape == TETRAHEDRON)
+  if (cellFlat)
+  {
+    // No point lies inside: the faces the target lies beyond, by their cyclic order's sides (the
+    // inverse maps are singular).
+    for (int f = 0; f < 6; ++f)
+      violation[f] = BeyondFace(f, target);
+  }
+  else if (cellShape == TETRAHEDRON)
   {
     // Barycentric coordinates, exact (the collapsed map's inverse is singular at the apex): each
     // face is violated by the coordinate of the corner opposite it.
@@ -772,17 +825,10 @@ int StepTowards(vec3 target, int cell, out bool inside)
   }
   else if (cellShape == PYRAMID)
   {
-    // The four triangles are flat: the target's distance beyond each, per cell size; the base by
-    // the inverse map, regular there (singular only at the apex).
-    vec3 centre = CellCentre(points);
-    float size = length(points[6] - points[0]);
+    // The four triangles are flat: the target's distance beyond each; the base by the inverse
+    // map, regular there (singular only at the apex).
     for (int f = 1; f < 6; ++f)
-    {
-      vec3 a, b, c, d;
-      int corners = LoadedCellFace(f, a, b, c, d);
-      vec3 normal = PatchNormal(a, b, c, d, centre);
-      violation[f] = corners < 3 ? -1.0 : dot(SafeNormalize(normal), target - a) / size;
-    }
+      violation[f] = BeyondFace(f, target);
     violation[0] = -InverseTrilinear(target, FrameCoordinates(MakeHexahedronFrame(points), target)).z;
   }
   else
@@ -891,7 +937,7 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
       continue;
     }
     float segmentEnd = min(exitT, opaqueT);
-    if (segmentEnd > t && CellVisible())
+    if (segmentEnd > t && !cellFlat && CellVisible())
       IntegrateCell(origin, direction, t, segmentEnd);
     if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
       break;

@@ -110,3 +110,30 @@ vec3 OrientedNormal(vec3 normal, vec3 outward)
   vec3 n = normalSize > 1e-3 * outwardSize ? normal / normalSize : o;
   return dot(n, o) < 0.0 ? -n : n;
 }
+
+/// The normal of a face from its corners p in cyclic order (the cross product of its diagonals,
+/// outward by VTK's convention for a cell of positive volume; zero for a collapsed face).
+vec3 CyclicNormal(vec3 p[4])
+{
+  return cross(p[2] - p[0], p[3] - p[1]);
+}
+
+/// Whether `centre` lies in the plane of the face with cyclic corners p up to rounding, relative to
+/// the face's size: the face of a flat cell (a sliver, a collapsed layer), whose centre cannot tell
+/// its sides apart.
+bool CentreInFacePlane(vec3 p[4], vec3 centre)
+{
+  float height = dot(SafeNormalize(CyclicNormal(p)), 0.25 * (p[0] + p[1] + p[2] + p[3]) - centre);
+  return abs(height) <= 1e-4 * max(MaxComponent(p[2] - p[0]), MaxComponent(p[3] - p[1]));
+}
+
+/// The outward normal of the face with cyclic corners p of a cell centred at `centre`: turned away
+/// from the centre (inverted cells' corner order is inward), unless the centre lies in its plane,
+/// where the corners' cyclic order decides.
+vec3 OutwardFaceNormal(vec3 p[4], vec3 centre)
+{
+  vec3 n = CyclicNormal(p);
+  if (CentreInFacePlane(p, centre))
+    return n;
+  return dot(SafeNormalize(n), 0.25 * (p[0] + p[1] + p[2] + p[3]) - centre) < 0.0 ? -n : n;
+}

@@ -102,6 +102,25 @@ TEST(HexahedronMesh, RepeatedPointsStillJoinTheirCells)
   EXPECT_EQ(faces.Boundary.size(), 4u * 10);
 }
 
+TEST(HexahedronMesh, FlatCellsAreJoinedByIdNotThroughCoincidentPoints)
+{
+  // The middle cube of three flattened: its points at x = 2 moved onto those at x = 1. Its faces
+  // coincide with both neighbours' and its side faces collapse through the representatives; by id
+  // the row stays joined through it.
+  Block block(3);
+  for (std::size_t p = 0; p < block.PointData.size() / 4; ++p)
+    if (block.PointData[4 * p] == 2.0f)
+      block.PointData[4 * p] = 1.0f;
+  const std::vector<std::uint32_t> same = uv::CoincidentPointRepresentatives(
+    block.PointData, [](auto begin, auto end, auto less) { std::sort(begin, end, less); });
+  const uv::HexahedralFaces faces =
+    uv::MakeHexahedralFaces(block.CellPoints, same, Serial, [](auto begin, auto end) { std::sort(begin, end); },
+      [](double) {});
+  EXPECT_EQ(faces.Neighbours[8 * 0 + 3], 8 * 1 + 5);
+  EXPECT_EQ(faces.Neighbours[8 * 1 + 3], 8 * 2 + 5);
+  EXPECT_EQ(faces.Boundary.size(), 4u * 10); // the flat cube's sides, collapsed, bound nothing
+}
+
 TEST(HexahedronMesh, CellHoldingAPointAndTangledCells)
 {
   Block block(3);

@@ -8,7 +8,7 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
-from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic_hexahedra, as_polyhedra,  # noqa: E402
+from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic, analytic_hexahedra, as_polyhedra,  # noqa: E402
                       camera_for, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
                       largest_difference,
                       load_shared, plane_scene_setup, property_from_nodes, reference, rmse, thin_shell_property,
@@ -788,6 +788,53 @@ class StressTests(SceneTestCase):
             pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
             wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
             self.assertLess(largest_difference(pixels, wanted), 0.05)
+
+    def assertMatchesReference(self, mesh, prop, camera, size):
+        image, expected = HexScene(mesh, prop, camera, size).render(), reference(mesh, prop, camera, size)
+        self.assertLess(rmse(image, expected)[0], 5e-3)
+        pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(size * size)]
+        wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(size * size)]
+        self.assertLess(largest_difference(pixels, wanted), 0.05)
+
+    def test_rays_cross_collapsed_layers(self):
+        # Every other layer of points moved onto the one below: the cells between are flat, their
+        # faces coincide pairwise with their neighbours', and their points with the layer below's.
+        # Joining faces through coincident points made four faces of each key there, cut the mesh
+        # in two and lost the rays crossing upwards; joined by id, the walk crosses the flat cells,
+        # entering and leaving at one ray parameter, with no inverse map to step through them.
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
+        from stress import collapse_layers, make_camera
+        mesh = collapse_layers(analytic_hexahedra(4))
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
+        camera = vtkCamera()  # inside, below the flat layer z = 0, looking along it
+        camera.SetPosition(-0.6, 0.03, -0.1)
+        camera.SetFocalPoint(1.0, 0.03, -0.1)
+        camera.SetViewUp(0, 0, 1)
+        camera.SetViewAngle(60)
+        camera.SetClippingRange(0.01, 10)
+        with self.subTest(mesh="hexahedra"):
+            self.assertMatchesReference(mesh, prop, camera, 32)
+        mesh = collapse_layers(analytic(6))
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
+        with self.subTest(mesh="tetrahedra"):
+            self.assertMatchesReference(mesh, prop, make_camera(mesh, {"camera": "inside"}), 17)
+
+    def test_delaunay_slivers_a_millionth_and_a_trillion_times_the_size(self):
+        # A sliver's centre lies in its faces' planes up to rounding, and a ray can cross it within
+        # the walk's tolerance: its exit faces are oriented by their corners' order, and a ray leaves
+        # where it entered when no face lies beyond that tolerance.
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
+        from stress import delaunay_slivers, place
+        for factor in ("1e-6", "1e12"):
+            with self.subTest(factor=factor):
+                mesh = place(delaunay_slivers(), {"placement": "scale_" + factor})
+                prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+                prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
+                camera = camera_for(mesh)
+                camera.SetClippingRange(0.01 * mesh.GetLength(), 10 * mesh.GetLength())
+                self.assertMatchesReference(mesh, prop, camera, 32)
 
     def test_tangled_hexahedron_is_told_and_rendered_finite(self):
         mesh = single_hexahedron([0.1, 0.9, 0.4, 0.6, 0.8, 0.2, 1.0, 0.3])
