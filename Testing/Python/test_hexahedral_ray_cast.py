@@ -6,7 +6,9 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(1, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
 import shared_data  # noqa: E402
+import stress  # noqa: E402  (its generated degenerate meshes and placements)
 import uvrender  # noqa: E402
 from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic, analytic_hexahedra, as_polyhedra,  # noqa: E402
                       camera_for, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
@@ -726,75 +728,50 @@ class StressTests(SceneTestCase):
             self.assertEqual(scene.events.errors, 0)
         self.assertLess(largest_difference(*images), 1e-3)
 
+    def property_and_camera(self, mesh):
+        """A ramp at a third of the mesh's size, seen from outside with a near plane in proportion."""
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
+        camera = camera_for(mesh)
+        camera.SetClippingRange(0.01 * mesh.GetLength(), 10 * mesh.GetLength())
+        return prop, camera
+
+    def assertMatchesReference(self, mesh, prop, camera, size):  # noqa: N802  (unittest's style)
+        image, expected = HexScene(mesh, prop, camera, size).render(), reference(mesh, prop, camera, size)
+        self.assertLess(rmse(image, expected)[0], 5e-3)
+        pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(size * size)]
+        wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(size * size)]
+        self.assertLess(largest_difference(pixels, wanted), 0.05)
+
     def test_meshes_a_millionth_and_a_million_times_the_size(self):
         # The walk's tolerances are in proportion to the ray parameter and the cell: with parts of
         # them absolute, a mesh a millionth the size drew nothing.
-        from vtkmodules.vtkCommonTransforms import vtkTransform
-        from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
-        for factor in (1e-6, 1e6):
+        for factor in ("1e-6", "1e6"):
             with self.subTest(factor=factor):
-                transform = vtkTransform()
-                transform.Scale(factor, factor, factor)
-                scaled = vtkTransformFilter()
-                scaled.SetTransform(transform)
-                scaled.SetInputData(analytic_hexahedra(5, distortion=vtkAnalyticMeshSource.TWIST))
-                scaled.Update()
-                mesh = scaled.GetOutput()
-                prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-                prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
-                camera = camera_for(mesh)
-                camera.SetClippingRange(0.01 * mesh.GetLength(), 10 * mesh.GetLength())
-                scene = HexScene(mesh, prop, camera, 48)
-                error, _ = rmse(scene.render(), reference(mesh, prop, camera, 48))
+                mesh = stress.place(analytic_hexahedra(5, distortion=vtkAnalyticMeshSource.TWIST),
+                                    {"placement": "scale_" + factor})
+                prop, camera = self.property_and_camera(mesh)
+                error, _ = rmse(HexScene(mesh, prop, camera, 48).render(), reference(mesh, prop, camera, 48))
                 self.assertLess(error, 5e-3)
 
     def test_curved_faces_a_billionth_and_a_trillion_times_the_size(self):
         # A curved face's ray quadratic has coefficients of a squared length and a discriminant of
         # its fourth power, which underflows (a billionth) or overflows (a trillion) in float, as did
         # a normal's orientation test: twisted and wedge/pyramid faces lost rays there.
-        from vtkmodules.vtkCommonTransforms import vtkTransform
-        from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
         for name, source in (("twisted", analytic_hexahedra(5, distortion=vtkAnalyticMeshSource.TWIST)),
                              ("hex-dominant", hex_dominant(5))):
-            for factor in (1e-9, 1e12):
+            for factor in ("1e-9", "1e12"):
                 with self.subTest(mesh=name, factor=factor):
-                    transform = vtkTransform()
-                    transform.Scale(factor, factor, factor)
-                    scaled = vtkTransformFilter()
-                    scaled.SetTransform(transform)
-                    scaled.SetInputData(source)
-                    scaled.Update()
-                    mesh = scaled.GetOutput()
-                    prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-                    prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
-                    camera = camera_for(mesh)
-                    camera.SetClippingRange(0.01 * mesh.GetLength(), 10 * mesh.GetLength())
-                    image, expected = HexScene(mesh, prop, camera, 32).render(), reference(mesh, prop, camera, 32)
-                    self.assertLess(rmse(image, expected)[0], 5e-3)
-                    pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(32 * 32)]
-                    wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(32 * 32)]
-                    self.assertLess(largest_difference(pixels, wanted), 0.05)
+                    mesh = stress.place(source, {"placement": "scale_" + factor})
+                    self.assertMatchesReference(mesh, *self.property_and_camera(mesh), 32)
 
     def test_delaunay_slivers_on_the_boundary(self):
         # A flat boundary tetrahedron's centre lies in its face's plane up to rounding: turning the
         # face's normal away from it pointed it inwards at random, and the rays entering there were lost.
-        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
-        from stress import delaunay_slivers
-        mesh = delaunay_slivers()
+        mesh = stress.delaunay_slivers()
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         for camera in (camera_for(mesh), camera_for(mesh, parallel=True)):
-            image, expected = HexScene(mesh, prop, camera, 24).render(), reference(mesh, prop, camera, 24)
-            self.assertLess(rmse(image, expected)[0], 5e-3)
-            pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
-            wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(24 * 24)]
-            self.assertLess(largest_difference(pixels, wanted), 0.05)
-
-    def assertMatchesReference(self, mesh, prop, camera, size):
-        image, expected = HexScene(mesh, prop, camera, size).render(), reference(mesh, prop, camera, size)
-        self.assertLess(rmse(image, expected)[0], 5e-3)
-        pixels = [image.GetPointData().GetScalars().GetTuple4(p) for p in range(size * size)]
-        wanted = [expected.GetPointData().GetScalars().GetTuple4(p) for p in range(size * size)]
-        self.assertLess(largest_difference(pixels, wanted), 0.05)
+            self.assertMatchesReference(mesh, prop, camera, 24)
 
     def test_rays_cross_collapsed_layers(self):
         # Every other layer of points moved onto the one below: the cells between are flat, their
@@ -802,9 +779,7 @@ class StressTests(SceneTestCase):
         # Joining faces through coincident points made four faces of each key there, cut the mesh
         # in two and lost the rays crossing upwards; joined by id, the walk crosses the flat cells,
         # entering and leaving at one ray parameter, with no inverse map to step through them.
-        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
-        from stress import collapse_layers, make_camera
-        mesh = collapse_layers(analytic_hexahedra(4))
+        mesh = stress.collapse_layers(analytic_hexahedra(4))
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
         camera = vtkCamera()  # inside, below the flat layer z = 0, looking along it
@@ -815,26 +790,20 @@ class StressTests(SceneTestCase):
         camera.SetClippingRange(0.01, 10)
         with self.subTest(mesh="hexahedra"):
             self.assertMatchesReference(mesh, prop, camera, 32)
-        mesh = collapse_layers(analytic(6))
+        mesh = stress.collapse_layers(analytic(6))
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
         with self.subTest(mesh="tetrahedra"):
-            self.assertMatchesReference(mesh, prop, make_camera(mesh, {"camera": "inside"}), 17)
+            self.assertMatchesReference(mesh, prop, stress.make_camera(mesh, {"camera": "inside"}), 17)
 
     def test_delaunay_slivers_a_millionth_and_a_trillion_times_the_size(self):
         # A sliver's centre lies in its faces' planes up to rounding, and a ray can cross it within
         # the walk's tolerance: its exit faces are oriented by their corners' order, and a ray leaves
         # where it entered when no face lies beyond that tolerance.
-        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
-        from stress import delaunay_slivers, place
         for factor in ("1e-6", "1e12"):
             with self.subTest(factor=factor):
-                mesh = place(delaunay_slivers(), {"placement": "scale_" + factor})
-                prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-                prop.SetScalarOpacityUnitDistance(0.3 * mesh.GetLength())
-                camera = camera_for(mesh)
-                camera.SetClippingRange(0.01 * mesh.GetLength(), 10 * mesh.GetLength())
-                self.assertMatchesReference(mesh, prop, camera, 32)
+                mesh = stress.place(stress.delaunay_slivers(), {"placement": "scale_" + factor})
+                self.assertMatchesReference(mesh, *self.property_and_camera(mesh), 32)
 
     def test_tangled_hexahedron_is_told_and_rendered_finite(self):
         mesh = single_hexahedron([0.1, 0.9, 0.4, 0.6, 0.8, 0.2, 1.0, 0.3])
