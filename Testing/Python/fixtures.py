@@ -515,6 +515,14 @@ class TetrahedralInputChecks:
         scene.render()
         self.assertEqual(scene.events.errors + scene.events.warnings, 0)
 
+    def test_an_opacity_function_without_nodes_draws_nothing_quietly(self):
+        # VTK evaluates a node-less function to zero everywhere: transparent, as the reference draws
+        # it, not an error (the mappers reported "no scalar opacity function").
+        scene = self.scene(analytic(3), property_from_nodes((), (), 1.0))
+        alpha = scene.render().GetPointData().GetScalars().GetRange(3)
+        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+        self.assertEqual(alpha, (0.0, 0.0))
+
     def test_quadratic_cells_are_subdivided_and_drawn(self):
         grid = vtkUnstructuredGrid()
         points = vtkPoints()

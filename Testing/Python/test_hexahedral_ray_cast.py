@@ -620,6 +620,14 @@ class SkippingTests(SceneTestCase):
 
 
 class InputTests(SceneTestCase):
+    def test_an_opacity_function_without_nodes_draws_nothing_quietly(self):
+        # Zero everywhere, as VTK evaluates it and the reference draws it; it was an error.
+        mesh = analytic_hexahedra(3)
+        scene = HexScene(mesh, property_from_nodes((), (), 1.0), camera_for(mesh), 32)
+        alpha = scene.render().GetPointData().GetScalars().GetRange(3)
+        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+        self.assertEqual(alpha, (0.0, 0.0))
+
     def test_polyhedra_are_an_error_naming_the_route(self):
         scene = HexScene(as_polyhedra(analytic_hexahedra(2)), uvrender.volume_property((0, 1)),
                          camera_for(analytic_hexahedra(2)), 48)
@@ -764,6 +772,14 @@ class StressTests(SceneTestCase):
                 with self.subTest(mesh=name, factor=factor):
                     mesh = stress.place(source, {"placement": "scale_" + factor})
                     self.assertMatchesReference(mesh, *self.property_and_camera(mesh), 32)
+
+    def test_a_medium_opaque_within_a_billionth_shows_its_front_layer(self):
+        # A unit distance of 1e-9 on a unit mesh: all the light comes from a front layer far thinner
+        # than the spacing of the Gauss nodes over equal sub-pieces, which drew black.
+        mesh = analytic_hexahedra(4, distortion=vtkAnalyticMeshSource.TWIST)
+        prop, camera = self.property_and_camera(mesh)
+        prop.SetScalarOpacityUnitDistance(1e-9)
+        self.assertMatchesReference(mesh, prop, camera, 24)
 
     def test_delaunay_slivers_on_the_boundary(self):
         # A flat boundary tetrahedron's centre lies in its face's plane up to rounding: turning the
