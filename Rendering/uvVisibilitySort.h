@@ -41,11 +41,14 @@ struct SerialChunks
 
 /// Sorts `values` by ascending `keys`, stably; both are reordered. `scratchKeys` and
 /// `scratchValues` are resized and used as the second buffers (kept by the caller to avoid
-/// reallocating every frame). Passes whose digit is the same for every key are skipped.
+/// reallocating every frame). Passes whose digit is the same for every key are skipped. The keys
+/// are split into at most `maximumChunks` chunks of at least `minimumChunk` keys: each chunk has a
+/// count per digit that every pass clears and sums, which would outweigh a short list's sort. A
+/// stable sort has one result, so the chunking never changes the order.
 template <typename ForEachChunk>
 void RadixSortPairs(std::vector<std::uint32_t>& keys, std::vector<std::uint32_t>& values,
   std::vector<std::uint32_t>& scratchKeys, std::vector<std::uint32_t>& scratchValues,
-  const ForEachChunk& forEachChunk, int chunkCount = 64)
+  const ForEachChunk& forEachChunk, int maximumChunks = 64, std::size_t minimumChunk = 16384)
 {
   constexpr int digitBits = 11;
   constexpr std::uint32_t buckets = 1u << digitBits;
@@ -56,6 +59,8 @@ void RadixSortPairs(std::vector<std::uint32_t>& keys, std::vector<std::uint32_t>
   {
     return;
   }
+  const int chunkCount = static_cast<int>(
+    std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(maximumChunks), n / std::max<std::size_t>(1, minimumChunk))));
   const std::size_t chunkSize = (n + chunkCount - 1) / chunkCount;
   std::vector<std::array<std::uint32_t, buckets>> counts(chunkCount);
   for (int shift = 0; shift < 32; shift += digitBits)

@@ -276,8 +276,12 @@ TEST(VisibilitySort, RadixSortIsAStableSort)
     }
     std::vector<std::uint32_t> expected(cells);
     std::stable_sort(expected.begin(), expected.end(), [&](std::uint32_t x, std::uint32_t y) { return distance[x] < distance[y]; });
-    uv::RadixSortPairs(keys, cells, scratchKeys, scratchCells, uv::SerialChunks{}, 7);
+    // Seven chunks of any length, and the default chunking (one chunk for short lists).
+    std::vector<std::uint32_t> defaultKeys(keys), defaultCells(cells);
+    uv::RadixSortPairs(keys, cells, scratchKeys, scratchCells, uv::SerialChunks{}, 7, 1);
     EXPECT_EQ(cells, expected);
     EXPECT_TRUE(std::is_sorted(keys.begin(), keys.end()));
+    uv::RadixSortPairs(defaultKeys, defaultCells, scratchKeys, scratchCells, uv::SerialChunks{});
+    EXPECT_EQ(defaultCells, expected);
   }
 }
