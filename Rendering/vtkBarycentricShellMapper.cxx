@@ -902,8 +902,8 @@ bool vtkBarycentricShellMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vt
   Internals& impl = *this->Impl;
   impl.Mask.AttachAndClear(target, frame.Window->GetState()); // nothing is opaque yet
   target.GetNoAttributes()->Bind(); // every pass pulls its vertices from buffer textures
-  bool opaqueGeometry = false;
-  bool drawn = impl.Opaque.Run(frame, target, opaqueGeometry);
+  bool opaqueGeometry = false; // nothing drawn before the volume: no pass finds none
+  bool drawn = !frame.OpaqueDepth || impl.Opaque.Run(frame, target, opaqueGeometry);
   this->CheckGLErrors("the shells' opaque distances");
   if (!drawn)
   {

@@ -477,6 +477,7 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   options.CellSurfaces = impl.DrawCellSurfaces;
   options.SegmentTable = impl.UseTable;
   options.NearPlaneCuts = impl.NearPlaneMayCut(frame);
+  options.OpaqueDepth = frame.OpaqueDepth;
   vtkShaderProgram* program =
     uvgl::ReadyProgram(frame.Window, vtkPreIntegratedTetrahedraPrograms::Sources(options));
   if (!program)
@@ -485,7 +486,6 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   const glm::dvec3 center = impl.Mesh.Center;
   SetMatrix(program, "modelToEye", frame.ModelToEye(center));
   SetMatrix(program, "eyeToClip", frame.EyeToClip);
-  SetMatrix(program, "clipToEye", glm::inverse(frame.EyeToClip));
   if (impl.NeedGradients)
   {
     const glm::mat3 normals(frame.ModelToEyeNormals(center));
@@ -494,8 +494,6 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   // Tetrahedra crossing the near plane (where rays begin) are ray-cast, in both projections.
   program->SetUniformf("nearDepth", static_cast<float>(frame.NearDepth));
   program->SetUniformf("zeroTolerance", 1e-6f);
-  const float viewport[2] = { static_cast<float>(frame.Width), static_cast<float>(frame.Height) };
-  program->SetUniform2f("viewportSize", viewport);
   program->SetUniformi("parallelProjection", frame.Parallel ? 1 : 0);
   SetPixelRays(program, frame);
   program->SetUniformi("averageScalar", this->IntegrationMode == AVERAGE_SCALAR ? 1 : 0);
@@ -509,9 +507,15 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   impl.Isosurfaces.Bind(program, "isosurfaces");
   if (impl.UseTable)
     impl.Table.Bind(program);
-  vtkTextureObject* sceneDepth = target.GetSceneDepth();
-  sceneDepth->Activate();
-  program->SetUniformi("opaqueDepth", sceneDepth->GetTextureUnit());
+  if (options.OpaqueDepth)
+  {
+    vtkTextureObject* sceneDepth = target.GetSceneDepth();
+    sceneDepth->Activate();
+    program->SetUniformi("opaqueDepth", sceneDepth->GetTextureUnit());
+    SetMatrix(program, "clipToEye", glm::inverse(frame.EyeToClip));
+    const float viewport[2] = { static_cast<float>(frame.Width), static_cast<float>(frame.Height) };
+    program->SetUniform2f("viewportSize", viewport);
+  }
   if (impl.NeedGradients)
     impl.PointGradients.Bind(program, "pointGradients");
   if (impl.DrawCellSurfaces)

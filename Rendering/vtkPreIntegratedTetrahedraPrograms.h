@@ -33,6 +33,7 @@ struct vtkPreIntegratedTetrahedraPrograms
     bool CellSurfaces = false; // a cell scalar's isosurfaces, on the faces between cells
     bool SegmentTable = false; // one table read per segment (no isosurfaces, no shading)
     bool NearPlaneCuts = true; // some tetrahedra may cross the near plane: ray-cast them
+    bool OpaqueDepth = true;   // opaque geometry may have been drawn: its depth ends segments
   };
 
   static uvgl::ProgramSources Sources(const Options& options)
@@ -46,6 +47,8 @@ struct vtkPreIntegratedTetrahedraPrograms
       defines += "#define UV_SEGMENT_TABLE\n";
     if (options.NearPlaneCuts)
       defines += "#define UV_NEAR_PLANE_CUTS\n";
+    if (options.OpaqueDepth)
+      defines += "#define UV_OPAQUE_DEPTH\n";
     const std::initializer_list<std::pair<const char*, const char*>> projection = {
       { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
     };
@@ -63,17 +66,20 @@ struct vtkPreIntegratedTetrahedraPrograms
   static std::vector<Options> AllOptions()
   {
     std::vector<Options> all;
-    for (bool pulling : { true, false })
-      for (bool gradients : { false, true })
-        for (bool nodeTexture : { false, true })
-          for (bool cuts : { true, false })
-            all.push_back({ pulling, gradients, nodeTexture, false, false, cuts });
-    for (bool pulling : { true, false })
-      for (bool cuts : { true, false })
-      {
-        all.push_back({ pulling, false, false, true, false, cuts });
-        all.push_back({ pulling, false, false, false, true, cuts });
-      }
+    for (bool depth : { true, false })
+    {
+      for (bool pulling : { true, false })
+        for (bool gradients : { false, true })
+          for (bool nodeTexture : { false, true })
+            for (bool cuts : { true, false })
+              all.push_back({ pulling, gradients, nodeTexture, false, false, cuts, depth });
+      for (bool pulling : { true, false })
+        for (bool cuts : { true, false })
+        {
+          all.push_back({ pulling, false, false, true, false, cuts, depth });
+          all.push_back({ pulling, false, false, false, true, cuts, depth });
+        }
+    }
     return all;
   }
 };

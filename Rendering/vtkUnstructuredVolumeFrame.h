@@ -15,6 +15,7 @@
 
 #include "vtkCamera.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -32,6 +33,7 @@ struct vtkUnstructuredVolumeFrame
   int Width = 0, Height = 0, OriginX = 0, OriginY = 0; // the renderer's tile of the window
   bool Parallel = false;
   double NearDepth = 0.0; // eye distance of the near clipping plane, where rays begin
+  bool OpaqueDepth = true; // the depth buffer may hold geometry drawn before the volume
   glm::dmat4 VolumeToWorld{ 1.0 }, WorldToEye{ 1.0 }, EyeToClip{ 1.0 };
 
   /// The frame `renderer` shows `volume` in; Width and Height are 0 when the tile is empty.
@@ -57,7 +59,28 @@ struct vtkUnstructuredVolumeFrame
     frame.VolumeToWorld = uvgl::ToGlm(volume->GetMatrix());
     frame.WorldToEye = uvgl::ToGlm(frame.Camera->GetModelViewTransformMatrix());
     frame.EyeToClip = uvgl::ToGlm(frame.Camera->GetProjectionTransformMatrix(aspect, -1, 1));
+    frame.OpaqueDepth = MayHaveDrawnDepth(renderer);
     return frame;
+  }
+
+  /// Whether anything may have been drawn into the depth buffer before the volumes: a visible prop
+  /// that is not a volume and has opaque or translucent geometry (a prop that cannot tell says it
+  /// has), or a depth buffer kept from an earlier layer. Where nothing was, every pixel's depth is
+  /// the far plane, and the mappers need not read it.
+  static bool MayHaveDrawnDepth(vtkRenderer* renderer)
+  {
+    if (renderer->GetPreserveDepthBuffer())
+      return true;
+    vtkPropCollection* props = renderer->GetViewProps();
+    vtkCollectionSimpleIterator position;
+    props->InitTraversal(position);
+    while (vtkProp* prop = props->GetNextProp(position))
+    {
+      if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
+        (prop->HasOpaqueGeometry() || prop->HasTranslucentPolygonalGeometry()))
+        return true;
+    }
+    return false;
   }
 
   bool IsEmpty() const { return this->Width < 1 || this->Height < 1; }

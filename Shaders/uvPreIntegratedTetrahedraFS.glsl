@@ -31,9 +31,11 @@ uniform samplerBuffer neighbourValues; // per tetrahedron, the value across the 
 uniform usamplerBuffer tetrahedronPoints;
 uniform samplerBuffer pointData;
 uniform mat4 modelToEye;
+#ifdef UV_OPAQUE_DEPTH
 uniform sampler2D opaqueDepth;      // the scene's depth buffer before the volume
 uniform mat4 clipToEye;
 uniform vec2 viewportSize;
+#endif
 uniform int parallelProjection;
 // The eye ray at pixel (x, y) is affine in it: perspective, its direction is (dot(rayX, (x, y, 1)),
 // dot(rayY, (x, y, 1)), -1) from the eye; parallel, its origin is (those, 0) and it runs along -z.
@@ -94,7 +96,6 @@ void main()
   vec3 frontPoint, backPoint;
   float frontScalar, backScalar;
   vec3 frontGradient = vec3(0.0), backGradient = vec3(0.0);
-  vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
   vec2 ray = vec2(dot(rayX, vec3(gl_FragCoord.xy, 1.0)), dot(rayY, vec3(gl_FragCoord.xy, 1.0)));
   vec3 origin = parallelProjection == 1 ? vec3(ray, 0.0) : vec3(0.0);
   vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : vec3(ray, -1.0);
@@ -167,7 +168,10 @@ void main()
 #endif
   }
 
-  // Opaque geometry: nothing behind it; a segment it cuts ends there.
+#ifdef UV_OPAQUE_DEPTH
+  // Opaque geometry: nothing behind it; a segment it cuts ends there. (Only compiled in where the
+  // scene may have drawn some: the read and unprojection are a large share of a cheap fragment.)
+  vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
   float depth = texelFetch(opaqueDepth, ivec2(gl_FragCoord.xy), 0).r;
   vec4 opaque = clipToEye * vec4(ndc, 2.0 * depth - 1.0, 1.0);
   float opaqueZ = opaque.z / opaque.w;
@@ -182,6 +186,7 @@ void main()
     backScalar = mix(frontScalar, backScalar, u);
     backGradient = mix(frontGradient, backGradient, u);
   }
+#endif
   float segmentLength = distance(frontPoint, backPoint);
 #ifdef UV_SEGMENT_TABLE
   vec4 result = TableSegment(frontScalar, backScalar, segmentLength);
