@@ -20,9 +20,10 @@ from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkFloatArray, 
 from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, VTK_POLYHEDRON, VTK_PYRAMID, VTK_QUADRATIC_TETRA, VTK_TETRA,
                                            VTK_WEDGE, vtkGenericCell, vtkImageData,
                                            vtkPiecewiseFunction, vtkUnstructuredGrid)
+from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
-from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty)
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkCamera, vtkColorTransferFunction, vtkPolyDataMapper, vtkRenderer,
+                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty)
 
 IMAGE_THRESHOLD = 10.0  # vtkImageDifference's thresholded error against a baseline (VTK's tests use 10)
 OUTPUT = os.environ.get("UV_TEST_OUTPUT", tempfile.gettempdir())
@@ -438,6 +439,37 @@ def copy_image(image):
     copy = vtkImageData()
     copy.DeepCopy(image)
     return copy
+
+
+def check_geometry_shown_later(test, **settings):
+    """A scene with nothing opaque in it does not read the depth buffer (the mapper's `settings`);
+    the same mapper must read it again the frame a prop is shown, and a hidden one changes nothing."""
+    mesh = analytic(6)
+    prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+    camera = camera_for(mesh)
+
+    def sphere_actor():
+        sphere = vtkSphereSource()
+        sphere.SetRadius(0.4)
+        sphere_mapper = vtkPolyDataMapper()
+        sphere_mapper.SetInputConnection(sphere.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(sphere_mapper)
+        return actor
+
+    hidden = sphere_actor()
+    hidden.VisibilityOff()
+    alone = copy_image(Scene(mesh, prop, camera, 96, **settings).render())
+    scene = Scene(mesh, prop, camera, 96, (hidden,), **settings)
+    test.assertLess(rmse(scene.render(), alone)[1], 1e-6)
+    hidden.VisibilityOn()
+    shown = copy_image(scene.render())
+    expected = Scene(mesh, prop, camera, 96, (sphere_actor(),), **settings).render()
+    test.assertLess(rmse(shown, expected)[1], 1e-6)
+    test.assertGreater(rmse(shown, alone)[0], 0.01)  # the sphere hides what lies behind it
+    hidden.VisibilityOff()
+    test.assertLess(rmse(scene.render(), alone)[1], 1e-6)
+    test.assertEqual(scene.events.errors, 0)
 
 
 # ---------------------------------------------------------------------------------------------

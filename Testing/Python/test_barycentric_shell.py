@@ -9,9 +9,9 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
-                      analytic, camera_for, copy_image, covered_colour_error, finite_image, inside_camera,
-                      plane_scene_setup, reference, rmse, spike_property, thin_shell_property,
-                      transparent_property)
+                      analytic, camera_for, check_geometry_shown_later, copy_image, covered_colour_error,
+                      finite_image, inside_camera, plane_scene_setup, reference, rmse, spike_property,
+                      thin_shell_property, transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
                                 vtkVolumeImageErrorMetrics)
@@ -157,6 +157,13 @@ class AccuracyTests(SceneTestCase):
                     error, _ = self.error(mesh, prop, camera, 64, RenderMode=mode)
                     self.assertLess(error, 2e-3)
 
+
+
+class OpaqueGeometryTests(SceneTestCase):
+    def test_geometry_shown_later_cuts_the_volume_and_hidden_again_does_not(self):
+        for mode in (SHELLS, CELL_PROJECTION):
+            with self.subTest(mode=mode):
+                check_geometry_shown_later(self, mapper_class=vtkBarycentricShellMapper, RenderMode=mode)
 
 
 class IsosurfaceTests(SceneTestCase):

@@ -7,8 +7,8 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
-                      analytic, camera_for, copy_image, finite_image, inside_camera, reference, rmse,
-                      spike_property)
+                      analytic, camera_for, check_geometry_shown_later, copy_image, finite_image, inside_camera,
+                      reference, rmse, spike_property)
 
 from unstructuredvolume import vtkAnalyticMeshSource  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
@@ -150,34 +150,7 @@ class AccuracyTests(SceneTestCase):
 
 class OpaqueGeometryTests(SceneTestCase):
     def test_geometry_shown_later_cuts_the_volume_and_hidden_again_does_not(self):
-        # A scene with nothing opaque in it does not read the depth buffer; the same mapper must
-        # read it again the frame a prop is shown, and a hidden one must change nothing.
-        mesh = analytic(6)
-        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-        camera = camera_for(mesh)
-
-        def sphere_actor():
-            sphere = vtkSphereSource()
-            sphere.SetRadius(0.4)
-            sphere_mapper = vtkPolyDataMapper()
-            sphere_mapper.SetInputConnection(sphere.GetOutputPort())
-            actor = vtkActor()
-            actor.SetMapper(sphere_mapper)
-            return actor
-
-        hidden = sphere_actor()
-        hidden.VisibilityOff()
-        alone = copy_image(Scene(mesh, prop, camera, 96).render())
-        scene = Scene(mesh, prop, camera, 96, (hidden,))
-        self.assertLess(rmse(scene.render(), alone)[1], 1e-6)
-        hidden.VisibilityOn()
-        shown = copy_image(scene.render())
-        expected = Scene(mesh, prop, camera, 96, (sphere_actor(),)).render()
-        self.assertLess(rmse(shown, expected)[1], 1e-6)
-        self.assertGreater(rmse(shown, alone)[0], 0.01)  # the sphere hides what lies behind it
-        hidden.VisibilityOff()
-        self.assertLess(rmse(scene.render(), alone)[1], 1e-6)
-        self.assertEqual(scene.events.errors, 0)
+        check_geometry_shown_later(self)
 
 
 class HostMemoryTests(SceneTestCase):
