@@ -110,8 +110,9 @@ public:
   /// Bytes kept between sorts: none, the state below lives only while sorting.
   std::size_t GetBytes() const
   {
-    return this->Behind.capacity() + this->Waiting.capacity() + this->State.capacity() +
-      sizeof(std::uint32_t) * (this->NewOrder.capacity() + this->Stack.capacity());
+    return this->Behind.capacity() + this->State.capacity() +
+      sizeof(std::uint32_t) * (this->Waiting.capacity() + this->AheadFirst.capacity() + this->AheadOf.capacity() +
+                                this->NewOrder.capacity() + this->Stack.capacity());
   }
 
   /// Reorders `order` (the drawn tetrahedra back to front by centroid) so that every face
@@ -119,9 +120,12 @@ public:
   /// `position(t, k)`: corner k of tetrahedron t; `neighbours` from MakeTetrahedronFaceAdjacency;
   /// `eye` the eye point, or with `parallel` the direction towards the eye. `parallelFor(count,
   /// function(begin, end))` runs the constraint test over tetrahedra, in parallel if it likes.
+  /// `gaps`: further pairs (front, behind) that no face joins, e.g. across the gaps of a non-convex
+  /// mesh (uvBoundaryGapOrder.h); behind is drawn first.
   template <typename Position, typename ParallelFor>
   void Sort(std::vector<std::uint32_t>& order, const std::vector<std::uint32_t>& corners, Position&& position,
-    const std::vector<std::int32_t>& neighbours, const glm::dvec3& eye, bool parallel, ParallelFor&& parallelFor)
+    const std::vector<std::int32_t>& neighbours, const glm::dvec3& eye, bool parallel, ParallelFor&& parallelFor,
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& gaps = {})
   {
     const std::size_t count = corners.size() / 4;
     this->Behind.assign(count, 0);
@@ -146,6 +150,7 @@ public:
         this->Waiting[t] = waiting;
       }
     });
+    this->IndexGaps(gaps, count);
     this->Sweep(order, neighbours);
     this->Release();
   }
@@ -189,6 +194,26 @@ private:
     const bool lowInFront = (eyeSide > 0.0) == (lowSide > 0.0);
     const bool tInFront = low == t ? lowInFront : !lowInFront;
     return tInFront ? -1 : 1;
+  }
+
+  /// The tetrahedra in front of each across a gap, AheadOf[AheadFirst[t] .. AheadFirst[t + 1]), and
+  /// each one's count of those behind it added to Waiting.
+  void IndexGaps(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& gaps, std::size_t count)
+  {
+    this->AheadFirst.assign(gaps.empty() ? 0 : count + 1, 0);
+    this->AheadOf.resize(gaps.size());
+    if (gaps.empty())
+      return;
+    for (const auto& gap : gaps)
+    {
+      ++this->AheadFirst[gap.second + 1];
+      ++this->Waiting[gap.first];
+    }
+    for (std::size_t t = 0; t < count; ++t)
+      this->AheadFirst[t + 1] += this->AheadFirst[t];
+    std::vector<std::uint32_t> next(this->AheadFirst.begin(), this->AheadFirst.end() - 1);
+    for (const auto& gap : gaps)
+      this->AheadOf[next[gap.second]++] = gap.first;
   }
 
   void Sweep(std::vector<std::uint32_t>& order, const std::vector<std::int32_t>& neighbours)
@@ -244,19 +269,33 @@ private:
         // t is behind u (or beside it, in u's plane: no constraint, nothing to count).
         if (!this->FacesBehindContain(static_cast<std::size_t>(u), t, neighbours))
           continue;
-        if (--this->Waiting[static_cast<std::size_t>(u)] == 0 && ((state & Passed) || !(state & Drawn)))
-        {
-          state |= Placed;
-          this->Stack.push_back(static_cast<std::uint32_t>(u));
-        }
+        this->OneBehindPlaced(static_cast<std::uint32_t>(u));
       }
+      if (!this->AheadFirst.empty())
+        for (std::uint32_t k = this->AheadFirst[t]; k < this->AheadFirst[t + 1]; ++k)
+          if (!(this->State[this->AheadOf[k]] & Placed))
+            this->OneBehindPlaced(this->AheadOf[k]);
+    }
+  }
+
+  /// One tetrahedron behind u is placed: u goes on the stack once nothing behind it waits and its
+  /// turn came (or it is not drawn).
+  void OneBehindPlaced(std::uint32_t u)
+  {
+    std::uint8_t& state = this->State[u];
+    if (--this->Waiting[u] == 0 && ((state & Passed) || !(state & Drawn)))
+    {
+      state |= Placed;
+      this->Stack.push_back(u);
     }
   }
 
   void Release()
   {
     std::vector<std::uint8_t>().swap(this->Behind);
-    std::vector<std::uint8_t>().swap(this->Waiting);
+    std::vector<std::uint32_t>().swap(this->Waiting);
+    std::vector<std::uint32_t>().swap(this->AheadFirst);
+    std::vector<std::uint32_t>().swap(this->AheadOf);
     std::vector<std::uint8_t>().swap(this->State);
     std::vector<std::uint32_t>().swap(this->NewOrder);
     std::vector<std::uint32_t>().swap(this->Stack);
@@ -272,7 +311,8 @@ private:
   }
 
   std::vector<std::uint8_t> Behind;  // per tetrahedron: bit k, the neighbour across face k is behind it
-  std::vector<std::uint8_t> Waiting; // neighbours behind it not yet placed
+  std::vector<std::uint32_t> Waiting; // neighbours (and tetrahedra across gaps) behind it not yet placed
+  std::vector<std::uint32_t> AheadFirst, AheadOf; // IndexGaps
   std::vector<std::uint8_t> State;
   std::vector<std::uint32_t> NewOrder, Stack;
 };

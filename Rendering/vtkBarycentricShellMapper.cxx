@@ -472,7 +472,7 @@ void vtkBarycentricShellMapper::Internals::UpdateOrder(const vtkUnstructuredVolu
 {
   const glm::dvec3 center = this->Mesh.Center;
   this->Order.Update(this->Mesh, this->Lists.Drawn, frame.EyeInModel(center), frame.ViewInModel(center),
-    frame.Parallel, false, exact);
+    frame.Parallel, false, exact, frame.Pixels(center));
 }
 
 // ---- Upload's steps.
@@ -863,6 +863,7 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   {
     impl.UpdateOrder(frame, this->VisibilityOrder == FACE_ORDER);
     this->NumberOfCyclesBroken = static_cast<vtkIdType>(impl.Order.CyclesBroken);
+    this->NumberOfGapConstraints = static_cast<vtkIdType>(impl.Order.GapConstraints);
   }
   else if (!impl.UpdateShells(this, frame))
   {

@@ -398,8 +398,10 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   // back to front, which needs no mask passes.
   impl.FrontToBack = this->ChooseFrontToBack();
   impl.Order.Update(impl.Mesh, impl.Visible.Drawn, frame.EyeInModel(impl.Mesh.Center),
-    frame.ViewInModel(impl.Mesh.Center), frame.Parallel, impl.FrontToBack, this->VisibilityOrder == FACE_ORDER);
+    frame.ViewInModel(impl.Mesh.Center), frame.Parallel, impl.FrontToBack, this->VisibilityOrder == FACE_ORDER,
+    frame.Pixels(impl.Mesh.Center));
   this->NumberOfCyclesBroken = static_cast<vtkIdType>(impl.Order.CyclesBroken);
+  this->NumberOfGapConstraints = static_cast<vtkIdType>(impl.Order.GapConstraints);
   return true;
 }
 

@@ -11,6 +11,7 @@
 #ifndef vtkUnstructuredVolumeFrame_h
 #define vtkUnstructuredVolumeFrame_h
 
+#include "uvBoundaryGapOrder.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
 #include "vtkCamera.h"
@@ -100,6 +101,15 @@ struct vtkUnstructuredVolumeFrame
   glm::dvec3 ViewInModel(const glm::dvec3& center) const
   {
     return glm::normalize(glm::dvec3(glm::inverse(this->ModelToEye(center)) * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
+  }
+  /// The rays of this frame's pixels in model space (uvBoundaryGapOrder.h).
+  uv::PixelGrid Pixels(const glm::dvec3& center) const
+  {
+    uv::PixelGrid grid;
+    grid.ModelToClip = this->ModelToClip(center);
+    grid.Width = this->Width;
+    grid.Height = this->Height;
+    return grid;
   }
   /// Eye-space normals from model-space ones (inverse transpose).
   glm::dmat3 ModelToEyeNormals(const glm::dvec3& center) const

@@ -146,15 +146,19 @@ public:
   /// mapper, the shells' cell projection). CENTROID_ORDER: by the distance of their centroids from
   /// the eye, which is wrong for some pairs of long, twisted or nearby tetrahedra. FACE_ORDER: that
   /// order changed wherever two tetrahedra sharing a face are in the wrong order for the side of
-  /// the face the eye is on (MPVO; uvFaceAdjacencyOrder.h): exact on convex meshes, and across the
-  /// gaps of a non-convex mesh the centroid order stands. It costs a face adjacency (16 bytes per
-  /// tetrahedron, built once per mesh) and a serial sweep per view. GetNumberOfCyclesBroken: the
-  /// tetrahedra drawn before a neighbour behind them because the constraints formed a cycle.
+  /// the face the eye is on (MPVO; uvFaceAdjacencyOrder.h), and where the mesh is not convex, for
+  /// each pair of tetrahedra a pixel's ray leaves the mesh from and enters it again by
+  /// (uvBoundaryGapOrder.h): exact along every pixel's ray unless the constraints form a cycle. It
+  /// costs a face adjacency (16 bytes per tetrahedron, built once per mesh), a serial sweep per
+  /// view and, on a non-convex mesh, the rays through its boundary faces per view.
+  /// GetNumberOfCyclesBroken: the tetrahedra drawn before a neighbour behind them because the
+  /// constraints formed a cycle. GetNumberOfGapConstraints: the pairs across gaps in the last order.
   vtkSetClampMacro(VisibilityOrder, int, CENTROID_ORDER, FACE_ORDER);
   vtkGetMacro(VisibilityOrder, int);
   void SetVisibilityOrderToCentroidOrder() { this->SetVisibilityOrder(CENTROID_ORDER); }
   void SetVisibilityOrderToFaceOrder() { this->SetVisibilityOrder(FACE_ORDER); }
   vtkGetMacro(NumberOfCyclesBroken, vtkIdType);
+  vtkGetMacro(NumberOfGapConstraints, vtkIdType);
   ///@}
 
   enum GradientModes
@@ -264,7 +268,8 @@ protected:
   int VisibilityOrder = FACE_ORDER;
   int GradientMode = VERTEX_GRADIENTS;
   char* GradientArrayName = nullptr;
-  vtkIdType NumberOfCyclesBroken = 0; ///< set by the mappers that order tetrahedra
+  vtkIdType NumberOfCyclesBroken = 0;   ///< set by the mappers that order tetrahedra
+  vtkIdType NumberOfGapConstraints = 0; ///< likewise
   struct
   {
     int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;

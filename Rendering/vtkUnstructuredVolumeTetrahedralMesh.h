@@ -7,6 +7,7 @@
 #define vtkUnstructuredVolumeTetrahedralMesh_h
 
 #include "uvCellVisibility.h"
+#include "uvBoundaryGapOrder.h"
 #include "uvFaceAdjacencyOrder.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
@@ -420,17 +421,22 @@ public:
   std::vector<std::uint32_t> Order;
   int Sorts = 0;
   std::size_t CyclesBroken = 0; ///< of the last exact order
+  std::size_t GapConstraints = 0; ///< pairs across a non-convex mesh's gaps in the last exact order
   std::uint64_t Version = 0; ///< bumped by every sort
 
   void Invalidate() { this->Valid = false; }
 
   /// Eye and view direction in the mesh's recentred frame; back to front, or front to back as its
   /// exact reverse (so that compositing either way sums the same terms). True when the order changed.
+  /// With `exact`, `pixels` are the image's rays: across the gaps of a non-convex mesh the order is
+  /// made exact along them (uvBoundaryGapOrder.h).
   bool Update(const TetrahedralMesh& mesh, const std::vector<std::uint32_t>& cells, const glm::dvec3& eye,
-    const glm::dvec3& direction, bool parallel, bool frontToBack = false, bool exact = false)
+    const glm::dvec3& direction, bool parallel, bool frontToBack = false, bool exact = false,
+    const uv::PixelGrid& pixels = {})
   {
     if (this->Valid && mesh.PositionsVersion == this->PositionsFor && eye == this->Eye &&
-      direction == this->Direction && parallel == this->Parallel && exact == this->Exact)
+      direction == this->Direction && parallel == this->Parallel && exact == this->Exact &&
+      (!exact || pixels == this->Pixels))
     {
       if (frontToBack == this->FrontToBack)
         return false;
@@ -441,8 +447,9 @@ public:
     }
     this->SortByCentroids(mesh, cells, eye, direction, parallel);
     this->CyclesBroken = 0;
+    this->GapConstraints = 0;
     if (exact)
-      this->FollowFaces(mesh, parallel ? -direction : eye, parallel);
+      this->FollowFaces(mesh, parallel ? -direction : eye, parallel, pixels);
     if (frontToBack)
       std::reverse(this->Order.begin(), this->Order.end());
     this->FrontToBack = frontToBack;
@@ -450,6 +457,7 @@ public:
     this->Direction = direction;
     this->Parallel = parallel;
     this->Exact = exact;
+    this->Pixels = pixels;
     this->PositionsFor = mesh.PositionsVersion;
     this->Valid = true;
     ++this->Sorts;
@@ -462,7 +470,7 @@ public:
   std::size_t GetBytes() const
   {
     return sizeof(std::uint32_t) * this->Order.capacity() + sizeof(std::int32_t) * this->Adjacency.capacity() +
-      this->Faces.GetBytes();
+      sizeof(this->Boundary[0]) * this->Boundary.capacity() + this->Faces.GetBytes();
   }
 
 private:
@@ -492,7 +500,7 @@ private:
 
   /// The back-to-front centroid order made exact across faces; `eye` is the direction towards the
   /// eye under parallel projection.
-  void FollowFaces(const TetrahedralMesh& mesh, const glm::dvec3& eye, bool parallel)
+  void FollowFaces(const TetrahedralMesh& mesh, const glm::dvec3& eye, bool parallel, const uv::PixelGrid& pixels)
   {
     // Faces match by the input's point ids (a cell scalar gives each tetrahedron points of its own).
     const std::vector<std::uint32_t>& drawn = mesh.TetrahedronPoints;
@@ -520,17 +528,44 @@ private:
       const float* p = points + 4 * static_cast<std::size_t>(drawn[4 * t + k]);
       return glm::dvec3(p[0], p[1], p[2]);
     };
+    // Gaps: only where the boundary is not convex (decided once per mesh and positions).
+    if (this->BoundaryFor != std::make_pair(mesh.TopologyVersion, mesh.PositionsVersion))
+    {
+      this->ConvexBoundary = uv::BoundaryIsConvex(ids, position, this->Adjacency);
+      this->Boundary.clear();
+      if (!this->ConvexBoundary)
+        this->Boundary = uv::FacesOffTheHull(uv::BoundaryFaces(this->Adjacency), position,
+          [](std::size_t count, const auto& run) {
+            vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+              run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+            });
+          });
+      this->BoundaryFor = { mesh.TopologyVersion, mesh.PositionsVersion };
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
+    if (!this->Boundary.empty() && pixels.Width > 0 && pixels.Height > 0)
+      gaps = uv::GapConstraints(this->Boundary, position, pixels, [](std::size_t count, const auto& run) {
+        vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1, [&](vtkIdType begin, vtkIdType end) {
+          run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+        });
+      });
+    this->GapConstraints = gaps.size();
     this->Faces.Sort(this->Order, ids, position, this->Adjacency, eye, parallel,
       [](std::size_t count, const auto& run) {
         vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
           run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
         });
-      });
+      },
+      gaps);
     this->CyclesBroken = this->Faces.CyclesBroken;
   }
 
   std::vector<std::int32_t> Adjacency;
   std::uint64_t AdjacencyFor = 0; // the mesh's TopologyVersion
+  std::vector<std::pair<std::uint32_t, int>> Boundary; // boundary faces off a non-convex mesh's hull
+  bool ConvexBoundary = false;
+  std::pair<std::uint64_t, std::uint64_t> BoundaryFor{ 0, 0 }; // TopologyVersion, PositionsVersion
+  uv::PixelGrid Pixels;
   uv::FaceAdjacencyOrder Faces;
   glm::dvec3 Eye{ 0.0 }, Direction{ 0.0 };
   bool Parallel = false, Valid = false, FrontToBack = false, Exact = false;

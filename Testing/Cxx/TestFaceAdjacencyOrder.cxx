@@ -2,9 +2,12 @@
 // independently by rays (along every sampled ray the tetrahedra it crosses come back to front), from
 // eyes outside, inside and at infinity; a centroid order fails the same check; every face constraint
 // holds on a twisted mesh; tetrahedra left out of the order still pass constraints on.
+#include "uvBoundaryGapOrder.h"
 #include "uvFaceAdjacencyOrder.h"
 
 #include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +27,8 @@ struct Mesh
 
 /// n^3 cubes, each split into the 6 tetrahedra around its main diagonal (a conforming mesh), with
 /// the points moved by `warp`.
-template <typename Warp>
-Mesh Cubes(int n, Warp warp)
+template <typename Warp, typename Keep>
+Mesh Cubes(int n, Warp warp, Keep keep)
 {
   Mesh mesh;
   auto id = [n](int i, int j, int k) { return static_cast<std::uint32_t>((k * (n + 1) + j) * (n + 1) + i); };
@@ -39,6 +42,8 @@ Mesh Cubes(int n, Warp warp)
       for (int i = 0; i < n; ++i)
         for (const auto& path : paths)
         {
+          if (!keep(i, j, k))
+            break;
           int c[3] = { i, j, k };
           mesh.Corners.push_back(id(c[0], c[1], c[2]));
           for (int axis : path)
@@ -48,6 +53,12 @@ Mesh Cubes(int n, Warp warp)
           }
         }
   return mesh;
+}
+
+template <typename Warp>
+Mesh Cubes(int n, Warp warp)
+{
+  return Cubes(n, warp, [](int, int, int) { return true; });
 }
 
 const auto Serial = [](std::size_t count, const auto& run) { run(0, count); };
@@ -240,4 +251,159 @@ TEST(FaceAdjacencyOrder, ConstraintsHoldOnATwistedMeshAndThroughCellsLeftOut)
         ++violated;
     }
   EXPECT_EQ(violated, 0);
+}
+
+namespace
+{
+/// Pairs of tetrahedra met in the wrong order (the nearer drawn first) by the rays of `grid`'s pixels.
+int WrongOrderAlongPixelRays(const Mesh& mesh, const std::vector<std::uint32_t>& order, const uv::PixelGrid& grid)
+{
+  std::vector<std::size_t> place(mesh.Count(), 0);
+  for (std::size_t p = 0; p < order.size(); ++p)
+    place[order[p]] = p;
+  const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
+  int wrong = 0;
+  for (int y = 0; y < grid.Height; ++y)
+    for (int x = 0; x < grid.Width; ++x)
+    {
+      glm::dvec3 origin, step;
+      grid.Ray(x, y, clipToModel, origin, step);
+      std::vector<std::pair<double, std::uint32_t>> met;
+      for (std::uint32_t t : order)
+      {
+        double enter, leave;
+        if (Crossing(mesh, t, origin, step, enter, leave) && leave - enter > 1e-9)
+          met.emplace_back(0.5 * (enter + leave), t);
+      }
+      std::sort(met.begin(), met.end());
+      for (std::size_t m = 1; m < met.size(); ++m)
+        if (place[met[m].second] > place[met[m - 1].second])
+          ++wrong;
+    }
+  return wrong;
+}
+
+/// The face order of every tetrahedron for the pixels of `grid` seen from `eye` (or along it,
+/// parallel), with the gap constraints or without.
+std::vector<std::uint32_t> OrderForPixels(const Mesh& mesh, const uv::PixelGrid& grid, const glm::dvec3& eye,
+  bool parallel, bool gaps, std::size_t& constraints, std::size_t& cycles)
+{
+  const auto neighbours = Adjacency(mesh);
+  const auto position = [&](std::size_t t, int k) { return mesh.At(t, k); };
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  if (gaps)
+    pairs = uv::GapConstraints(uv::BoundaryFaces(neighbours), position, grid, Serial);
+  constraints = pairs.size();
+  std::vector<std::uint32_t> order = CentroidOrder(mesh, All(mesh), eye, parallel);
+  uv::FaceAdjacencyOrder sorter;
+  sorter.Sort(order, mesh.Corners, position, neighbours, eye, parallel, Serial, pairs);
+  cycles = sorter.CyclesBroken;
+  return order;
+}
+
+/// A long plate and a block floating above its near end: each one cube of 6 tetrahedra. From above
+/// the plate's far end, rays through the block go on to the plate, whose long tetrahedra have
+/// their centroids nearer the eye than the block's.
+Mesh PlateAndBlock()
+{
+  const auto box = [](glm::dvec3 low, glm::dvec3 high) {
+    return Cubes(1, [=](glm::dvec3 p) { return low + (high - low) * p; });
+  };
+  Mesh mesh = box({ -2.0, 0.0, 0.0 }, { 10.0, 1.0, 0.3 });
+  const Mesh block = box({ 1.0, 0.0, 1.0 }, { 2.0, 1.0, 1.5 });
+  const auto offset = static_cast<std::uint32_t>(mesh.Points.size());
+  mesh.Points.insert(mesh.Points.end(), block.Points.begin(), block.Points.end());
+  for (std::uint32_t id : block.Corners)
+    mesh.Corners.push_back(id + offset);
+  return mesh;
+}
+
+const glm::dvec3 Target(1.5, 0.5, 0.7);
+
+uv::PixelGrid Perspective(const glm::dvec3& eye, int size)
+{
+  uv::PixelGrid grid;
+  grid.ModelToClip =
+    glm::perspective(glm::radians(40.0), 1.0, 0.05, 30.0) * glm::lookAt(eye, Target, glm::dvec3(0.0, 0.0, 1.0));
+  grid.Width = grid.Height = size;
+  return grid;
+}
+}
+
+TEST(BoundaryGapOrder, ConvexityOfTheBoundary)
+{
+  const auto identity = [](glm::dvec3 p) { return p; };
+  const auto convex = [](const Mesh& mesh) {
+    return uv::BoundaryIsConvex(mesh.Corners, [&](std::size_t t, int k) { return mesh.At(t, k); }, Adjacency(mesh));
+  };
+  EXPECT_TRUE(convex(Cubes(3, identity)));
+  EXPECT_TRUE(convex(Cubes(3, [](glm::dvec3 p) { return glm::dvec3(p.x + 0.8 * p.z, p.y, 0.3 * p.z); })));
+  EXPECT_FALSE(convex(PlateAndBlock()));
+  // Two separate cubes: each convex, their union not.
+  EXPECT_FALSE(convex(Cubes(3, identity, [](int i, int, int) { return i != 1; })));
+  // A dent: one corner cube left out.
+  EXPECT_FALSE(convex(Cubes(3, identity, [](int i, int j, int k) { return i + j + k > 0; })));
+}
+
+TEST(BoundaryGapOrder, PixelRaysMeetTheOrderBackToFrontAcrossGaps)
+{
+  const Mesh mesh = PlateAndBlock();
+  const std::vector<glm::dvec3> eyes = { { 6.0, 0.5, 4.0 }, { 8.0, 0.2, 2.5 }, { 4.0, 1.5, 3.0 } };
+  int withoutGaps = 0;
+  for (const glm::dvec3& eye : eyes)
+  {
+    const uv::PixelGrid grid = Perspective(eye, 40);
+    std::size_t constraints = 0, cycles = 0;
+    const auto order = OrderForPixels(mesh, grid, eye, false, true, constraints, cycles);
+    auto sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, All(mesh));
+    EXPECT_GT(constraints, 0u);
+    EXPECT_EQ(cycles, 0u);
+    EXPECT_EQ(WrongOrderAlongPixelRays(mesh, order, grid), 0) << eye.x << " " << eye.y << " " << eye.z;
+    withoutGaps += WrongOrderAlongPixelRays(mesh, OrderForPixels(mesh, grid, eye, false, false, constraints, cycles), grid);
+  }
+  EXPECT_GT(withoutGaps, 0); // the check can fail: the face order alone does across the gap
+}
+
+TEST(BoundaryGapOrder, ParallelProjection)
+{
+  const Mesh mesh = PlateAndBlock();
+  const glm::dvec3 towardsEye = glm::normalize(glm::dvec3(4.5, 0.0, 2.75));
+  uv::PixelGrid grid;
+  grid.ModelToClip = glm::ortho(-2.0, 2.0, -2.0, 2.0, 0.1, 30.0) *
+    glm::lookAt(Target + 8.0 * towardsEye, Target, glm::dvec3(0.0, 0.0, 1.0));
+  grid.Width = grid.Height = 40;
+  std::size_t constraints = 0, cycles = 0;
+  const auto order = OrderForPixels(mesh, grid, towardsEye, true, true, constraints, cycles);
+  EXPECT_GT(constraints, 0u);
+  EXPECT_EQ(WrongOrderAlongPixelRays(mesh, order, grid), 0);
+  const auto faceOnly = OrderForPixels(mesh, grid, towardsEye, true, false, constraints, cycles);
+  EXPECT_GT(WrongOrderAlongPixelRays(mesh, faceOnly, grid), 0);
+}
+
+TEST(BoundaryGapOrder, AConvexMeshHasNoGapConstraint)
+{
+  const Mesh mesh = Cubes(4, [](glm::dvec3 p) { return glm::dvec3(p.x + 0.8 * p.z, p.y, p.z * 0.3); });
+  const auto neighbours = Adjacency(mesh);
+  const auto pairs = uv::GapConstraints(uv::BoundaryFaces(neighbours),
+    [&](std::size_t t, int k) { return mesh.At(t, k); }, Perspective(glm::dvec3(3.0, -2.0, 1.5), 40), Serial);
+  EXPECT_TRUE(pairs.empty());
+}
+
+TEST(BoundaryGapOrder, FacesOnTheHullAddNoPair)
+{
+  // The rays of the faces off the hull alone find the very pairs all boundary faces find.
+  const Mesh mesh = PlateAndBlock();
+  const auto position = [&](std::size_t t, int k) { return mesh.At(t, k); };
+  const auto boundary = uv::BoundaryFaces(Adjacency(mesh));
+  const auto off = uv::FacesOffTheHull(boundary, position, Serial);
+  // The plate's top and the block's bottom and two ends (2 triangles each) are off the hull.
+  EXPECT_EQ(off.size(), 8u);
+  EXPECT_EQ(boundary.size(), 24u);
+  for (const glm::dvec3& eye : { glm::dvec3(6.0, 0.5, 4.0), glm::dvec3(-3.0, 0.2, 1.2), glm::dvec3(1.5, 0.5, 0.6) })
+  {
+    const auto all = uv::GapConstraints(boundary, position, Perspective(eye, 40), Serial);
+    EXPECT_EQ(uv::GapConstraints(off, position, Perspective(eye, 40), Serial), all);
+  }
 }

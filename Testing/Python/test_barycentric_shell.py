@@ -9,9 +9,9 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
-                      analytic, camera_for, check_geometry_shown_later, copy_image, covered_colour_error,
-                      finite_image, inside_camera, plane_scene_setup, reference, rmse, spike_property,
-                      thin_shell_property, transparent_property)
+                      analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
+                      covered_colour_error, finite_image, inside_camera, plane_scene_setup, reference, rmse,
+                      spike_property, thin_shell_property, transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
                                 vtkVolumeImageErrorMetrics)
@@ -105,6 +105,9 @@ class AccuracyTests(SceneTestCase):
         self.assertLess(face, 2e-6)
         self.assertGreater(centroid, 1e-4)
         self.assertEqual(scene.mapper.GetNumberOfCyclesBroken(), 0)
+
+    def test_cell_projection_face_order_across_the_gap_of_a_non_convex_mesh(self):
+        check_order_across_a_gap(self, mapper_class=vtkBarycentricShellMapper, RenderMode=CELL_PROJECTION)
 
     def test_spike_transfer_function_parallel(self):
         # A thin opaque spike: the samples' segments are pre-integrated across it, so sampling does

@@ -7,8 +7,8 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
-                      analytic, camera_for, check_geometry_shown_later, copy_image, finite_image, inside_camera,
-                      reference, rmse, spike_property)
+                      analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
+                      finite_image, inside_camera, reference, rmse, spike_property)
 
 from unstructuredvolume import vtkAnalyticMeshSource  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
@@ -82,6 +82,11 @@ class AccuracyTests(SceneTestCase):
         self.assertLess(error, 2e-6)
         self.assertGreater(centroid, 1e-4)
         self.assertEqual(scene.mapper.GetNumberOfCyclesBroken(), 0)
+
+    def test_face_order_across_the_gap_of_a_non_convex_mesh(self):
+        # No face joins the block to the plate behind it: the pixels' rays through the boundary
+        # faces order them (the centroid order stood there before).
+        check_order_across_a_gap(self)
 
     def test_thin_spike_jittered_mesh(self):
         # A spike 4% of the range wide: cutting at transfer-function nodes keeps it exact.

@@ -1,0 +1,353 @@
+// Visibility across the gaps of a non-convex mesh of tetrahedra, free of VTK.
+//
+// The face order (uvFaceAdjacencyOrder.h) is exact wherever a ray goes from one tetrahedron into
+// the next through a shared face. Where the mesh is not convex, a ray can leave it through a boundary
+// face and enter it again further on; nothing orders those two tetrahedra, and the centroid order
+// that stands in for a constraint is wrong for some pairs. An image only needs the order along the
+// rays through its pixel centres, so the missing constraints are found by those rays (as the
+// sampled variant of Cook, Max, Silva and Williams' XMPVO does): each boundary face is intersected
+// with the rays of the pixels its projection covers, and along each ray the tetrahedron it enters
+// next after leaving the mesh lies behind the one it left. Together with the face constraints,
+// every ray's tetrahedra are then ordered back to front.
+//
+// A convex mesh has no gap; BoundaryIsConvex tells it once per mesh so that its views skip the rays.
+#ifndef uvBoundaryGapOrder_h
+#define uvBoundaryGapOrder_h
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace uv
+{
+
+/// The rays of an image: pixel (x, y) looks along the ray through its centre (x + 0.5, y + 0.5),
+/// from the near plane (parameter 0) towards the far plane (parameter 1). Model space, any projection.
+struct PixelGrid
+{
+  glm::dmat4 ModelToClip{ 1.0 };
+  int Width = 0, Height = 0;
+
+  bool operator==(const PixelGrid& other) const
+  {
+    return this->ModelToClip == other.ModelToClip && this->Width == other.Width && this->Height == other.Height;
+  }
+  bool operator!=(const PixelGrid& other) const { return !(*this == other); }
+
+  /// The ray of pixel (x, y): its point on the near plane and the step to the far plane.
+  void Ray(int x, int y, const glm::dmat4& clipToModel, glm::dvec3& origin, glm::dvec3& step) const
+  {
+    const double u = 2.0 * (x + 0.5) / this->Width - 1.0, v = 2.0 * (y + 0.5) / this->Height - 1.0;
+    const glm::dvec4 near = clipToModel * glm::dvec4(u, v, -1.0, 1.0), far = clipToModel * glm::dvec4(u, v, 1.0, 1.0);
+    origin = glm::dvec3(near) / near.w;
+    step = glm::dvec3(far) / far.w - origin;
+  }
+};
+
+/// The pixels whose centres a triangle can cover, clipped to the grid; false where none (behind the
+/// near plane or off the image). The part beyond the near plane is projected, so a triangle that
+/// crosses it is bounded too.
+inline bool ScreenBounds(const PixelGrid& grid, const glm::dvec3 (&p)[3], int& x0, int& x1, int& y0, int& y1)
+{
+  glm::dvec4 clip[3];
+  for (int j = 0; j < 3; ++j)
+    clip[j] = grid.ModelToClip * glm::dvec4(p[j], 1.0);
+  // Clip against the near plane z >= -w (one Sutherland-Hodgman step), then project.
+  glm::dvec4 kept[4];
+  int count = 0;
+  for (int j = 0; j < 3; ++j)
+  {
+    const glm::dvec4 &a = clip[j], &b = clip[(j + 1) % 3];
+    const double da = a.z + a.w, db = b.z + b.w;
+    if (da >= 0.0)
+      kept[count++] = a;
+    if ((da >= 0.0) != (db >= 0.0))
+      kept[count++] = a + (b - a) * (da / (da - db));
+  }
+  if (count == 0)
+    return false;
+  double low[2] = { 1e300, 1e300 }, high[2] = { -1e300, -1e300 };
+  for (int j = 0; j < count; ++j)
+  {
+    const double w = std::max(kept[j].w, 1e-300);
+    const double sx = (kept[j].x / w + 1.0) * 0.5 * grid.Width, sy = (kept[j].y / w + 1.0) * 0.5 * grid.Height;
+    low[0] = std::min(low[0], sx);
+    high[0] = std::max(high[0], sx);
+    low[1] = std::min(low[1], sy);
+    high[1] = std::max(high[1], sy);
+  }
+  // Pixel centres x + 0.5 within the bounds, one pixel wider for rounding.
+  x0 = static_cast<int>(std::max(0.0, std::floor(low[0] - 0.5) - 1.0));
+  y0 = static_cast<int>(std::max(0.0, std::floor(low[1] - 0.5) - 1.0));
+  x1 = static_cast<int>(std::min(grid.Width - 1.0, std::ceil(high[0] - 0.5) + 1.0));
+  y1 = static_cast<int>(std::min(grid.Height - 1.0, std::ceil(high[1] - 0.5) + 1.0));
+  return x0 <= x1 && y0 <= y1;
+}
+
+/// Whether the ray origin + s step (s >= 0) meets the triangle, edges included within rounding
+/// (a ray along an edge meets both faces on it, so no gap is missed); `at` is s there.
+inline bool RayMeetsTriangle(const glm::dvec3& origin, const glm::dvec3& step, const glm::dvec3 (&p)[3], double& at)
+{
+  const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+  const glm::dvec3 h = glm::cross(step, e2);
+  const double det = glm::dot(e1, h);
+  if (det == 0.0)
+    return false; // the ray lies in the triangle's plane: it crosses no volume there
+  const double inverse = 1.0 / det;
+  const glm::dvec3 s = origin - p[0];
+  const double u = glm::dot(s, h) * inverse;
+  const glm::dvec3 q = glm::cross(s, e1);
+  const double v = glm::dot(step, q) * inverse;
+  constexpr double slack = 1e-9;
+  if (u < -slack || v < -slack || u + v > 1.0 + slack)
+    return false;
+  at = glm::dot(e2, q) * inverse;
+  return at >= 0.0;
+}
+
+/// The boundary faces of a mesh: (tetrahedron, corner opposite the face) for each face with no
+/// neighbour in `neighbours` (uvFaceAdjacencyOrder.h's MakeTetrahedronFaceAdjacency).
+inline std::vector<std::pair<std::uint32_t, int>> BoundaryFaces(const std::vector<std::int32_t>& neighbours)
+{
+  std::vector<std::pair<std::uint32_t, int>> faces;
+  for (std::size_t i = 0; i < neighbours.size(); ++i)
+    if (neighbours[i] < 0)
+      faces.emplace_back(static_cast<std::uint32_t>(i / 4), static_cast<int>(i % 4));
+  return faces;
+}
+
+/// Whether the boundary of the mesh bounds a convex region: one connected closed surface, each of
+/// whose edges joins two faces that bend inwards or lie in one plane (within `tolerance` of the
+/// faces' size). Such a surface is convex; any other answer is "no", so that the rays run.
+/// `corners`: 4 point ids per tetrahedron; `position(t, k)`: corner k of tetrahedron t.
+template <typename Position>
+bool BoundaryIsConvex(const std::vector<std::uint32_t>& corners, Position&& position,
+  const std::vector<std::int32_t>& neighbours, double tolerance = 1e-9)
+{
+  const auto faces = BoundaryFaces(neighbours);
+  if (faces.empty())
+    return false;
+  // Each boundary edge (ids ascending) and the faces on it: two for a closed surface.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>> edges;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    const std::uint32_t t = faces[f].first;
+    const int k = faces[f].second;
+    for (int j = 0; j < 3; ++j)
+    {
+      std::uint32_t a = corners[4 * t + (k + 1 + j) % 4], b = corners[4 * t + (k + 1 + (j + 1) % 3) % 4];
+      edges[{ std::min(a, b), std::max(a, b) }].push_back(f);
+    }
+  }
+  std::vector<std::size_t> root(faces.size());
+  std::iota(root.begin(), root.end(), std::size_t(0));
+  const auto find = [&root](std::size_t f) {
+    while (root[f] != f)
+      f = root[f] = root[root[f]];
+    return f;
+  };
+  for (const auto& edge : edges)
+  {
+    if (edge.second.size() != 2)
+      return false; // open or non-manifold
+    const std::size_t f = edge.second[0], g = edge.second[1];
+    // g's corner off the edge must lie on the inner side of f's plane.
+    const std::uint32_t tf = faces[f].first, tg = faces[g].first;
+    const int kf = faces[f].second, kg = faces[g].second;
+    const glm::dvec3 a = position(tf, (kf + 1) % 4), b = position(tf, (kf + 2) % 4), c = position(tf, (kf + 3) % 4);
+    glm::dvec3 normal = glm::cross(b - a, c - a);
+    if (glm::dot(normal, position(tf, kf) - a) > 0.0)
+      normal = -normal; // outward
+    const double size = std::max({ glm::length(b - a), glm::length(c - a), glm::length(c - b) });
+    for (int j = 1; j <= 3; ++j)
+    {
+      const std::uint32_t id = corners[4 * tg + (kg + j) % 4];
+      if (id == edge.first.first || id == edge.first.second)
+        continue;
+      const double height = glm::dot(normal, position(tg, (kg + j) % 4) - a);
+      if (height > tolerance * size * glm::length(normal))
+        return false;
+    }
+    root[find(f)] = find(g);
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (find(f) != find(0))
+      return false;
+  return true;
+}
+
+/// The boundary faces that can be crossed between two others: those off the mesh's convex hull.
+/// A ray enters through a face in a supporting plane of the mesh only before anything else and
+/// leaves through one only after everything, so such a face is never next to a gap and its rays
+/// need not be cast. A face is on the hull when no point of the mesh lies beyond its plane by more
+/// than `tolerance` of the mesh's size; the bounding box tells it at once for faces on its walls,
+/// the boundary points (the hull's corners are among them) for the others.
+template <typename Position, typename ParallelFor>
+std::vector<std::pair<std::uint32_t, int>> FacesOffTheHull(const std::vector<std::pair<std::uint32_t, int>>& faces,
+  Position&& position, ParallelFor&& parallelFor, double tolerance = 1e-9)
+{
+  std::vector<glm::dvec3> points;
+  points.reserve(3 * faces.size());
+  for (const auto& face : faces)
+    for (int j = 1; j <= 3; ++j)
+      points.push_back(position(face.first, (face.second + j) % 4));
+  // Each point once (faces share them): sorted and made unique.
+  const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
+    return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
+  };
+  std::sort(points.begin(), points.end(), less);
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  glm::dvec3 low(1e300), high(-1e300);
+  for (const glm::dvec3& p : points)
+    low = glm::min(low, p), high = glm::max(high, p);
+  const double slack = tolerance * glm::length(high - low);
+  std::vector<std::uint8_t> off(faces.size(), 0);
+  parallelFor(faces.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f)
+    {
+      const std::uint32_t t = faces[f].first;
+      const int k = faces[f].second;
+      const glm::dvec3 a = position(t, (k + 1) % 4), b = position(t, (k + 2) % 4), c = position(t, (k + 3) % 4);
+      glm::dvec3 normal = glm::cross(b - a, c - a);
+      if (glm::dot(normal, position(t, k) - a) > 0.0)
+        normal = -normal;
+      const double length = glm::length(normal);
+      if (!(length > 0.0))
+        continue; // no plane: no volume behind it either
+      normal /= length;
+      const double plane = glm::dot(normal, a) + slack;
+      // The box's farthest corner along the normal bounds every point.
+      const glm::dvec3 corner(normal.x > 0.0 ? high.x : low.x, normal.y > 0.0 ? high.y : low.y,
+        normal.z > 0.0 ? high.z : low.z);
+      if (glm::dot(normal, corner) <= plane)
+        continue;
+      for (const glm::dvec3& p : points)
+        if (glm::dot(normal, p) > plane)
+        {
+          off[f] = 1;
+          break;
+        }
+    }
+  });
+  std::vector<std::pair<std::uint32_t, int>> kept;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (off[f])
+      kept.push_back(faces[f]);
+  return kept;
+}
+
+/// The order constraints a non-convex mesh's gaps add for the rays of `grid`: pairs (front, behind),
+/// each once, meaning a ray through the image leaves the mesh from `front` and enters it again
+/// next at `behind`, which must then be drawn first. `faces` from BoundaryFaces, or only those
+/// FacesOffTheHull (the same pairs, sooner);
+/// `parallelFor(count, function(begin, end))` runs over chunks of faces, in parallel if it likes
+/// (the result does not depend on it).
+template <typename Position, typename ParallelFor>
+std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(const std::vector<std::pair<std::uint32_t, int>>& faces,
+  Position&& position, const PixelGrid& grid, ParallelFor&& parallelFor)
+{
+  struct Crossing
+  {
+    std::uint32_t Pixel;
+    std::uint32_t Tetrahedron;
+    double At; // ray parameter
+    bool Leaves;
+  };
+  // The near and far points of a pixel's ray are affine in the pixel under any projection (w is
+  // constant on a plane of constant depth): three rays give every other.
+  const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
+  glm::dvec3 origin0, step0, originX, stepX, originY, stepY;
+  grid.Ray(0, 0, clipToModel, origin0, step0);
+  grid.Ray(1, 0, clipToModel, originX, stepX);
+  grid.Ray(0, 1, clipToModel, originY, stepY);
+  originX -= origin0, stepX -= step0, originY -= origin0, stepY -= step0;
+
+  constexpr std::size_t chunks = 64;
+  std::vector<std::vector<Crossing>> found(chunks);
+  const std::size_t perChunk = (faces.size() + chunks - 1) / chunks;
+  parallelFor(chunks, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t chunk = begin; chunk < end; ++chunk)
+      for (std::size_t f = chunk * perChunk; f < std::min(faces.size(), (chunk + 1) * perChunk); ++f)
+      {
+        const std::uint32_t t = faces[f].first;
+        const int k = faces[f].second;
+        const glm::dvec3 p[3] = { position(t, (k + 1) % 4), position(t, (k + 2) % 4), position(t, (k + 3) % 4) };
+        glm::dvec3 outward = glm::cross(p[1] - p[0], p[2] - p[0]);
+        if (glm::dot(outward, position(t, k) - p[0]) > 0.0)
+          outward = -outward;
+        int x0, x1, y0, y1;
+        if (!ScreenBounds(grid, p, x0, x1, y0, y1))
+          continue;
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x)
+          {
+            const glm::dvec3 origin = origin0 + double(x) * originX + double(y) * originY;
+            const glm::dvec3 step = step0 + double(x) * stepX + double(y) * stepY;
+            double at;
+            if (RayMeetsTriangle(origin, step, p, at))
+              found[chunk].push_back(
+                { static_cast<std::uint32_t>(y * grid.Width + x), t, at, glm::dot(outward, step) > 0.0 });
+          }
+      }
+  });
+  // Grouped by pixel (counting sort), then each pixel's few crossings along its ray.
+  std::vector<std::uint32_t> first(std::size_t(grid.Width) * grid.Height + 1, 0);
+  for (const auto& list : found)
+    for (const Crossing& c : list)
+      ++first[c.Pixel + 1];
+  for (std::size_t i = 1; i < first.size(); ++i)
+    first[i] += first[i - 1];
+  std::vector<Crossing> crossings(first.back());
+  {
+    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+    for (const auto& list : found)
+      for (const Crossing& c : list)
+        crossings[next[c.Pixel]++] = c;
+  }
+  std::vector<std::vector<Crossing>>().swap(found);
+  // Leaving before entering where they coincide (a gap of width 0).
+  const auto alongRay = [](const Crossing& a, const Crossing& b) {
+    return a.At != b.At ? a.At < b.At : (a.Leaves && !b.Leaves);
+  };
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  std::vector<std::uint32_t> left; // the tetrahedra the ray last left the mesh from
+  for (std::size_t pixel = 0; pixel + 1 < first.size(); ++pixel)
+  {
+    const auto begin = crossings.begin() + first[pixel], end = crossings.begin() + first[pixel + 1];
+    if (end - begin < 2 || (end - begin == 2 && !begin->Leaves && !(begin + 1)->Leaves))
+      continue;
+    std::sort(begin, end, alongRay);
+    if (end - begin == 2 && !begin->Leaves)
+      continue; // in and out: no gap
+    left.clear();
+    for (auto c = begin; c != end; ++c)
+    {
+      if (c->Leaves)
+      {
+        if (c != begin && !(c - 1)->Leaves)
+          left.clear(); // a new exit after an entry: the earlier exits are not next to what follows
+        left.push_back(c->Tetrahedron);
+      }
+      else
+      {
+        for (std::uint32_t front : left)
+          if (front != c->Tetrahedron)
+            pairs.emplace_back(front, c->Tetrahedron);
+      }
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+} // namespace uv
+
+#endif
