@@ -4,13 +4,14 @@
 // the next through a shared face. Where the mesh is not convex, a ray can leave it through a boundary
 // face and enter it again further on; nothing orders those two tetrahedra, and the centroid order
 // that stands in for a constraint is wrong for some pairs. An image only needs the order along the
-// rays through its pixel centres, so the missing constraints are found by those rays (as the
-// sampled variant of Cook, Max, Silva and Williams' XMPVO does): each boundary face is intersected
-// with the rays of the pixels its projection covers, and along each ray the tetrahedron it enters
-// next after leaving the mesh lies behind the one it left. Together with the face constraints,
-// every ray's tetrahedra are then ordered back to front.
+// rays through its pixel centres, so the missing constraints are found by those rays (the idea of
+// Silva, Mitchell and Williams' XMPVO, taken at the pixels): each boundary face is intersected with
+// the rays of the pixels its projection covers, and along each ray the tetrahedron it enters next
+// after leaving the mesh lies behind the one it left. Together with the face constraints, every
+// ray's tetrahedra are then ordered back to front.
 //
-// A convex mesh has no gap; BoundaryIsConvex tells it once per mesh so that its views skip the rays.
+// A convex mesh has no gap; BoundaryIsConvex tells it once per mesh so that its views skip the rays,
+// and FacesOffTheHull leaves out the faces no gap can lie next to.
 #ifndef uvBoundaryGapOrder_h
 #define uvBoundaryGapOrder_h
 
@@ -250,8 +251,8 @@ std::vector<std::pair<std::uint32_t, int>> FacesOffTheHull(const std::vector<std
 /// `parallelFor(count, function(begin, end))` runs over chunks of faces, in parallel if it likes
 /// (the result does not depend on it).
 template <typename Position, typename ParallelFor>
-std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(const std::vector<std::pair<std::uint32_t, int>>& faces,
-  Position&& position, const PixelGrid& grid, ParallelFor&& parallelFor)
+std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
+  const std::vector<std::pair<std::uint32_t, int>>& faces, Position&& position, const PixelGrid& grid, ParallelFor&& parallelFor)
 {
   struct Crossing
   {

@@ -59,8 +59,9 @@ void RadixSortPairs(std::vector<std::uint32_t>& keys, std::vector<std::uint32_t>
   {
     return;
   }
-  const int chunkCount = static_cast<int>(
-    std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(maximumChunks), n / std::max<std::size_t>(1, minimumChunk))));
+  const std::size_t chunksOfMinimum = n / std::max<std::size_t>(1, minimumChunk);
+  const int chunkCount =
+    static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(maximumChunks), chunksOfMinimum)));
   const std::size_t chunkSize = (n + chunkCount - 1) / chunkCount;
   std::vector<std::array<std::uint32_t, buckets>> counts(chunkCount);
   for (int shift = 0; shift < 32; shift += digitBits)

@@ -6,8 +6,8 @@
 #ifndef vtkUnstructuredVolumeTetrahedralMesh_h
 #define vtkUnstructuredVolumeTetrahedralMesh_h
 
-#include "uvCellVisibility.h"
 #include "uvBoundaryGapOrder.h"
+#include "uvCellVisibility.h"
 #include "uvFaceAdjacencyOrder.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
@@ -498,8 +498,16 @@ private:
     uv::RadixSortPairs(keys, this->Order, scratchKeys, scratchOrder, parallelChunks);
   }
 
-  /// The back-to-front centroid order made exact across faces; `eye` is the direction towards the
-  /// eye under parallel projection.
+  /// parallelFor(count, run(begin, end)) of the VTK-free order code, on vtkSMPTools.
+  static void ParallelFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& run)
+  {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
+      run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+    });
+  }
+
+  /// The back-to-front centroid order made exact across faces, and across gaps along `pixels`;
+  /// `eye` is the direction towards the eye under parallel projection.
   void FollowFaces(const TetrahedralMesh& mesh, const glm::dvec3& eye, bool parallel, const uv::PixelGrid& pixels)
   {
     // Faces match by the input's point ids (a cell scalar gives each tetrahedron points of its own).
@@ -515,12 +523,7 @@ private:
     const std::vector<std::uint32_t>& ids = ownPoints ? corners : drawn;
     if (this->AdjacencyFor != mesh.TopologyVersion)
     {
-      this->Adjacency =
-        uv::MakeTetrahedronFaceAdjacency(ids, [](std::size_t count, const auto& run) {
-          vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-            run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-          });
-        });
+      this->Adjacency = uv::MakeTetrahedronFaceAdjacency(ids, ParallelFor);
       this->AdjacencyFor = mesh.TopologyVersion;
     }
     const float* points = mesh.PointData.data();
@@ -528,42 +531,33 @@ private:
       const float* p = points + 4 * static_cast<std::size_t>(drawn[4 * t + k]);
       return glm::dvec3(p[0], p[1], p[2]);
     };
-    // Gaps: only where the boundary is not convex (decided once per mesh and positions).
-    if (this->BoundaryFor != std::make_pair(mesh.TopologyVersion, mesh.PositionsVersion))
-    {
-      this->ConvexBoundary = uv::BoundaryIsConvex(ids, position, this->Adjacency);
-      this->Boundary.clear();
-      if (!this->ConvexBoundary)
-        this->Boundary = uv::FacesOffTheHull(uv::BoundaryFaces(this->Adjacency), position,
-          [](std::size_t count, const auto& run) {
-            vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-              run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-            });
-          });
-      this->BoundaryFor = { mesh.TopologyVersion, mesh.PositionsVersion };
-    }
+    this->UpdateBoundary(mesh, ids, position);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
     if (!this->Boundary.empty() && pixels.Width > 0 && pixels.Height > 0)
-      gaps = uv::GapConstraints(this->Boundary, position, pixels, [](std::size_t count, const auto& run) {
-        vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1, [&](vtkIdType begin, vtkIdType end) {
-          run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-        });
-      });
+      gaps = uv::GapConstraints(this->Boundary, position, pixels, ParallelFor);
     this->GapConstraints = gaps.size();
-    this->Faces.Sort(this->Order, ids, position, this->Adjacency, eye, parallel,
-      [](std::size_t count, const auto& run) {
-        vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-          run(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-        });
-      },
-      gaps);
+    this->Faces.Sort(this->Order, ids, position, this->Adjacency, eye, parallel, ParallelFor, gaps);
     this->CyclesBroken = this->Faces.CyclesBroken;
+  }
+
+  /// The boundary faces a pixel's ray can cross between two others (none on a convex mesh), once
+  /// per mesh and positions.
+  template <typename Position>
+  void UpdateBoundary(const TetrahedralMesh& mesh, const std::vector<std::uint32_t>& ids, const Position& position)
+  {
+    const std::pair<std::uint64_t, std::uint64_t> versions(mesh.TopologyVersion, mesh.PositionsVersion);
+    if (this->BoundaryFor == versions)
+      return;
+    this->Boundary.clear();
+    if (!uv::BoundaryIsConvex(ids, position, this->Adjacency))
+      this->Boundary = uv::FacesOffTheHull(uv::BoundaryFaces(this->Adjacency), position, ParallelFor);
+    this->Boundary.shrink_to_fit();
+    this->BoundaryFor = versions;
   }
 
   std::vector<std::int32_t> Adjacency;
   std::uint64_t AdjacencyFor = 0; // the mesh's TopologyVersion
   std::vector<std::pair<std::uint32_t, int>> Boundary; // boundary faces off a non-convex mesh's hull
-  bool ConvexBoundary = false;
   std::pair<std::uint64_t, std::uint64_t> BoundaryFor{ 0, 0 }; // TopologyVersion, PositionsVersion
   uv::PixelGrid Pixels;
   uv::FaceAdjacencyOrder Faces;
