@@ -1,7 +1,10 @@
 // A pre-integration table for segments of any length up to a tetrahedron's diameter, free of VTK:
 // texel (i, j, k) holds the premultiplied colour and opacity of the segment whose scalar runs
-// linearly from i / (S - 1) to j / (S - 1) over a length of k / (L - 1) times MaxLength, integrated
-// like the fragment shader's exact walk (cut at every node, each piece pre-integrated). Read with
+// linearly from i / (S - 1) to j / (S - 1) over the k-th of L lengths from 0 to MaxLength, integrated
+// like the fragment shader's exact walk (cut at every node, each piece pre-integrated). The lengths
+// are spaced evenly in log(1 + length / LengthScale), LengthScale the length over which the densest
+// node reaches optical depth 1: opacity changes fastest over short segments and hardly at all once
+// a segment is opaque, so dense media (long cells, short unit distances) need their texels short. Read with
 // trilinear filtering it replaces that walk with one texture read, whatever the number of nodes;
 // what the filtering costs is measured against the exact segments when the table is built, so the
 // mapper uses it only where that error is within its tolerance.
@@ -29,6 +32,7 @@ struct TetrahedronSegmentTable
   int ScalarSize = 0;      ///< texels along each scalar axis
   int LengthSize = 0;      ///< texels along the length axis
   double MaxLength = 0.0;  ///< the length of the last texel
+  double LengthScale = 1.0; ///< lengths are spaced evenly in log(1 + length / LengthScale)
   std::vector<float> Texels; ///< RGBA, front scalar fastest, then back scalar, then length
 
   /// The texture coordinate (in [0, 1], texel centres at the ends) of normalised scalar `s`.
@@ -37,11 +41,24 @@ struct TetrahedronSegmentTable
     return (std::min(std::max(s, 0.0), 1.0) * (this->ScalarSize - 1) + 0.5) / this->ScalarSize;
   }
 
+  /// log(1 + MaxLength / LengthScale): the length axis's extent in its warped coordinate.
+  double LengthWarp() const { return std::log1p(this->MaxLength / this->LengthScale); }
+
   /// The texture coordinate of segment `length`.
   double LengthCoordinate(double length) const
   {
-    const double x = this->MaxLength > 0.0 ? std::min(std::max(length / this->MaxLength, 0.0), 1.0) : 0.0;
+    const double x = this->MaxLength > 0.0
+      ? std::min(std::max(std::log1p(std::max(length, 0.0) / this->LengthScale) / this->LengthWarp(), 0.0), 1.0)
+      : 0.0;
     return (x * (this->LengthSize - 1) + 0.5) / this->LengthSize;
+  }
+
+  /// The length texel k holds.
+  double LengthAt(int k) const
+  {
+    if (k >= this->LengthSize - 1)
+      return this->MaxLength;
+    return this->LengthScale * std::expm1(this->LengthWarp() * k / (this->LengthSize - 1));
   }
 
   /// The table read at (sf, sb, length) as a GPU's trilinear filter reads it: premultiplied
@@ -131,13 +148,21 @@ TetrahedronSegmentTable MakeTetrahedronSegmentTable(const TransferFunction& tf, 
   table.ScalarSize = scalarSize;
   table.LengthSize = lengthSize;
   table.MaxLength = maxLength;
+  // Optical depth 1 at the densest node, kept within [1e-4, 1] of the longest: a fully transparent
+  // function spaces the lengths nearly evenly, and the warp stays small enough for float shaders.
+  double densest = 0.0;
+  for (const auto& node : tf.GetNodes())
+    densest = std::max(densest, node.Extinction);
+  table.LengthScale = densest > 0.0 ? std::min(std::max(1.0 / densest, 1e-4 * maxLength), maxLength) : maxLength;
+  if (!(table.LengthScale > 0.0))
+    table.LengthScale = 1.0; // no extent: every length reads texel 0
   table.Texels.resize(4 * static_cast<std::size_t>(scalarSize) * scalarSize * lengthSize);
   forRows(scalarSize * scalarSize, [&](int row) {
     const int i = row % scalarSize, j = row / scalarSize;
     const SegmentPieces pieces(tf, static_cast<double>(i) / (scalarSize - 1), static_cast<double>(j) / (scalarSize - 1));
     for (int k = 0; k < lengthSize; ++k)
     {
-      const RayAccumulator segment = pieces.Integrate(maxLength * k / (lengthSize - 1), psi);
+      const RayAccumulator segment = pieces.Integrate(table.LengthAt(k), psi);
       float* texel = &table.Texels[table.Index(i, j, k)];
       texel[0] = static_cast<float>(segment.Color.r);
       texel[1] = static_cast<float>(segment.Color.g);

@@ -78,10 +78,10 @@ public:
     this->Texture.Bind(program, "segmentLengthTable");
     const uv::TetrahedronSegmentTable& table = this->Table;
     const float scalar[2] = { static_cast<float>(table.ScalarSize - 1) / table.ScalarSize, 0.5f / table.ScalarSize };
-    const float length[2] = { static_cast<float>((table.LengthSize - 1) / (table.LengthSize * table.MaxLength)),
-      0.5f / table.LengthSize };
+    const float length[3] = { static_cast<float>(1.0 / table.LengthScale),
+      static_cast<float>((table.LengthSize - 1) / (table.LengthSize * table.LengthWarp())), 0.5f / table.LengthSize };
     program->SetUniform2f("scalarToTexture", scalar);
-    program->SetUniform2f("lengthToTexture", length);
+    program->SetUniform3f("lengthToTexture", length);
   }
   void Unbind() { this->Texture.Unbind(); }
   void Release() { this->Texture.Release(); }

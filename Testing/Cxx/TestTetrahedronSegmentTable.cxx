@@ -48,8 +48,8 @@ TEST(TetrahedronSegmentTable, TexelsHoldTheExactSegments)
     for (int j : { 0, 9, 16 })
       for (int k : { 0, 4, 8 })
       {
-        const auto read = table.Read(i / 16.0, j / 16.0, 3.0 * k / 8.0);
-        const auto exact = Exact(Ramp(), i / 16.0, j / 16.0, 3.0 * k / 8.0);
+        const auto read = table.Read(i / 16.0, j / 16.0, table.LengthAt(k));
+        const auto exact = Exact(Ramp(), i / 16.0, j / 16.0, table.LengthAt(k));
         for (int c = 0; c < 4; ++c)
           EXPECT_NEAR(read[c], exact[c], 2e-5) << i << " " << j << " " << k << " channel " << c;
       }
@@ -85,6 +85,33 @@ TEST(TetrahedronSegmentTable, ReportedErrorBoundsAnIndependentSampleAndShrinksWi
   // A spike narrower than a texel: the report says the table cannot stand in for the cuts.
   const auto spiky = Table(Spike(), 2.0, 128, 32);
   EXPECT_GT(uv::TetrahedronSegmentTableError(uv::TransferFunction(Spike()), spiky, 4096), 1e-2);
+}
+
+TEST(TetrahedronSegmentTable, DenseMediaCostTheLengthAxisLittle)
+{
+  // The ramp over lengths where its densest value reaches optical depth 3 and 10 (long cells against
+  // a short unit distance, as Blunt Fin's): opacity changes fastest over the shortest lengths, which
+  // get the length axis's texels, so the error stays near what the scalar axes leave (evenly spaced
+  // lengths: 8.9e-3 at depth 10, ten times depth 3's).
+  const uv::TransferFunction ramp(Ramp());
+  const auto error = [&](double depth) {
+    return uv::TetrahedronSegmentTableError(ramp, Table(Ramp(), depth / 0.4, 128, 32), 4096);
+  };
+  const double moderate = error(3.0), dense = error(10.0);
+  EXPECT_LT(dense, 2e-3);
+  EXPECT_LT(dense, 2.0 * moderate);
+  // Texel k along the length still holds the exact segment of its length.
+  const auto table = Table(Ramp(), 10.0 / 0.4, 128, 32);
+  for (int k : { 0, 1, 7, 31 })
+  {
+    const double length = table.LengthAt(k);
+    EXPECT_NEAR(table.LengthCoordinate(length), (k + 0.5) / 32.0, 1e-12) << k;
+    const auto read = table.Read(0.25, 0.75, length);
+    const auto exact = Exact(Ramp(), 0.25, 0.75, length);
+    for (int c = 0; c < 4; ++c)
+      EXPECT_NEAR(read[c], exact[c], 2e-5) << k << " channel " << c;
+  }
+  EXPECT_DOUBLE_EQ(table.LengthAt(31), 10.0 / 0.4);
 }
 
 TEST(TetrahedronSegmentTable, LongestEdgeAndLargestStretch)
