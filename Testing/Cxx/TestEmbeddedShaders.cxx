@@ -69,13 +69,14 @@ protected:
 TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
 {
   const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
-  EXPECT_EQ(all.size(), 24u);
+  EXPECT_EQ(all.size(), 48u); // 24 option sets, with and without the opaque depth
   for (const auto& options : all)
   {
     const std::string variant = std::string("tetrahedra program, ") +
       (options.VertexPulling ? "vertex pulling" : "geometry shader") + (options.Gradients ? ", gradients" : "") +
       (options.NodeTexture ? ", node texture" : "") + (options.CellSurfaces ? ", cell surfaces" : "") +
-      (options.SegmentTable ? ", segment table" : "") + (options.NearPlaneCuts ? ", near-plane cuts" : "");
+      (options.SegmentTable ? ", segment table" : "") + (options.NearPlaneCuts ? ", near-plane cuts" : "") +
+      (options.OpaqueDepth ? ", opaque depth" : "");
     this->ExpectLinks(vtkPreIntegratedTetrahedraPrograms::Sources(options), variant);
   }
 }
