@@ -84,11 +84,16 @@ inline bool ScreenBounds(const PixelGrid& grid, const glm::dvec3 (&p)[3], int& x
     low[1] = std::min(low[1], sy);
     high[1] = std::max(high[1], sy);
   }
-  // Pixel centres x + 0.5 within the bounds, one pixel wider for rounding.
-  x0 = static_cast<int>(std::max(0.0, std::floor(low[0] - 0.5) - 1.0));
-  y0 = static_cast<int>(std::max(0.0, std::floor(low[1] - 0.5) - 1.0));
-  x1 = static_cast<int>(std::min(grid.Width - 1.0, std::ceil(high[0] - 0.5) + 1.0));
-  y1 = static_cast<int>(std::min(grid.Height - 1.0, std::ceil(high[1] - 0.5) + 1.0));
+  // Pixel centres x + 0.5 within the bounds, one pixel wider for rounding; clamped to the image in
+  // double first, as a face just beyond the near plane can project billions of pixels away.
+  const double xLow = std::floor(low[0] - 0.5) - 1.0, xHigh = std::ceil(high[0] - 0.5) + 1.0;
+  const double yLow = std::floor(low[1] - 0.5) - 1.0, yHigh = std::ceil(high[1] - 0.5) + 1.0;
+  if (xLow > grid.Width - 1.0 || yLow > grid.Height - 1.0 || xHigh < 0.0 || yHigh < 0.0)
+    return false;
+  x0 = static_cast<int>(std::max(0.0, xLow));
+  y0 = static_cast<int>(std::max(0.0, yLow));
+  x1 = static_cast<int>(std::min(grid.Width - 1.0, xHigh));
+  y1 = static_cast<int>(std::min(grid.Height - 1.0, yHigh));
   return x0 <= x1 && y0 <= y1;
 }
 

@@ -407,3 +407,29 @@ TEST(BoundaryGapOrder, FacesOnTheHullAddNoPair)
     EXPECT_EQ(uv::GapConstraints(off, position, Perspective(eye, 40), Serial), all);
   }
 }
+
+TEST(BoundaryGapOrder, ScreenBoundsStayOnTheImage)
+{
+  const uv::PixelGrid grid = Perspective(glm::dvec3(6.0, 0.5, 4.0), 40);
+  const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
+  // Model points at normalised device coordinates (x, y), halfway in depth.
+  const auto at = [&](double x, double y) {
+    const glm::dvec4 p = clipToModel * glm::dvec4(x, y, 0.0, 1.0);
+    return glm::dvec3(p) / p.w;
+  };
+  int x0, x1, y0, y1;
+  // A few pixels around pixel (10, 20), whose centre is at ((10.5 / 40) * 2 - 1, (20.5 / 40) * 2 - 1).
+  const glm::dvec3 small[3] = { at(-0.5, 0.0), at(-0.45, 0.05), at(-0.5, 0.05) };
+  ASSERT_TRUE(uv::ScreenBounds(grid, small, x0, x1, y0, y1));
+  EXPECT_TRUE(x0 <= 10 && 10 <= x1 && y0 <= 20 && 20 <= y1) << x0 << " " << x1 << " " << y0 << " " << y1;
+  // Billions of pixels to the side: no pixel (not an int overflow and a loop over billions).
+  const glm::dvec3 aside[3] = { at(1e9, 0.0), at(2e9, 0.0), at(1e9, 1e9) };
+  EXPECT_FALSE(uv::ScreenBounds(grid, aside, x0, x1, y0, y1));
+  // Across the whole image from billions of pixels on either side: the whole image.
+  const glm::dvec3 across[3] = { at(-1e9, -1e9), at(1e9, -1e9), at(0.0, 1e9) };
+  ASSERT_TRUE(uv::ScreenBounds(grid, across, x0, x1, y0, y1));
+  EXPECT_EQ(x0, 0);
+  EXPECT_EQ(x1, 39);
+  EXPECT_EQ(y0, 0);
+  EXPECT_EQ(y1, 39);
+}
