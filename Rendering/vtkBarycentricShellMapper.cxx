@@ -903,7 +903,7 @@ bool vtkBarycentricShellMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vt
   Internals& impl = *this->Impl;
   impl.Mask.AttachAndClear(target, frame.Window->GetState()); // nothing is opaque yet
   target.GetNoAttributes()->Bind(); // every pass pulls its vertices from buffer textures
-  bool opaqueGeometry = false; // nothing drawn before the volume: no pass finds none
+  bool opaqueGeometry = false; // where nothing was drawn before the volume, the pass would find none
   bool drawn = !frame.OpaqueDepth || impl.Opaque.Run(frame, target, opaqueGeometry);
   this->CheckGLErrors("the shells' opaque distances");
   if (!drawn)

@@ -118,14 +118,41 @@ bool Crossing(const Mesh& mesh, std::size_t t, const glm::dvec3& origin, const g
   return enter < leave;
 }
 
+/// Each tetrahedron's place in `order`.
+std::vector<std::size_t> Places(const Mesh& mesh, const std::vector<std::uint32_t>& order)
+{
+  std::vector<std::size_t> place(mesh.Count(), 0);
+  for (std::size_t p = 0; p < order.size(); ++p)
+    place[order[p]] = p;
+  return place;
+}
+
+/// Pairs of consecutive tetrahedra along the ray origin + s direction (s >= 0) drawn in the wrong
+/// order (the nearer first); `place` from Places.
+int WrongOrderAlongRay(const Mesh& mesh, const std::vector<std::uint32_t>& order, const std::vector<std::size_t>& place,
+  const glm::dvec3& origin, const glm::dvec3& direction)
+{
+  std::vector<std::pair<double, std::uint32_t>> met; // (mid parameter, tetrahedron)
+  for (std::uint32_t t : order)
+  {
+    double enter, leave;
+    if (Crossing(mesh, t, origin, direction, enter, leave) && leave - enter > 1e-9)
+      met.emplace_back(0.5 * (enter + leave), t);
+  }
+  std::sort(met.begin(), met.end());
+  int wrong = 0;
+  for (std::size_t m = 1; m < met.size(); ++m)
+    if (place[met[m].second] > place[met[m - 1].second]) // farther drawn after nearer
+      ++wrong;
+  return wrong;
+}
+
 /// Pairs of tetrahedra met by one of `rays` rays in the wrong order (the nearer drawn first), the
 /// rays from the eye (or parallel to `towardsEye`) through random points of the unit box.
 int WrongOrderAlongRays(const Mesh& mesh, const std::vector<std::uint32_t>& order, const glm::dvec3& eye, bool parallel,
   int rays)
 {
-  std::vector<std::size_t> place(mesh.Count(), 0);
-  for (std::size_t p = 0; p < order.size(); ++p)
-    place[order[p]] = p;
+  const std::vector<std::size_t> place = Places(mesh, order);
   std::mt19937 random(5);
   std::uniform_real_distribution<double> unit(0.02, 0.98);
   int wrong = 0;
@@ -134,17 +161,7 @@ int WrongOrderAlongRays(const Mesh& mesh, const std::vector<std::uint32_t>& orde
     const glm::dvec3 target(unit(random), unit(random), unit(random));
     const glm::dvec3 direction = parallel ? -eye : glm::normalize(target - eye);
     const glm::dvec3 origin = parallel ? target - 10.0 * direction : eye;
-    std::vector<std::pair<double, std::uint32_t>> met; // (mid parameter, tetrahedron)
-    for (std::uint32_t t : order)
-    {
-      double enter, leave;
-      if (Crossing(mesh, t, origin, direction, enter, leave) && leave - enter > 1e-9)
-        met.emplace_back(0.5 * (enter + leave), t);
-    }
-    std::sort(met.begin(), met.end());
-    for (std::size_t m = 1; m < met.size(); ++m)
-      if (place[met[m].second] > place[met[m - 1].second]) // farther drawn after nearer
-        ++wrong;
+    wrong += WrongOrderAlongRay(mesh, order, place, origin, direction);
   }
   return wrong;
 }
@@ -231,9 +248,7 @@ TEST(FaceAdjacencyOrder, ConstraintsHoldOnATwistedMeshAndThroughCellsLeftOut)
   EXPECT_EQ(order.size(), drawn.size());
   EXPECT_EQ(WrongOrderAlongRays(mesh, order, eye, false, 400), 0);
   const auto every = ExactOrder(mesh, All(mesh), eye, false);
-  std::vector<std::size_t> place(mesh.Count());
-  for (std::size_t p = 0; p < every.size(); ++p)
-    place[every[p]] = p;
+  const std::vector<std::size_t> place = Places(mesh, every);
   int violated = 0;
   for (std::size_t t = 0; t < mesh.Count(); ++t)
     for (int k = 0; k < 4; ++k)
@@ -258,9 +273,7 @@ namespace
 /// Pairs of tetrahedra met in the wrong order (the nearer drawn first) by the rays of `grid`'s pixels.
 int WrongOrderAlongPixelRays(const Mesh& mesh, const std::vector<std::uint32_t>& order, const uv::PixelGrid& grid)
 {
-  std::vector<std::size_t> place(mesh.Count(), 0);
-  for (std::size_t p = 0; p < order.size(); ++p)
-    place[order[p]] = p;
+  const std::vector<std::size_t> place = Places(mesh, order);
   const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
   int wrong = 0;
   for (int y = 0; y < grid.Height; ++y)
@@ -268,17 +281,7 @@ int WrongOrderAlongPixelRays(const Mesh& mesh, const std::vector<std::uint32_t>&
     {
       glm::dvec3 origin, step;
       grid.Ray(x, y, clipToModel, origin, step);
-      std::vector<std::pair<double, std::uint32_t>> met;
-      for (std::uint32_t t : order)
-      {
-        double enter, leave;
-        if (Crossing(mesh, t, origin, step, enter, leave) && leave - enter > 1e-9)
-          met.emplace_back(0.5 * (enter + leave), t);
-      }
-      std::sort(met.begin(), met.end());
-      for (std::size_t m = 1; m < met.size(); ++m)
-        if (place[met[m].second] > place[met[m - 1].second])
-          ++wrong;
+      wrong += WrongOrderAlongRay(mesh, order, place, origin, step);
     }
   return wrong;
 }
