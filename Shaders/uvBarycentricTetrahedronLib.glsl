@@ -34,6 +34,7 @@ struct EyeTetrahedron
   vec3 gradient; // of the linear field, eye space
   uvec4 ids;
   bool valid;    // false when flat (no inverse)
+  bool positive; // v1 - v0, v2 - v0, v3 - v0 positively oriented in eye space
 };
 
 EyeTetrahedron LoadEyeTetrahedron(int id)
@@ -49,7 +50,9 @@ EyeTetrahedron LoadEyeTetrahedron(int id)
   }
   mat3 edges = mat3(tet.v[1] - tet.v[0], tet.v[2] - tet.v[0], tet.v[3] - tet.v[0]);
   float scale = max(length(edges[0]), max(length(edges[1]), length(edges[2])));
-  tet.valid = abs(determinant(edges)) > 16.0 * 1.1920929e-7 * scale * scale * scale;
+  float volume = determinant(edges);
+  tet.valid = abs(volume) > 16.0 * 1.1920929e-7 * scale * scale * scale;
+  tet.positive = volume > 0.0;
   mat3 edgeInverse = tet.valid ? inverse(edges) : mat3(0.0);
   vec3 q = edgeInverse * -tet.v[0];
   tet.eyeCoordinates = vec4(1.0 - q.x - q.y - q.z, q);
