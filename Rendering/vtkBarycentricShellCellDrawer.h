@@ -64,6 +64,7 @@ public:
   }
 
   void Release() { this->FaceIndices.Release(); }
+  std::size_t GetBytes() const { return this->FaceIndices.GetBytes(); }
 
 private:
   /// The four faces of tetrahedron q as vertices 4q + k, wound outwards when v1 - v0, v2 - v0, v3 - v0

@@ -5,6 +5,7 @@
 #include "uvIsosurfaceList.h"
 #include "uvOpacityMaskFS.h"
 #include "uvFullScreenTriangleVS.h"
+#include "vtkBarycentricShellCellDrawer.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
@@ -79,26 +80,6 @@ std::size_t MaskedBatchSize(std::size_t count)
 {
   return std::max<std::size_t>(4096, (count + 63) / 64);
 }
-
-/// The fan index pattern covers this many tetrahedra; a longer order is drawn in batches of it, each
-/// offset by its first vertex, so the indices take a fixed few megabytes whatever the mesh.
-constexpr std::size_t FanBatch = 1u << 16;
-
-/// Triangle t of the tetrahedron in draw place q is (5q+4, 5q+t, 5q+(t+1)%4): fixed for a count.
-std::vector<std::uint32_t> FanIndices(std::size_t count)
-{
-  std::vector<std::uint32_t> indices(12 * count);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType q = begin; q < end; ++q)
-      for (int t = 0; t < 4; ++t)
-      {
-        indices[12 * q + 3 * t + 0] = static_cast<std::uint32_t>(5 * q + 4);
-        indices[12 * q + 3 * t + 1] = static_cast<std::uint32_t>(5 * q + t);
-        indices[12 * q + 3 * t + 2] = static_cast<std::uint32_t>(5 * q + (t + 1) % 4);
-      }
-  });
-  return indices;
-}
 }
 
 class vtkPreIntegratedTetrahedraMapper::Internals
@@ -129,7 +110,8 @@ public:
 
   // GPU state.
   vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, DrawOrder, NeighbourValues;
-  vtkUnstructuredVolumeIndexBuffer OrderIndices, FanIndices;
+  vtkUnstructuredVolumeIndexBuffer OrderIndices; // geometry-shader route: one point per tetrahedron
+  vtkBarycentricShellCellDrawer Faces;            // vertex pulling: the faces of the draw order
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
   vtkUnstructuredVolumeOpacityMask Mask;
@@ -149,7 +131,7 @@ public:
            &this->PointGradients, &this->DrawOrder, &this->NeighbourValues })
       texture->Release();
     this->OrderIndices.Release();
-    this->FanIndices.Release();
+    this->Faces.Release();
     this->Nodes.Release();
     this->Isosurfaces.Release();
     this->Table.Release();
@@ -191,16 +173,13 @@ public:
     return false;
   }
 
-  /// Draws the tetrahedra in draw places [first, first + count) of the order.
-  void DrawPlaces(bool pulling, std::size_t first, std::size_t count)
+  /// Draws the tetrahedra in draw places [first, first + count) of the order with `program` (bound).
+  void DrawPlaces(vtkOpenGLState* state, vtkShaderProgram* program, bool pulling, std::size_t first, std::size_t count)
   {
-    if (!pulling)
-    {
+    if (pulling)
+      this->Faces.Draw(state, program, this->DrawOrder, first, count);
+    else
       this->OrderIndices.Draw(GL_POINTS, count, first);
-      return;
-    }
-    for (std::size_t place = first; place < first + count; place += FanBatch)
-      this->FanIndices.DrawFromVertex(GL_TRIANGLES, 12 * std::min(FanBatch, first + count - place), 5 * place);
   }
 
   /// Which tetrahedra are drawn: those with some extinction in their range or an isovalue in it
@@ -298,7 +277,7 @@ vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
 {
   const Internals& impl = *this->Impl;
   std::size_t bytes = sizeof(std::uint32_t) * (impl.Mesh.TetrahedronPoints.size() + impl.Order.Order.size()) +
-    sizeof(float) * impl.Mesh.PointData.size() + impl.FanIndices.GetBytes();
+    sizeof(float) * impl.Mesh.PointData.size() + impl.Faces.GetBytes();
   bytes += impl.PointGradients.GetBytes();
   return static_cast<vtkIdType>(bytes);
 }
@@ -423,13 +402,10 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
     uv::IsosurfaceList::Texels(impl.DrawnIsosurfaces));
   if (impl.UseTable)
     impl.Table.Sync(window);
-  const std::size_t count = impl.Order.Order.size();
   if (this->ProjectionRoute == VERTEX_PULLING)
   {
     impl.DrawOrder.Sync(window, impl.Order.Order, 1, impl.Order.Version);
-    const std::size_t pattern = std::min(count, FanBatch);
-    if (impl.FanIndices.GetCount() < 12 * pattern) // the pattern is fixed: it only grows, to one batch
-      impl.FanIndices.Sync(FanIndices(pattern), pattern);
+    impl.Faces.Sync(true);
   }
   else
   {
@@ -454,7 +430,7 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
   if (impl.FrontToBack)
     drawn = this->DrawFrontToBack(frame, target, program);
   else
-    this->DrawBackToFront(frame);
+    this->DrawBackToFront(frame, program);
   this->CheckGLErrors("the projected tetrahedra");
   if (drawn && this->OrderIsChosen())
   {
@@ -522,8 +498,6 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
     impl.PointGradients.Bind(program, "pointGradients");
   if (impl.DrawCellSurfaces)
     impl.NeighbourValues.Bind(program, "neighbourValues");
-  if (options.VertexPulling)
-    impl.DrawOrder.Bind(program, "drawOrder");
   return program;
 }
 
@@ -541,8 +515,6 @@ void vtkPreIntegratedTetrahedraMapper::UnbindTetrahedraResources(vtkUnstructured
     impl.PointGradients.Unbind();
   if (impl.DrawCellSurfaces)
     impl.NeighbourValues.Unbind();
-  if (this->ProjectionRoute == VERTEX_PULLING)
-    impl.DrawOrder.Unbind();
 }
 
 /// Whether this frame reads whole segments from the table: partial pre-integration with nothing
@@ -617,7 +589,8 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyMaskProgram(const vtkUn
 }
 
 /// Every tetrahedron of the order, composited over what is behind it (ONE, ONE_MINUS_SRC_ALPHA).
-void vtkPreIntegratedTetrahedraMapper::DrawBackToFront(const vtkUnstructuredVolumeFrame& frame)
+void vtkPreIntegratedTetrahedraMapper::DrawBackToFront(
+  const vtkUnstructuredVolumeFrame& frame, vtkShaderProgram* program)
 {
   Internals& impl = *this->Impl;
   vtkOpenGLState* state = frame.Window->GetState();
@@ -626,9 +599,9 @@ void vtkPreIntegratedTetrahedraMapper::DrawBackToFront(const vtkUnstructuredVolu
   const std::size_t count = impl.Order.Order.size();
   const bool pulling = this->ProjectionRoute == VERTEX_PULLING;
   if (this->CountShadedFragments)
-    impl.ShadedFragments = uvgl::SamplesPassed([&] { impl.DrawPlaces(pulling, 0, count); });
+    impl.ShadedFragments = uvgl::SamplesPassed([&] { impl.DrawPlaces(state, program, pulling, 0, count); });
   else
-    impl.DrawPlaces(pulling, 0, count);
+    impl.DrawPlaces(state, program, pulling, 0, count);
 }
 
 /// The order front to back in batches, composited under what is in front (ONE_MINUS_DST_ALPHA,
@@ -646,7 +619,7 @@ bool vtkPreIntegratedTetrahedraMapper::DrawFrontToBack(
   impl.Mask.Resize(frame.Window, frame.Width, frame.Height);
   impl.Mask.AttachAndClear(target, state); // nothing is opaque yet
   state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS); // the tetrahedra's fragments lie at depth 0.5: masked ones fail
+  state->vtkglDepthFunc(GL_LESS); // the tetrahedra's fragments lie at depths in [0, 1): masked ones fail
   state->vtkglDepthMask(GL_FALSE);
 
   const std::size_t count = impl.Order.Order.size(), batch = MaskedBatchSize(count);
@@ -659,9 +632,9 @@ bool vtkPreIntegratedTetrahedraMapper::DrawFrontToBack(
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
     if (this->CountShadedFragments)
-      impl.ShadedFragments += uvgl::SamplesPassed([&] { impl.DrawPlaces(pulling, first, n); });
+      impl.ShadedFragments += uvgl::SamplesPassed([&] { impl.DrawPlaces(state, program, pulling, first, n); });
     else
-      impl.DrawPlaces(pulling, first, n);
+      impl.DrawPlaces(state, program, pulling, first, n);
     if (first + n < count)
     {
       shaders->ReadyShaderProgram(mask);

@@ -8,15 +8,22 @@
  * Renders a vtkUnstructuredGrid of tetrahedra with a point or cell scalar by cell projection on the GPU,
  * after "Volume and Isosurface Rendering with GPU-Accelerated Cell Projection" (Marroquim, Maximo,
  * Farias, Esperanca). Each frame the CPU only sorts the visible tetrahedra (parallel radix sort of
- * centroid distances, redone only when the camera or the data changed) and uploads that order; on
- * the GPU each tetrahedron's projection is classified (all classes, including the degenerate 3 and
- * 4), its thick vertex found and its triangle fan emitted (ProjectionRoute: VERTEX_PULLING gives each
- * tetrahedron 5 vertex slots, outline and thick vertex, under a fixed index buffer of 4 triangles;
- * GEOMETRY_SHADER feeds one point per tetrahedron to a geometry shader); the fragment shader
- * integrates the ray segment and the result is composited back to front into a float image that is
- * blended into VTK's scene, clipped at the depth of opaque geometry. Rays begin on the near clipping
- * plane: a tetrahedron crossing it is not projected but ray-cast over its own screen rectangle from
- * the plane on (so a camera inside the mesh sees it correctly), and one wholly before it is not drawn.
+ * centroid distances, or the face order, redone only when the camera or the data changed) and
+ * uploads that order. ProjectionRoute chooses how the GPU turns a tetrahedron into fragments:
+ * - VERTEX_PULLING (default): 4 vertices per tetrahedron under a fixed index pattern of its faces,
+ *   of which the rasteriser keeps the back faces, or the one front face where the outline is a
+ *   triangle with three back faces behind it: 1 or 2 triangles per tetrahedron (3 where such a
+ *   one crosses the near plane). Each
+ *   fragment finds where its ray enters and leaves the tetrahedron from its barycentric coordinates
+ *   (as vtkBarycentricShellMapper's cell projection does). Rays begin on the near clipping plane,
+ *   which clips the back faces, so a camera inside the mesh sees it correctly.
+ * - GEOMETRY_SHADER: the paper's projection: a geometry shader classifies each tetrahedron's
+ *   projection (all classes, including the degenerate 3 and 4), finds its thick vertex and emits its
+ *   fan of triangles, over which the segment's ends are interpolated; a tetrahedron crossing the near
+ *   plane is ray-cast over its own screen rectangle from the plane on, and one wholly before it is
+ *   not drawn.
+ * The fragment shader integrates the ray segment and the result is composited back to front into a
+ * float image that is blended into VTK's scene, clipped at the depth of opaque geometry.
  *
  * Integration modes:
  * - PARTIAL_PRE_INTEGRATION (default): the segment is cut where its scalar crosses a transfer-
@@ -124,7 +131,7 @@ public:
   vtkGetMacro(CountShadedFragments, bool);
   ///@}
 
-  /// Ids, points, gradients, order and fan indices (not the screen-sized images).
+  /// Ids, points, gradients, order and face indices (not the screen-sized images).
   vtkIdType GetMeshMemoryInBytes() override;
 
   /// Bytes the mapper keeps in host memory beside its input between frames, as of the last frame:
@@ -145,7 +152,7 @@ protected:
   vtkShaderProgram* ReadyTetrahedraProgram(
     const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);
   void UnbindTetrahedraResources(vtkUnstructuredVolumeFloatTarget& target);
-  void DrawBackToFront(const vtkUnstructuredVolumeFrame& frame);
+  void DrawBackToFront(const vtkUnstructuredVolumeFrame& frame, vtkShaderProgram* program);
   bool DrawFrontToBack(
     const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target, vtkShaderProgram* program);
   bool ChooseSegmentTable(const vtkUnstructuredVolumeFrame& frame);

@@ -9,10 +9,12 @@
 #ifndef vtkPreIntegratedTetrahedraPrograms_h
 #define vtkPreIntegratedTetrahedraPrograms_h
 
+#include "uvBarycentricPullVS.h"
+#include "uvBarycentricRayLib.h"
+#include "uvBarycentricTetrahedronLib.h"
 #include "uvPhongLib.h"
 #include "uvPreIntegratedTetrahedraFS.h"
 #include "uvPreIntegratedTetrahedraGS.h"
-#include "uvPreIntegratedTetrahedraPullVS.h"
 #include "uvPreIntegratedTetrahedraVS.h"
 #include "uvProjectedTetrahedronLib.h"
 #include "uvSegmentIntegrationLib.h"
@@ -27,12 +29,12 @@ struct vtkPreIntegratedTetrahedraPrograms
 {
   struct Options
   {
-    bool VertexPulling = true; // else a geometry shader emits the fans
+    bool VertexPulling = true; // faces pulled (UV_FACES); else a geometry shader emits the fans
     bool Gradients = false;    // vertex gradients for lighting
     bool NodeTexture = false;  // more transfer-function nodes than fit in uniforms
     bool CellSurfaces = false; // a cell scalar's isosurfaces, on the faces between cells
     bool SegmentTable = false; // one table read per segment (no isosurfaces, no shading)
-    bool NearPlaneCuts = true; // some tetrahedra may cross the near plane: ray-cast them
+    bool NearPlaneCuts = true; // fans only: some tetrahedra may cross the near plane, ray-cast them
     bool OpaqueDepth = true;   // opaque geometry may have been drawn: its depth ends segments
   };
 
@@ -45,41 +47,49 @@ struct vtkPreIntegratedTetrahedraPrograms
       defines += "#define UV_CELL_SURFACES\n";
     if (options.SegmentTable)
       defines += "#define UV_SEGMENT_TABLE\n";
-    if (options.NearPlaneCuts)
+    if (options.NearPlaneCuts && !options.VertexPulling)
       defines += "#define UV_NEAR_PLANE_CUTS\n";
     if (options.OpaqueDepth)
       defines += "#define UV_OPAQUE_DEPTH\n";
-    const std::initializer_list<std::pair<const char*, const char*>> projection = {
-      { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
-    };
+    if (options.VertexPulling)
+      defines += "#define UV_FACES\n";
     uvgl::ProgramSources sources;
-    sources.Vertex = uvgl::ShaderSource(
-      options.VertexPulling ? uvPreIntegratedTetrahedraPullVS : uvPreIntegratedTetrahedraVS, defines, projection);
-    if (!options.VertexPulling)
+    if (options.VertexPulling)
+    {
+      sources.Vertex = uvgl::ShaderSource(
+        uvBarycentricPullVS, defines, { { "//UV::BarycentricTetrahedron", uvBarycentricTetrahedronLib } });
+    }
+    else
+    {
+      const std::initializer_list<std::pair<const char*, const char*>> projection = {
+        { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
+      };
+      sources.Vertex = uvgl::ShaderSource(uvPreIntegratedTetrahedraVS, defines, projection);
       sources.Geometry = uvgl::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
+    }
     sources.Fragment = uvgl::ShaderSource(uvPreIntegratedTetrahedraFS, defines,
-      { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
-        { "//UV::SegmentIntegration", uvSegmentIntegrationLib }, { "//UV::SegmentLengthTable", uvSegmentLengthTableLib } });
+      { { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
+        { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib },
+        { "//UV::SegmentLengthTable", uvSegmentLengthTableLib } });
     return sources;
   }
 
   static std::vector<Options> AllOptions()
   {
+    // Near-plane cuts only change the fans (pulled faces are clipped by the near plane instead).
     std::vector<Options> all;
     for (bool depth : { true, false })
-    {
-      for (bool pulling : { true, false })
-        for (bool gradients : { false, true })
-          for (bool nodeTexture : { false, true })
-            for (bool cuts : { true, false })
-              all.push_back({ pulling, gradients, nodeTexture, false, false, cuts, depth });
       for (bool pulling : { true, false })
         for (bool cuts : { true, false })
         {
+          if (pulling && !cuts)
+            continue;
+          for (bool gradients : { false, true })
+            for (bool nodeTexture : { false, true })
+              all.push_back({ pulling, gradients, nodeTexture, false, false, cuts, depth });
           all.push_back({ pulling, false, false, true, false, cuts, depth });
           all.push_back({ pulling, false, false, false, true, cuts, depth });
         }
-    }
     return all;
   }
 };

@@ -12,19 +12,39 @@
 // (Phong) with the gradient interpolated between the front and back points. With UV_SEGMENT_TABLE
 // (no isosurfaces, no shading) one trilinear read of a table of whole segments by front scalar, back
 // scalar and length (uvTetrahedronSegmentTable.h) stands in for the cuts.
+//
+// The segment's ends come one of two ways. UV_FACES (the vertex-pulling route): the fragment lies on
+// a face of its tetrahedron (uvBarycentricPullVS.glsl draws its back faces, or its one front face)
+// and finds entry and exit from its barycentric coordinates along the ray (uvBarycentricRayLib.glsl,
+// shared with vtkBarycentricShellMapper). Otherwise (the geometry-shader route's fan around the
+// thick vertex) they are interpolated over the fan's triangles.
+#ifdef UV_FACES
+//UV::BarycentricRay
+#define fragmentTetrahedron cellId
+#else
 smooth in vec3 frontData; // (scalar, eye z, 1) / w on the front surface
 smooth in vec3 backData;
 #ifdef UV_GRADIENTS
 smooth in vec3 frontGradientOverW;
 smooth in vec3 backGradientOverW;
-uniform samplerBuffer pointGradients;
-uniform mat3 modelToEyeNormals;
 #endif
 flat in int rayCastTetrahedron;  // >= 0: intersect the eye ray with this tetrahedron here (UV_NEAR_PLANE_CUTS)
 #ifdef UV_CELL_SURFACES
+flat in int fragmentTetrahedron;
+#endif
+uniform int parallelProjection;
+// The eye ray at pixel (x, y) is affine in it: perspective, its direction is (dot(rayX, (x, y, 1)),
+// dot(rayY, (x, y, 1)), -1) from the eye; parallel, its origin is (those, 0) and it runs along -z.
+uniform vec3 rayX;
+uniform vec3 rayY;
+#endif
+#ifdef UV_GRADIENTS
+uniform samplerBuffer pointGradients;
+uniform mat3 modelToEyeNormals;
+#endif
+#ifdef UV_CELL_SURFACES
 // A cell scalar's isosurfaces, the faces between cells on either side of the value: each
 // tetrahedron draws those on its front face (the one the ray enters by), over its own segment.
-flat in int fragmentTetrahedron;
 uniform samplerBuffer neighbourValues; // per tetrahedron, the value across the face opposite each corner
 #endif
 
@@ -36,11 +56,6 @@ uniform sampler2D opaqueDepth;      // the scene's depth buffer before the volum
 uniform mat4 clipToEye;
 uniform vec2 viewportSize;
 #endif
-uniform int parallelProjection;
-// The eye ray at pixel (x, y) is affine in it: perspective, its direction is (dot(rayX, (x, y, 1)),
-// dot(rayY, (x, y, 1)), -1) from the eye; parallel, its origin is (those, 0) and it runs along -z.
-uniform vec3 rayX;
-uniform vec3 rayY;
 #ifdef UV_NEAR_PLANE_CUTS
 uniform float nearDepth; // where rays begin
 #endif
@@ -96,6 +111,29 @@ void main()
   vec3 frontPoint, backPoint;
   float frontScalar, backScalar;
   vec3 frontGradient = vec3(0.0), backGradient = vec3(0.0);
+#ifdef UV_FACES
+  vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : eyePosition;
+  BarycentricRay faceRay = FragmentRay();
+  float entry = EntryDistance(faceRay), exit = ExitDistance(faceRay);
+  if (!(entry < exit))
+  {
+    discard;
+  }
+  vec4 frontWeights = CoordinatesAt(faceRay, entry), backWeights = CoordinatesAt(faceRay, exit);
+  frontScalar = dot(cellScalars, frontWeights);
+  backScalar = dot(cellScalars, backWeights);
+  frontPoint = EyePointAt(entry);
+  backPoint = EyePointAt(exit);
+#ifdef UV_GRADIENTS
+  uvec4 gradientIds = texelFetch(tetrahedronPoints, cellId);
+  for (int k = 0; k < 4; ++k)
+  {
+    vec3 g = modelToEyeNormals * texelFetch(pointGradients, int(gradientIds[k])).xyz;
+    frontGradient += frontWeights[k] * g;
+    backGradient += backWeights[k] * g;
+  }
+#endif
+#else
   vec2 ray = vec2(dot(rayX, vec3(gl_FragCoord.xy, 1.0)), dot(rayY, vec3(gl_FragCoord.xy, 1.0)));
   vec3 origin = parallelProjection == 1 ? vec3(ray, 0.0) : vec3(0.0);
   vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : vec3(ray, -1.0);
@@ -167,6 +205,7 @@ void main()
     backGradient = backGradientOverW / backData.z;
 #endif
   }
+#endif
 
 #ifdef UV_OPAQUE_DEPTH
   // Opaque geometry: nothing behind it; a segment it cuts ends there. (Only compiled in where the

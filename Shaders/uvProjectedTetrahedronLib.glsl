@@ -1,6 +1,5 @@
-// vtkPreIntegratedTetrahedraMapper: projection of one tetrahedron, shared by the two geometry routes
-// (uvPreIntegratedTetrahedraGS.glsl: a geometry shader fed one point per tetrahedron;
-// uvPreIntegratedTetrahedraPullVS.glsl: 12 vertices per tetrahedron pulled by a vertex shader). It
+// vtkPreIntegratedTetrahedraMapper: projection of one tetrahedron for the geometry-shader route
+// (uvPreIntegratedTetrahedraGS.glsl, fed one point per tetrahedron). It
 // classifies the projection and finds the fan of triangles around the thick vertex: the GPU twin of
 // uvProjectedTetrahedron.h (same steps, same names). Every attribute is carried as value/w and 1/w
 // of the surface it lies on, linear in screen space, so the fragment stage recovers exact eye-space
@@ -96,7 +95,7 @@ SurfacePoint SidePoint(float side, float sides[4], float weights[4])
   return p;
 }
 
-/// Slot `slot` of the rectangle [low, high] (normalised device coordinates) drawn for a tetrahedron
+/// Corner `slot` of the rectangle [low, high] (normalised device coordinates) drawn for a tetrahedron
 /// that crosses the near plane: the fragments intersect the eye ray with tetrahedron `id` themselves.
 void SetRayCastSlot(int slot, int id, vec2 low, vec2 high)
 {

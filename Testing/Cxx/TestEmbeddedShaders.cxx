@@ -69,7 +69,7 @@ protected:
 TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
 {
   const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
-  EXPECT_EQ(all.size(), 48u); // 24 option sets, with and without the opaque depth
+  EXPECT_EQ(all.size(), 36u); // 18 option sets (6 of pulled faces, 12 of fans), with and without the opaque depth
   for (const auto& options : all)
   {
     const std::string variant = std::string("tetrahedra program, ") +
