@@ -1,13 +1,13 @@
 /**
  * @class vtkBarycentricShellCellDrawer
  * @brief Draws the tetrahedra at a range of places of a cell list, by vtkBarycentricShellMapper's
- * chosen route.
+ * chosen route (and vtkPreIntegratedTetrahedraMapper's vertex-pulling route).
  *
  * Geometry-shader route: one point per tetrahedron (uvBarycentricCellListVS.glsl). Vertex pulling:
  * four vertices per tetrahedron under a fixed index pattern of its four faces, wound outwards for
  * positively oriented tetrahedra, front faces culled (uvBarycentricPullVS.glsl). The list's first
  * place rides in a uniform, so one pattern of ChunkSize tetrahedra serves every chunk of every list.
- * Owns that pattern. (OpenGL layer of the barycentric shell mapper; not wrapped.)
+ * Owns that pattern. (OpenGL layer of the tetrahedral mappers; not wrapped.)
  */
 #ifndef vtkBarycentricShellCellDrawer_h
 #define vtkBarycentricShellCellDrawer_h
