@@ -5,7 +5,8 @@
  *
  * Geometry-shader route: one point per tetrahedron (uvBarycentricCellListVS.glsl). Vertex pulling:
  * four vertices per tetrahedron under a fixed index pattern of its four faces, wound outwards for
- * positively oriented tetrahedra, front faces culled (uvBarycentricPullVS.glsl). The list's first
+ * positively oriented tetrahedra (the vertex stage swaps two vertices of the others), front faces
+ * culled (uvBarycentricPullVS.glsl). The list's first
  * place rides in a uniform, so one pattern of ChunkSize tetrahedra serves every chunk of every list.
  * Owns that pattern. (OpenGL layer of the tetrahedral mappers; not wrapped.)
  */

@@ -63,25 +63,6 @@ namespace
 constexpr int MaximumShells = 4096;  // beyond it the sample distance is widened (with a warning)
 constexpr float InsideTolerance = 1e-5f; // barycentric slack: no cracks between neighbours
 
-/// The mesh's tetrahedra with their vertices in positive orientation, for the pulling route's
-/// culling (moving points can turn a tetrahedron inside out, so this follows every change).
-std::vector<std::uint32_t> OrientedTetrahedra(const uvvtk::TetrahedralMesh& mesh)
-{
-  std::vector<std::uint32_t> oriented = mesh.TetrahedronPoints;
-  const std::vector<float>& points = mesh.PointData;
-  uvvtk::ParallelFor(mesh.Size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-    {
-      glm::vec3 v[4];
-      for (int k = 0; k < 4; ++k)
-        v[k] = glm::make_vec3(&points[4 * oriented[4 * t + k]]);
-      if (glm::determinant(glm::mat3(v[1] - v[0], v[2] - v[0], v[3] - v[0])) < 0.0f)
-        std::swap(oriented[4 * t + 1], oriented[4 * t + 2]);
-    }
-  });
-  return oriented;
-}
-
 /// Warnings a mapper gives once (a render loop would repeat them every frame).
 class WarningsGiven
 {
@@ -117,9 +98,6 @@ public:
 
   // ---- CPU state, each piece versioned (or compared exactly) for its GPU copy.
   uvvtk::TetrahedralMesh Mesh;
-  std::vector<std::uint32_t> OrientedPoints; // Mesh.TetrahedronPoints, each positively oriented
-  std::uint64_t OrientedVersion = 0;
-  std::pair<std::uint64_t, std::uint64_t> OrientedFor{ 0, 0 }; // the mesh's Topology- and PositionsVersion
   uvvtk::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
   std::vector<double> Isovalues;
@@ -150,10 +128,10 @@ public:
   } Coordinates; // where the mesh's texture coordinates come from, and their version
   uvvtk::MeshWarnings Warned;
   WarningsGiven Warnings;
-  uv::TetrahedronFaceNeighbours CellSurfaces; // per oriented tetrahedron, for a cell scalar's surfaces
+  uv::TetrahedronFaceNeighbours CellSurfaces; // per tetrahedron, for a cell scalar's surfaces
   struct
   {
-    std::uint64_t CellsVersion = 0, OrientedVersion = 0; // what CellSurfaces was built from
+    std::uint64_t CellsVersion = 0, TopologyVersion = 0; // what CellSurfaces was built from
     std::uint64_t Version = 0;                           // bumped by every build
   } CellSurfacesBuilt;
 
@@ -289,19 +267,6 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(
   }
   if (change == uvvtk::TetrahedralMesh::Change::All)
     this->Order.Invalidate(); // new cells (the order sees moved points itself)
-  // Each tetrahedron's corners in positive order, again for other tetrahedra or moved points (new
-  // values alone keep it).
-  const std::pair<std::uint64_t, std::uint64_t> orientedFor(this->Mesh.TopologyVersion, this->Mesh.PositionsVersion);
-  if (this->OrientedFor != orientedFor)
-  {
-    this->OrientedFor = orientedFor;
-    std::vector<std::uint32_t> oriented = OrientedTetrahedra(this->Mesh);
-    if (oriented != this->OrientedPoints)
-    {
-      this->OrientedPoints.swap(oriented);
-      ++this->OrientedVersion;
-    }
-  }
   return this->Mesh.Size() > 0;
 }
 
@@ -352,21 +317,22 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
   return true;
 }
 
-/// For a cell scalar's isosurfaces: per tetrahedron (in the oriented order the shaders read) the
+/// For a cell scalar's isosurfaces: per tetrahedron (in the corner order the shaders read) the
 /// values across its faces, and its scalar range widened to them, when the cells changed.
 void vtkBarycentricShellMapper::Internals::UpdateNeighbourValues()
 {
   auto& built = this->CellSurfacesBuilt;
   if (built.Version != 0 && built.CellsVersion == this->Mesh.CellsVersion &&
-    built.OrientedVersion == this->OrientedVersion)
+    built.TopologyVersion == this->Mesh.TopologyVersion)
     return;
-  std::vector<std::uint32_t> corners(this->OrientedPoints.size());
+  const std::vector<std::uint32_t>& drawn = this->Mesh.TetrahedronPoints;
+  std::vector<std::uint32_t> corners(drawn.size());
   for (std::size_t i = 0; i < corners.size(); ++i)
-    corners[i] = this->Mesh.CornerPoints[this->OrientedPoints[i]]; // the input's point ids: shared faces match
+    corners[i] = this->Mesh.CornerPoints[drawn[i]]; // the input's point ids: shared faces match
   this->CellSurfaces = uv::MakeTetrahedronFaceNeighbours(corners, this->Mesh.ScalarLow, uvvtk::ParallelFor,
     [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
   built.CellsVersion = this->Mesh.CellsVersion;
-  built.OrientedVersion = this->OrientedVersion;
+  built.TopologyVersion = this->Mesh.TopologyVersion;
   ++built.Version;
 }
 
@@ -481,7 +447,7 @@ void vtkBarycentricShellMapper::Internals::UpdateOrder(const vtkUnstructuredVolu
 /// pays the points' upload and nothing else.
 void vtkBarycentricShellMapper::Internals::UploadMesh(vtkOpenGLRenderWindow* window)
 {
-  this->TetrahedronPoints.Sync(window, this->OrientedPoints, 4, this->OrientedVersion);
+  this->TetrahedronPoints.Sync(window, this->Mesh.TetrahedronPoints, 4, this->Mesh.TopologyVersion);
   this->Points.Sync(window, this->Mesh.PointData, 4, this->Mesh.Version);
   if (this->Now.NeedGradients)
     this->PointGradients.Sync(window, this->Gradients.Values, 4, this->Gradients.Version);

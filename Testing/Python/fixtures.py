@@ -63,6 +63,23 @@ def analytic_hexahedra(resolution, field=ML, distortion=0):
     return analytic(resolution, field, distortion, vtkAnalyticMeshSource.HEXAHEDRA)
 
 
+def inside_out(mesh):
+    """A copy of a tetrahedral mesh with the second and third point of every cell swapped: the same
+    tetrahedra, each in the opposite orientation."""
+    result = vtkUnstructuredGrid()
+    result.SetPoints(mesh.GetPoints())
+    result.GetPointData().ShallowCopy(mesh.GetPointData())
+    result.Allocate(mesh.GetNumberOfCells())
+    ids = vtkIdList()
+    for c in range(mesh.GetNumberOfCells()):
+        mesh.GetCellPoints(c, ids)
+        a, b = ids.GetId(1), ids.GetId(2)
+        ids.SetId(1, b)
+        ids.SetId(2, a)
+        result.InsertNextCell(VTK_TETRA, ids)
+    return result
+
+
 def hex_dominant(resolution, distortion=vtkAnalyticMeshSource.JITTER):
     """analytic_hexahedra(resolution) made hex-dominant and conforming, with every linear 3D cell
     type: the columns of the lowest x third split into two wedges each (the same diagonal all the

@@ -8,7 +8,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
                       analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
-                      finite_image, inside_camera, reference, rmse, spike_property)
+                      finite_image, inside_camera, inside_out, reference, rmse, spike_property)
 
 from unstructuredvolume import vtkAnalyticMeshSource  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
@@ -139,6 +139,13 @@ class AccuracyTests(SceneTestCase):
         self.check(mesh, prop, camera, 96, 5e-4)
         centroid = Scene(mesh, prop, camera, 96, VisibilityOrder=0, SegmentIntegration=2).render()
         self.assertGreater(rmse(centroid, reference(mesh, prop, camera, 96))[0], 3e-4)
+
+    def test_inside_out_tetrahedra_around_the_eye(self):
+        # The pulled faces cull by winding: each tetrahedron is wound by its own orientation, so the
+        # same cells in the opposite orientation keep their back faces where the near plane cuts them.
+        mesh = inside_out(analytic(6))
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        self.check(mesh, prop, inside_camera(), 96, 1e-5, SegmentIntegration=2)
 
     def test_parallel_camera_inside_the_mesh(self):
         # Parallel projection with the near plane cutting the mesh: what lies before the plane is not
