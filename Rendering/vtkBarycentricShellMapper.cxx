@@ -45,7 +45,6 @@
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
-#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <bitset>
@@ -129,11 +128,7 @@ public:
   uvvtk::MeshWarnings Warned;
   WarningsGiven Warnings;
   uv::TetrahedronFaceNeighbours CellSurfaces; // per tetrahedron, for a cell scalar's surfaces
-  struct
-  {
-    std::uint64_t CellsVersion = 0, TopologyVersion = 0; // what CellSurfaces was built from
-    std::uint64_t Version = 0;                           // bumped by every build
-  } CellSurfacesBuilt;
+  std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
 
   // ---- What this frame draws (Prepare).
   struct
@@ -321,19 +316,10 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
 /// values across its faces, and its scalar range widened to them, when the cells changed.
 void vtkBarycentricShellMapper::Internals::UpdateNeighbourValues()
 {
-  auto& built = this->CellSurfacesBuilt;
-  if (built.Version != 0 && built.CellsVersion == this->Mesh.CellsVersion &&
-    built.TopologyVersion == this->Mesh.TopologyVersion)
+  if (this->CellSurfacesBuiltFor == this->Mesh.CellsVersion)
     return;
-  const std::vector<std::uint32_t>& drawn = this->Mesh.TetrahedronPoints;
-  std::vector<std::uint32_t> corners(drawn.size());
-  for (std::size_t i = 0; i < corners.size(); ++i)
-    corners[i] = this->Mesh.CornerPoints[drawn[i]]; // the input's point ids: shared faces match
-  this->CellSurfaces = uv::MakeTetrahedronFaceNeighbours(corners, this->Mesh.ScalarLow, uvvtk::ParallelFor,
-    [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
-  built.CellsVersion = this->Mesh.CellsVersion;
-  built.TopologyVersion = this->Mesh.TopologyVersion;
-  ++built.Version;
+  this->CellSurfaces = this->Mesh.CellFaceNeighbours();
+  this->CellSurfacesBuiltFor = this->Mesh.CellsVersion;
 }
 
 /// Which tetrahedra matter: the volume's (some extinction in their range), the isosurfaces' (an
@@ -452,7 +438,7 @@ void vtkBarycentricShellMapper::Internals::UploadMesh(vtkOpenGLRenderWindow* win
   if (this->Now.NeedGradients)
     this->PointGradients.Sync(window, this->Gradients.Values, 4, this->Gradients.Version);
   if (this->Now.CellSurfaces)
-    this->NeighbourValues.Sync(window, this->CellSurfaces.Values, 4, this->CellSurfacesBuilt.Version);
+    this->NeighbourValues.Sync(window, this->CellSurfaces.Values, 4, this->CellSurfacesBuiltFor);
   this->Nodes.Sync(window, this->TransferFunction.Nodes);
   this->Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(this->DrawnIsosurfaces), 2, 4,
     uv::IsosurfaceList::Texels(this->DrawnIsosurfaces));

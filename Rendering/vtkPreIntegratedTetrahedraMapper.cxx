@@ -201,12 +201,7 @@ public:
   {
     if (this->CellSurfacesBuiltFor == this->Mesh.CellsVersion)
       return;
-    const std::vector<std::uint32_t>& drawn = this->Mesh.TetrahedronPoints;
-    std::vector<std::uint32_t> corners(drawn.size());
-    for (std::size_t i = 0; i < drawn.size(); ++i)
-      corners[i] = this->Mesh.CornerPoints[drawn[i]]; // the input's point ids: shared faces match
-    this->CellSurfaces = uv::MakeTetrahedronFaceNeighbours(corners, this->Mesh.ScalarLow, uvvtk::ParallelFor,
-      [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
+    this->CellSurfaces = this->Mesh.CellFaceNeighbours();
     this->CellSurfacesBuiltFor = this->Mesh.CellsVersion;
   }
 

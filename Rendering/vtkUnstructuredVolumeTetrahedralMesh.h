@@ -9,6 +9,7 @@
 #include "uvBoundaryGapOrder.h"
 #include "uvCellVisibility.h"
 #include "uvFaceAdjacencyOrder.h"
+#include "uvHexahedralMesh.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
 #include "vtkUnstructuredVolumeMeshContent.h"
@@ -104,6 +105,16 @@ public:
     return 0.25f * sum;
   }
   bool OnCells() const { return this->Scalar.OnCells; }
+  /// For a cell scalar's isosurfaces: per tetrahedron the values across its faces (shared faces of
+  /// the input cells, matched by the input's point ids) and its scalar range widened to them.
+  uv::TetrahedronFaceNeighbours CellFaceNeighbours() const
+  {
+    std::vector<std::uint32_t> corners(this->TetrahedronPoints.size());
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      corners[i] = this->CornerPoints[this->TetrahedronPoints[i]];
+    return uv::MakeTetrahedronFaceNeighbours(
+      corners, this->ScalarLow, ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); });
+  }
   /// Forgets the build: the next Update rebuilds.
   void Invalidate()
   {
