@@ -67,13 +67,8 @@ void main()
   vec4 front = CoordinatesAt(ray, entry), back = CoordinatesAt(ray, exit);
   vec3 frontGradient = vec3(0.0), backGradient = vec3(0.0);
 #ifdef UV_GRADIENTS
-  uvec4 ids = texelFetch(tetrahedronPoints, cellId);
-  for (int k = 0; k < 4; ++k)
-  {
-    vec3 g = modelToEyeNormals * texelFetch(pointGradients, int(ids[k])).xyz;
-    frontGradient += front[k] * g;
-    backGradient += back[k] * g;
-  }
+  VertexGradientsAt(
+    tetrahedronPoints, pointGradients, modelToEyeNormals, cellId, front, back, frontGradient, backGradient);
 #endif
 #ifdef UV_CELL_GRADIENTS
   frontGradient = backGradient = cellGradient;

@@ -94,6 +94,21 @@ vec3 EyePointAt(float z)
   return parallelProjection == 1 ? vec3(eyePosition.xy, -z) : eyePosition * (z / length(eyePosition));
 }
 
+/// Tetrahedron `cell`'s vertex gradients (`gradients` per point of `cellPoints`, model space) at
+/// barycentric coordinates `front` and `back`, in eye space (`toEye`, the normal matrix).
+void VertexGradientsAt(usamplerBuffer cellPoints, samplerBuffer gradients, mat3 toEye, int cell, vec4 front,
+  vec4 back, out vec3 frontGradient, out vec3 backGradient)
+{
+  uvec4 ids = texelFetch(cellPoints, cell);
+  frontGradient = backGradient = vec3(0.0);
+  for (int k = 0; k < 4; ++k)
+  {
+    vec3 g = toEye * texelFetch(gradients, int(ids[k])).xyz;
+    frontGradient += front[k] * g;
+    backGradient += back[k] * g;
+  }
+}
+
 /// The distance of the scene's opaque geometry along this pixel's ray (uvBarycentricOpaqueDistanceFS.glsl
 /// computes them once a frame; a constant when the scene has none).
 float OpaqueDistance()

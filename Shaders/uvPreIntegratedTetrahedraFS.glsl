@@ -125,13 +125,8 @@ void main()
   frontPoint = EyePointAt(entry);
   backPoint = EyePointAt(exit);
 #ifdef UV_GRADIENTS
-  uvec4 gradientIds = texelFetch(tetrahedronPoints, cellId);
-  for (int k = 0; k < 4; ++k)
-  {
-    vec3 g = modelToEyeNormals * texelFetch(pointGradients, int(gradientIds[k])).xyz;
-    frontGradient += frontWeights[k] * g;
-    backGradient += backWeights[k] * g;
-  }
+  VertexGradientsAt(tetrahedronPoints, pointGradients, modelToEyeNormals, cellId, frontWeights, backWeights,
+    frontGradient, backGradient);
 #endif
 #else
   vec2 ray = vec2(dot(rayX, vec3(gl_FragCoord.xy, 1.0)), dot(rayY, vec3(gl_FragCoord.xy, 1.0)));
