@@ -252,7 +252,6 @@ struct PassFrame
   vtkOpenGLVertexArrayObject* NoAttributes = nullptr;
   glm::dmat4 ModelToClip{ 1.0 }, ClipToModel{ 1.0 }, ModelToEye{ 1.0 };
   glm::dmat3 NormalToEye{ 1.0 };
-  float Viewport[2] = { 0.0f, 0.0f };
 
   static PassFrame Make(const vtkUnstructuredVolumeFrame& frame, const glm::dvec3& center,
     vtkOpenGLVertexArrayObject* noAttributes)
@@ -264,41 +263,14 @@ struct PassFrame
     pass.ModelToClip = frame.ModelToClip(center);
     pass.ClipToModel = glm::inverse(pass.ModelToClip);
     pass.NormalToEye = frame.ModelToEyeNormals(center);
-    pass.Viewport[0] = static_cast<float>(frame.Width);
-    pass.Viewport[1] = static_cast<float>(frame.Height);
     return pass;
   }
 
-  /// The eye rays (uvHexahedronLib.glsl's EyeRay): near-plane point and direction at ndc (0, 0)
-  /// and their change per unit of ndc x and y, in double, then rounded.
+  /// The eye rays (uvEyeRayLib.glsl) and the clip-to-model matrix.
   void SetRayUniforms(vtkShaderProgram* program) const
   {
-    const auto unproject = [this](double x, double y, double z) {
-      const glm::dvec4 p = this->ClipToModel * glm::dvec4(x, y, z, 1.0);
-      return glm::dvec3(p) / p.w;
-    };
-    float nearPlane[3][3], rayDirection[3][3];
-    const double ndc[3][2] = { { 0.0, 0.0 }, { 1.0, 0.0 }, { 0.0, 1.0 } };
-    const glm::dvec3 near0 = unproject(0.0, 0.0, -1.0), far0 = unproject(0.0, 0.0, 1.0);
-    for (int k = 0; k < 3; ++k)
-    {
-      glm::dvec3 nearPoint = unproject(ndc[k][0], ndc[k][1], -1.0);
-      glm::dvec3 direction = unproject(ndc[k][0], ndc[k][1], 1.0) - nearPoint;
-      if (k > 0)
-      {
-        nearPoint -= near0;
-        direction -= far0 - near0;
-      }
-      for (int i = 0; i < 3; ++i)
-      {
-        nearPlane[k][i] = static_cast<float>(nearPoint[i]);
-        rayDirection[k][i] = static_cast<float>(direction[i]);
-      }
-    }
-    program->SetUniform3fv("nearPlane", 3, nearPlane);
-    program->SetUniform3fv("rayDirection", 3, rayDirection);
+    uvgl::SetEyeRayUniforms(program, this->ClipToModel, this->Frame->Width, this->Frame->Height);
     SetMatrix(program, "clipToModel", this->ClipToModel);
-    program->SetUniform2f("viewportSize", this->Viewport);
   }
 };
 

@@ -13,6 +13,7 @@
 #define vtkHexahedralRayCastPrograms_h
 
 #include "uvBilinearFaceLib.h"
+#include "uvEyeRayLib.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvHexahedralEntryFS.h"
 #include "uvHexahedralEntryVS.h"
@@ -44,9 +45,12 @@ struct vtkHexahedralRayCastPrograms
   static uvgl::ProgramSources Entry()
   {
     uvgl::ProgramSources sources;
-    sources.Vertex = uvgl::ShaderSource(uvHexahedralEntryVS, "", { { "//UV::Hexahedron", uvHexahedronLib } });
+    // The hexahedron library holds the eye-ray library's marker: it goes in first.
+    sources.Vertex = uvgl::ShaderSource(
+      uvHexahedralEntryVS, "", { { "//UV::Hexahedron", uvHexahedronLib }, { "//UV::EyeRay", uvEyeRayLib } });
     sources.Fragment = uvgl::ShaderSource(uvHexahedralEntryFS, "",
-      { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
+      { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib },
+        { "//UV::EyeRay", uvEyeRayLib } });
     return sources;
   }
 
@@ -63,7 +67,8 @@ struct vtkHexahedralRayCastPrograms
       defines += "#define UV_VERTEX_GRADIENTS\n";
     sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
       { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
-        { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib } });
+        { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib },
+        { "//UV::EyeRay", uvEyeRayLib } });
     return sources;
   }
 

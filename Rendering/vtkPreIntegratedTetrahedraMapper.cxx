@@ -7,6 +7,7 @@
 #include "uvFullScreenTriangleVS.h"
 #include "vtkBarycentricShellCellDrawer.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
+#include "vtkPreIntegratedTetrahedraWalk.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
@@ -115,6 +116,9 @@ public:
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
   vtkUnstructuredVolumeOpacityMask Mask;
+  vtkPreIntegratedTetrahedraWalk Walk; // the ray-casting route
+  bool RayCasting = false;             // this frame's route
+  int Peels = 0;                       // walk passes of the last frame
 
   // This frame's compositing: front to back under the opacity mask, or back to front; chosen by the
   // share of covered pixels the last frame left opaque (negative: not measured yet).
@@ -136,6 +140,7 @@ public:
     this->Isosurfaces.Release();
     this->Table.Release();
     this->Mask.Release();
+    this->Walk.Release();
   }
 
   /// The mesh's bounds, when the mesh changed.
@@ -251,6 +256,14 @@ int vtkPreIntegratedTetrahedraMapper::GetNumberOfOpacityMaskRefreshes()
 {
   return this->Impl->MaskRefreshes;
 }
+bool vtkPreIntegratedTetrahedraMapper::GetUsedRayCasting()
+{
+  return this->Impl->RayCasting;
+}
+int vtkPreIntegratedTetrahedraMapper::GetNumberOfPeels()
+{
+  return this->Impl->RayCasting ? this->Impl->Peels : 0;
+}
 bool vtkPreIntegratedTetrahedraMapper::GetUsedSegmentTable()
 {
   return this->Impl->UseTable;
@@ -272,7 +285,7 @@ vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
 {
   const Internals& impl = *this->Impl;
   std::size_t bytes = sizeof(std::uint32_t) * (impl.Mesh.TetrahedronPoints.size() + impl.Order.Order.size()) +
-    sizeof(float) * impl.Mesh.PointData.size() + impl.Faces.GetBytes();
+    sizeof(float) * impl.Mesh.PointData.size() + impl.Faces.GetBytes() + impl.Walk.GetGpuBytes();
   bytes += impl.PointGradients.GetBytes();
   return static_cast<vtkIdType>(bytes);
 }
@@ -283,7 +296,8 @@ vtkIdType vtkPreIntegratedTetrahedraMapper::GetHostMemoryInBytes()
   const auto bytes = [](const auto& vector) { return sizeof(vector[0]) * vector.capacity(); };
   const uv::TetrahedronFaceNeighbours& surfaces = impl.CellSurfaces;
   return static_cast<vtkIdType>(impl.Mesh.GetBytes() + impl.Visible.GetBytes() + impl.Order.GetBytes() +
-    bytes(impl.Gradients.Values) + bytes(surfaces.Values) + bytes(surfaces.Low) + bytes(surfaces.High));
+    impl.Walk.GetBytes() + bytes(impl.Gradients.Values) + bytes(surfaces.Values) + bytes(surfaces.Low) +
+    bytes(surfaces.High));
 }
 
 void vtkPreIntegratedTetrahedraMapper::ReleaseMapperGraphics()
@@ -367,6 +381,15 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
 
   impl.UseTable = this->ChooseSegmentTable(frame);
 
+  // Ray casting needs no order: rays walk front to back by adjacency.
+  impl.RayCasting = this->RenderMode != PROJECTION && !impl.DrawCellSurfaces && !impl.NearPlaneMayCut(frame);
+  if (impl.RayCasting)
+  {
+    impl.Walk.Update(impl.Mesh);
+    impl.FrontToBack = false;
+    return true;
+  }
+
   // Visibility order by centroid distance, when the view or the list changed: front to back when
   // pixels that became opaque can stop being shaded (skipping on and a threshold below 1), else
   // back to front, which needs no mask passes.
@@ -397,7 +420,9 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
     uv::IsosurfaceList::Texels(impl.DrawnIsosurfaces));
   if (impl.UseTable)
     impl.Table.Sync(window);
-  if (this->ProjectionRoute == VERTEX_PULLING)
+  if (impl.RayCasting)
+    impl.Walk.Sync(window);
+  else if (this->ProjectionRoute == VERTEX_PULLING)
   {
     impl.DrawOrder.Sync(window, impl.Order.Order, 1, impl.Order.Version);
     impl.Faces.Sync(true);
@@ -413,6 +438,8 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
   const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target)
 {
   Internals& impl = *this->Impl;
+  if (impl.RayCasting)
+    return this->DrawByRayCasting(frame, target);
   vtkShaderProgram* program = this->ReadyTetrahedraProgram(frame, target);
   if (!program)
   {
@@ -451,6 +478,7 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   options.SegmentTable = impl.UseTable;
   options.NearPlaneCuts = impl.NearPlaneMayCut(frame);
   options.OpaqueDepth = frame.OpaqueDepth;
+  options.RayCasting = impl.RayCasting;
   vtkShaderProgram* program =
     uvgl::ReadyProgram(frame.Window, vtkPreIntegratedTetrahedraPrograms::Sources(options));
   if (!program)
@@ -472,6 +500,7 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   program->SetUniformi("averageScalar", this->IntegrationMode == AVERAGE_SCALAR ? 1 : 0);
   program->SetUniformi("shadeVolume", impl.Shade ? 1 : 0);
   program->SetUniformi("isosurfaceCount", static_cast<int>(impl.Isovalues.size()));
+  program->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
   uvgl::SetPhongUniforms(program, frame.Renderer, frame.Property, frame.WorldToEye);
 
   impl.TetrahedronPoints.Bind(program, "tetrahedronPoints");
@@ -486,6 +515,7 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
     sceneDepth->Activate();
     program->SetUniformi("opaqueDepth", sceneDepth->GetTextureUnit());
     SetMatrix(program, "clipToEye", glm::inverse(frame.EyeToClip));
+    SetMatrix(program, "clipToModel", glm::inverse(frame.ModelToClip(center)));
     const float viewport[2] = { static_cast<float>(frame.Width), static_cast<float>(frame.Height) };
     program->SetUniform2f("viewportSize", viewport);
   }
@@ -639,5 +669,45 @@ bool vtkPreIntegratedTetrahedraMapper::DrawFrontToBack(
     }
   }
   state->vtkglDisable(GL_DEPTH_TEST);
+  return true;
+}
+
+/// Peels of the ray-casting route (vtkPreIntegratedTetrahedraWalk): an entry pass, then, while
+/// some ray enters the mesh again, a walk pass compositing under the earlier peels.
+bool vtkPreIntegratedTetrahedraMapper::DrawByRayCasting(
+  const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target)
+{
+  Internals& impl = *this->Impl;
+  impl.Walk.Resize(frame.Window, frame.Width, frame.Height);
+  impl.Peels = 0;
+  const glm::dvec3 center = impl.Mesh.Center;
+  impl.UpdateBounds();
+  const glm::dvec3 bounds[2] = { impl.Low, impl.High };
+  // Every tetrahedron at most once a ray, and a margin (the walk ends at the boundary anyway).
+  const int maximumSteps = static_cast<int>(std::min<std::size_t>(impl.Mesh.Size() + 8, 1 << 24));
+  for (int peel = 0; peel < vtkPreIntegratedTetrahedraWalk::MaximumPeels; ++peel)
+  {
+    const long entered =
+      impl.Walk.DrawEntries(frame, center, target, impl.TetrahedronPoints, impl.Points, bounds, peel == 0);
+    this->CheckGLErrors("the tetrahedra's entry pass");
+    if (entered < 0)
+    {
+      vtkErrorMacro("the tetrahedra's entry shaders failed to compile or link");
+      return false;
+    }
+    if (entered == 0)
+      break;
+    vtkShaderProgram* program = this->ReadyTetrahedraProgram(frame, target);
+    if (!program)
+    {
+      vtkErrorMacro("the tetrahedra's ray-casting shaders failed to compile or link");
+      return false;
+    }
+    impl.Walk.DrawWalks(frame, center, target, program, maximumSteps);
+    ++impl.Peels;
+    this->UnbindTetrahedraResources(target);
+    this->CheckGLErrors("the tetrahedra's walk pass");
+  }
+  impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Visible.Drawn.size());
   return true;
 }

@@ -97,6 +97,29 @@ public:
   void SetIntegrationModeToPartialPreIntegration() { this->SetIntegrationMode(PARTIAL_PRE_INTEGRATION); }
   ///@}
 
+  enum RenderModes
+  {
+    PROJECTION = 0,
+    RAY_CASTING = 1,
+    AUTOMATIC = 2
+  };
+  ///@{
+  /// How the GPU reaches the pixels (see the class description): PROJECTION (default) draws every
+  /// visible tetrahedron in visibility order; RAY_CASTING walks each pixel's ray through the
+  /// tetrahedra by face adjacency, front to back, with no sort. Ray casting takes what projection
+  /// can, except a cell scalar's isosurfaces and a near plane cutting the mesh's bounds: those frames
+  /// are projected. AUTOMATIC: ray casting where it can. GetUsedRayCasting: what the last frame did.
+  vtkSetClampMacro(RenderMode, int, PROJECTION, AUTOMATIC);
+  vtkGetMacro(RenderMode, int);
+  void SetRenderModeToProjection() { this->SetRenderMode(PROJECTION); }
+  void SetRenderModeToRayCasting() { this->SetRenderMode(RAY_CASTING); }
+  void SetRenderModeToAutomatic() { this->SetRenderMode(AUTOMATIC); }
+  bool GetUsedRayCasting();
+  /// Ray casting: the walk passes the last frame ran (one per run of the mesh along the rays that
+  /// cross it most often: a convex mesh takes one).
+  int GetNumberOfPeels();
+  ///@}
+
   ///@{
   /// What the last frames did, for tests: tetrahedra drawn in the last frame, visibility sorts,
   /// gradient computations, uploads of the mesh and of the transfer function, visible-list builds.
@@ -161,7 +184,10 @@ protected:
   bool MeasureOpaqueShare(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);
   vtkShaderProgram* ReadyMaskProgram(const vtkUnstructuredVolumeFrame& frame);
 
+  bool DrawByRayCasting(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);
+
   bool CountShadedFragments = false;
+  int RenderMode = PROJECTION;
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
 
 private:

@@ -12,6 +12,8 @@
 #include "uvBarycentricPullVS.h"
 #include "uvBarycentricRayLib.h"
 #include "uvBarycentricTetrahedronLib.h"
+#include "uvEyeRayLib.h"
+#include "uvFullScreenTriangleVS.h"
 #include "uvPhongLib.h"
 #include "uvPreIntegratedTetrahedraFS.h"
 #include "uvPreIntegratedTetrahedraGS.h"
@@ -19,6 +21,8 @@
 #include "uvProjectedTetrahedronLib.h"
 #include "uvSegmentIntegrationLib.h"
 #include "uvSegmentLengthTableLib.h"
+#include "uvTetrahedralWalkFS.h"
+#include "uvTetrahedralWalkLib.h"
 #include "uvTransferFunctionLib.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
@@ -36,6 +40,7 @@ struct vtkPreIntegratedTetrahedraPrograms
     bool SegmentTable = false; // one table read per segment (no isosurfaces, no shading)
     bool NearPlaneCuts = true; // fans only: some tetrahedra may cross the near plane, ray-cast them
     bool OpaqueDepth = true;   // opaque geometry may have been drawn: its depth ends segments
+    bool RayCasting = false;   // full screen, rays walk the tetrahedra (no cell surfaces; ignores the route)
   };
 
   static uvgl::ProgramSources Sources(const Options& options)
@@ -51,9 +56,19 @@ struct vtkPreIntegratedTetrahedraPrograms
       defines += "#define UV_NEAR_PLANE_CUTS\n";
     if (options.OpaqueDepth)
       defines += "#define UV_OPAQUE_DEPTH\n";
-    if (options.VertexPulling)
+    if (options.VertexPulling && !options.RayCasting)
       defines += "#define UV_FACES\n";
     uvgl::ProgramSources sources;
+    if (options.RayCasting)
+    {
+      sources.Vertex = uvgl::ShaderSource(uvFullScreenTriangleVS, "");
+      sources.Fragment = uvgl::ShaderSource(uvTetrahedralWalkFS, defines,
+        { { "//UV::EyeRay", uvEyeRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
+          { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib },
+          { "//UV::SegmentLengthTable", uvSegmentLengthTableLib },
+          { "//UV::TetrahedralWalk", uvTetrahedralWalkLib } });
+      return sources;
+    }
     if (options.VertexPulling)
     {
       sources.Vertex = uvgl::ShaderSource(
@@ -90,6 +105,13 @@ struct vtkPreIntegratedTetrahedraPrograms
           all.push_back({ pulling, false, false, true, false, cuts, depth });
           all.push_back({ pulling, false, false, false, true, cuts, depth });
         }
+    for (bool depth : { true, false })
+    {
+      for (bool gradients : { false, true })
+        for (bool nodeTexture : { false, true })
+          all.push_back({ true, gradients, nodeTexture, false, false, false, depth, true });
+      all.push_back({ true, false, false, false, true, false, depth, true });
+    }
     return all;
   }
 };

@@ -229,6 +229,40 @@ inline std::string ShaderSource(const char* source, const std::string& defines,
   return text;
 }
 
+/// The eye rays of uvEyeRayLib.glsl: the near-plane point and the direction (far minus near point)
+/// at ndc (0, 0) and their change per unit of ndc x and y, computed in double from `clipToModel`
+/// and then rounded (a float matrix loses the direction when the far plane is far beyond the near).
+/// Also sets viewportSize.
+inline void SetEyeRayUniforms(vtkShaderProgram* program, const glm::dmat4& clipToModel, int width, int height)
+{
+  const auto unproject = [&clipToModel](double x, double y, double z) {
+    const glm::dvec4 p = clipToModel * glm::dvec4(x, y, z, 1.0);
+    return glm::dvec3(p) / p.w;
+  };
+  float nearPlane[3][3], rayDirection[3][3];
+  const double ndc[3][2] = { { 0.0, 0.0 }, { 1.0, 0.0 }, { 0.0, 1.0 } };
+  const glm::dvec3 near0 = unproject(0.0, 0.0, -1.0), far0 = unproject(0.0, 0.0, 1.0);
+  for (int k = 0; k < 3; ++k)
+  {
+    glm::dvec3 nearPoint = unproject(ndc[k][0], ndc[k][1], -1.0);
+    glm::dvec3 direction = unproject(ndc[k][0], ndc[k][1], 1.0) - nearPoint;
+    if (k > 0)
+    {
+      nearPoint -= near0;
+      direction -= far0 - near0;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      nearPlane[k][i] = static_cast<float>(nearPoint[i]);
+      rayDirection[k][i] = static_cast<float>(direction[i]);
+    }
+  }
+  program->SetUniform3fv("nearPlane", 3, nearPlane);
+  program->SetUniform3fv("rayDirection", 3, rayDirection);
+  const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
+  program->SetUniform2f("viewportSize", viewport);
+}
+
 /// The sources of one shader program, ready to compile (no geometry stage when Geometry is empty).
 struct ProgramSources
 {

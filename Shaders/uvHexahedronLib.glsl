@@ -62,21 +62,7 @@ vec3 FrameCoordinates(HexahedronFrame frame, vec3 x)
   return frame.toLocal * (x - frame.origin);
 }
 
-/// The pixel at `fragCoord` in normalised device coordinates.
-vec2 PixelNdc(vec2 fragCoord, vec2 viewportSize)
-{
-  return fragCoord / viewportSize * 2.0 - 1.0;
-}
-
-/// The ray through `ndc` in model space, from the near plane, unit direction. The near-plane point
-/// and the direction (far minus near point) are affine in ndc for every camera projection; the
-/// mapper gives their coefficients (at ndc 0, per unit x, per unit y), computed in double: unprojecting
-/// through a float clip-to-model matrix loses the direction when the far plane is far beyond the near.
-void EyeRay(vec2 ndc, vec3 nearPlane[3], vec3 rayDirection[3], out vec3 origin, out vec3 direction)
-{
-  origin = nearPlane[0] + ndc.x * nearPlane[1] + ndc.y * nearPlane[2];
-  direction = normalize(rayDirection[0] + ndc.x * rayDirection[1] + ndc.y * rayDirection[2]);
-}
+//UV::EyeRay
 
 /// The largest absolute component: a vector's size without squares, which underflow or overflow
 /// in float on meshes a billionth or a trillion times the unit.

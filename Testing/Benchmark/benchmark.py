@@ -81,6 +81,9 @@ MAPPERS = [
     ("VTK UGVolumeRayCast", vtkUnstructuredGridVolumeRayCastMapper, "tets"),
     ("VTK UGZSweep", vtkUnstructuredGridVolumeZSweepMapper, "tets"),
     ("UV PreIntegratedTetrahedra", vtkPreIntegratedTetrahedraMapper, "tets"),
+    # Rays walking the tetrahedra by face adjacency where the default projects them.
+    ("UV PreIntegratedTetrahedra, ray casting",
+     lambda: configured(vtkPreIntegratedTetrahedraMapper, RenderModeToRayCasting=None), "tets"),
     # Exact segments (cut at every node) where the default reads its segment table.
     ("UV PreIntegratedTetrahedra, exact segments",
      lambda: configured(vtkPreIntegratedTetrahedraMapper, SegmentIntegration=2), "tets"),

@@ -11,6 +11,7 @@
 #include "vtkBarycentricShellPrograms.h"
 #include "vtkHexahedralRayCastPrograms.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
+#include "vtkPreIntegratedTetrahedraWalk.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -69,16 +70,18 @@ protected:
 TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
 {
   const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
-  EXPECT_EQ(all.size(), 36u); // 18 option sets (6 of pulled faces, 12 of fans), with and without the opaque depth
+  // 23 option sets (6 of pulled faces, 12 of fans, 5 of ray casting), with and without the opaque depth
+  EXPECT_EQ(all.size(), 46u);
   for (const auto& options : all)
   {
     const std::string variant = std::string("tetrahedra program, ") +
       (options.VertexPulling ? "vertex pulling" : "geometry shader") + (options.Gradients ? ", gradients" : "") +
       (options.NodeTexture ? ", node texture" : "") + (options.CellSurfaces ? ", cell surfaces" : "") +
       (options.SegmentTable ? ", segment table" : "") + (options.NearPlaneCuts ? ", near-plane cuts" : "") +
-      (options.OpaqueDepth ? ", opaque depth" : "");
+      (options.OpaqueDepth ? ", opaque depth" : "") + (options.RayCasting ? ", ray casting" : "");
     this->ExpectLinks(vtkPreIntegratedTetrahedraPrograms::Sources(options), variant);
   }
+  this->ExpectLinks(vtkPreIntegratedTetrahedraWalk::EntrySources(), "tetrahedra ray casting, entry pass");
 }
 
 TEST_F(EmbeddedShaders, EveryBarycentricShellProgramLinks)
