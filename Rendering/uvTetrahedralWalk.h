@@ -85,15 +85,54 @@ inline std::vector<std::int32_t> BoundaryFaceRecords(const std::vector<std::int3
   return faces;
 }
 
-/// One tetrahedron as the walk sees it, for a ray from `origin` along `direction`.
+/// Whether position a comes before b (lexicographically): the order an edge's product is computed in,
+/// by position rather than point id, so a point repeated at the same place orders alike everywhere.
+inline bool Before(const glm::vec3& a, const glm::vec3& b)
+{
+  return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
+}
+
+/// The interior faces whose two tetrahedra lie on the same side of it (folded, or overlapping:
+/// tangled input cells), each counted once. A walk crosses one tetrahedron at a time and cannot add
+/// up overlapping ones as the optical model does; where there are such faces the mapper projects.
+/// `positions`: `stride` floats per point, xyz first.
+template <typename ParallelFor>
+std::size_t FoldedFaces(const std::vector<std::uint32_t>& corners, const std::vector<float>& positions, int stride,
+  const std::vector<std::int32_t>& packedNeighbours, ParallelFor&& parallelFor)
+{
+  const auto at = [&](std::uint32_t id) {
+    const float* p = &positions[std::size_t(id) * stride];
+    return glm::dvec3(p[0], p[1], p[2]);
+  };
+  std::vector<unsigned char> folded(packedNeighbours.size(), 0);
+  parallelFor(packedNeighbours.size() / 4, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      for (int k = 0; k < 4; ++k)
+      {
+        const std::int32_t across = packedNeighbours[4 * t + k];
+        if (across < 0 || std::size_t(across / 4) < t)
+          continue; // the boundary, or counted from the other side
+        const glm::dvec3 a = at(corners[4 * t + (k + 1) % 4]), b = at(corners[4 * t + (k + 2) % 4]),
+                         c = at(corners[4 * t + (k + 3) % 4]);
+        const glm::dvec3 normal = glm::cross(b - a, c - a);
+        const double mine = glm::dot(normal, at(corners[4 * t + k]) - a);
+        const double theirs = glm::dot(normal, at(corners[std::size_t(across)]) - a);
+        folded[4 * t + k] = (mine > 0.0 && theirs > 0.0) || (mine < 0.0 && theirs < 0.0);
+      }
+  });
+  std::size_t count = 0;
+  for (unsigned char f : folded)
+    count += f;
+  return count;
+}
+
+/// One tetrahedron as the walk sees it, for a ray from `origin` along unit `direction`.
 struct WalkedTetrahedron
 {
   glm::vec4 Along{ 0.0f };   // the corners' ray parameters (their projections on the ray)
   float Edges[6] = {};       // products with edges 01, 02, 03, 12, 13, 23 (local corners)
-  float Orientation = 1.0f;  // the sign of the volume
 
-  WalkedTetrahedron(const glm::vec3 corners[4], const std::uint32_t ids[4], const glm::vec3& origin,
-    const glm::vec3& direction)
+  WalkedTetrahedron(const glm::vec3 corners[4], const glm::vec3& origin, const glm::vec3& direction)
   {
     glm::vec3 p[4];
     for (int k = 0; k < 4; ++k)
@@ -104,17 +143,27 @@ struct WalkedTetrahedron
     const int pairs[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
     for (int e = 0; e < 6; ++e)
     {
-      const int a = pairs[e][0], b = pairs[e][1];
-      const bool flip = ids[a] > ids[b];
-      const float product = glm::dot(direction, glm::cross(flip ? p[b] : p[a], flip ? p[a] : p[b]));
+      const glm::vec3 a = p[pairs[e][0]], b = p[pairs[e][1]];
+      const bool flip = Before(b, a);
+      const glm::vec3 moment = glm::cross(flip ? b : a, flip ? a : b);
+      float product = glm::dot(direction, moment);
+      if (product == 0.0f)
+      {
+        // A tie: the first-order term once the direction is turned by a tiny fixed generic amount,
+        // scaled far below any other product.
+        float tie = glm::dot(glm::vec3(0.3112f, 0.5697f, 0.7607f), moment);
+        tie = tie != 0.0f ? tie : glm::dot(glm::vec3(0.8716f, -0.2873f, 0.3972f), moment);
+        product = tie * 1e-20f;
+        product = product != 0.0f ? product : (tie < 0.0f ? -1e-30f : 1e-30f);
+      }
       this->Edges[e] = flip ? -product : product;
     }
-    this->Orientation = glm::dot(p[1] - p[0], glm::cross(p[2] - p[0], p[3] - p[0])) < 0.0f ? -1.0f : 1.0f;
   }
 
-  /// The products around the face opposite `corner`, each standing at the corner it does not touch
-  /// (0 at `corner`): unnormalised barycentric weights of the crossing, all >= 0 times Orientation
-  /// where the ray leaves through the face.
+  /// The products around the face opposite `corner`, outward for a positive tetrahedron, each
+  /// standing at the corner it does not touch (0 at `corner`): unnormalised barycentric weights of
+  /// the crossing of the face's plane, all >= 0 times the volume's sign where the ray leaves
+  /// through the face, all <= 0 where it enters.
   glm::vec4 FaceWeights(int corner) const
   {
     const float* e = this->Edges;
@@ -132,16 +181,20 @@ struct WalkedTetrahedron
   }
 
   /// The face the ray leaves by, other than `entered`'s: the one whose least oriented weight is the
-  /// largest, so rounding at an edge still picks a face. `weights`: its normalised weights.
+  /// largest, so rounding at an edge still picks a face. The orientation is read from the entry
+  /// face's weights (the sign opposite to leaving), not from the volume, whose sign rounding can
+  /// flip on a sliver. `weights`: the exit face's, normalised.
   int ExitFace(int entered, glm::vec4& weights) const
   {
+    const glm::vec4 in = this->FaceWeights(entered);
+    const float orientation = in.x + in.y + in.z + in.w > 0.0f ? -1.0f : 1.0f;
     int best = -1;
     float bestLeast = -3.0e38f;
     for (int k = 0; k < 4; ++k)
     {
       if (k == entered)
         continue;
-      glm::vec4 w = this->FaceWeights(k) * this->Orientation;
+      glm::vec4 w = this->FaceWeights(k) * orientation;
       w[k] = 3.0e38f;
       const float least = glm::min(glm::min(w.x, w.y), glm::min(w.z, w.w));
       if (least > bestLeast)
@@ -161,8 +214,8 @@ struct WalkedTetrahedron
   }
 };
 
-/// One segment of a walked ray: the tetrahedron and the ray parameters and barycentric weights of
-/// where the ray enters and leaves it.
+/// One segment of a walked ray: the tetrahedron, the ray parameters where the ray enters and leaves
+/// it, and the barycentric weights there (the field's values and gradients follow from them).
 struct WalkSegment
 {
   std::int32_t Tetrahedron = -1;
@@ -171,50 +224,54 @@ struct WalkSegment
 };
 
 /// The walk from boundary face `record` (tetrahedron * 4 + corner) to where the ray leaves the mesh
-/// (or `maximumSteps` tetrahedra). `corners` holds 4 point ids per tetrahedron, `positions` 3 floats
-/// per point, `packedNeighbours` is PackedFaceNeighbours'.
+/// (or `maximumSteps` tetrahedra), as uvTetrahedralWalkFS.glsl takes it: ray parameters from
+/// `origin`, products from the entry point on. `corners` holds 4 point ids per tetrahedron,
+/// `positions` 3 floats per point, `packedNeighbours` is PackedFaceNeighbours'. `leftMesh`: whether
+/// the walk ended at a boundary face (rather than at maximumSteps).
 inline std::vector<WalkSegment> Walk(std::int32_t record, const std::vector<std::uint32_t>& corners,
   const std::vector<float>& positions, const std::vector<std::int32_t>& packedNeighbours, const glm::vec3& origin,
-  const glm::vec3& direction, int maximumSteps)
+  const glm::vec3& direction, int maximumSteps, bool& leftMesh)
 {
-  const auto load = [&](std::int32_t t) {
+  const auto load = [&](std::int32_t t, const glm::vec3& from) {
     glm::vec3 p[4];
-    std::uint32_t ids[4];
     for (int k = 0; k < 4; ++k)
     {
-      ids[k] = corners[4 * std::size_t(t) + k];
-      p[k] = glm::vec3(positions[3 * ids[k]], positions[3 * ids[k] + 1], positions[3 * ids[k] + 2]);
+      const std::size_t id = corners[4 * std::size_t(t) + k];
+      p[k] = glm::vec3(positions[3 * id], positions[3 * id + 1], positions[3 * id + 2]);
     }
-    return WalkedTetrahedron(p, ids, origin, direction);
+    return WalkedTetrahedron(p, from, direction);
   };
   std::vector<WalkSegment> segments;
+  leftMesh = false;
   std::int32_t cell = record / 4;
   int entered = record % 4;
-  WalkedTetrahedron t = load(cell);
-  glm::vec4 front = WalkedTetrahedron::Normalised(t.FaceWeights(entered));
+  const float base = glm::dot(WalkedTetrahedron::Normalised(load(cell, origin).FaceWeights(entered)),
+    load(cell, origin).Along);
+  const glm::vec3 start = origin + base * direction;
+  WalkedTetrahedron t = load(cell, start);
+  glm::vec4 frontWeights = WalkedTetrahedron::Normalised(t.FaceWeights(entered));
+  float front = glm::dot(frontWeights, t.Along);
   for (int step = 0; step < maximumSteps; ++step)
   {
     WalkSegment segment;
     segment.Tetrahedron = cell;
-    segment.FrontWeights = front;
-    segment.Front = glm::dot(front, t.Along);
+    segment.FrontWeights = frontWeights;
+    segment.Front = base + front;
     const int exit = t.ExitFace(entered, segment.BackWeights);
-    segment.Back = glm::dot(segment.BackWeights, t.Along);
+    const float back = glm::dot(segment.BackWeights, t.Along);
+    segment.Back = base + back;
     segments.push_back(segment);
     const std::int32_t next = packedNeighbours[4 * std::size_t(cell) + exit];
     if (next < 0)
+    {
+      leftMesh = true;
       break;
-    // The next tetrahedron's entry weights are these exit weights, moved to its own corners.
-    const std::int32_t previous = cell;
+    }
     cell = next / 4;
     entered = next % 4;
-    glm::vec4 moved(0.0f);
-    for (int k = 0; k < 4; ++k)
-      for (int m = 0; m < 4; ++m)
-        if (corners[4 * std::size_t(cell) + m] == corners[4 * std::size_t(previous) + k])
-          moved[m] = segment.BackWeights[k];
-    front = moved;
-    t = load(cell);
+    t = load(cell, start);
+    frontWeights = WalkedTetrahedron::Normalised(t.FaceWeights(entered));
+    front = back; // carried: the next segment begins exactly where this one ends
   }
   return segments;
 }

@@ -74,6 +74,12 @@ void SetPixelRays(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& f
 /// this share of the covered pixels reached the opacity threshold in the last frame.
 constexpr double FrontToBackOpaqueShare = 0.25;
 
+/// AUTOMATIC casts rays from this many visible tetrahedra per pixel of the viewport on. A walk step
+/// costs more than a projected fragment, a projected tetrahedron costs its triangles' setup however
+/// few pixels it covers: the benchmark's scenes cross over near one tetrahedron per pixel (a mesh
+/// rarely covers the whole viewport).
+constexpr double RayCastingTetrahedraPerPixel = 0.5;
+
 /// Tetrahedra drawn between two refreshes of the opacity mask when compositing front to back: a
 /// refresh is one full-screen pass, so at most about 64 of them a frame, and none more often than
 /// every 4096 tetrahedra.
@@ -382,10 +388,9 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   impl.UseTable = this->ChooseSegmentTable(frame);
 
   // Ray casting needs no order: rays walk front to back by adjacency.
-  impl.RayCasting = this->RenderMode != PROJECTION && !impl.DrawCellSurfaces && !impl.NearPlaneMayCut(frame);
+  impl.RayCasting = this->ChooseRayCasting(frame);
   if (impl.RayCasting)
   {
-    impl.Walk.Update(impl.Mesh);
     impl.FrontToBack = false;
     return true;
   }
@@ -555,6 +560,23 @@ bool vtkPreIntegratedTetrahedraMapper::ChooseSegmentTable(const vtkUnstructuredV
   if (!impl.Table.Update(impl.Mesh, impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
     return false;
   return this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
+}
+
+/// Whether this frame walks rays (RenderMode): it can unless a cell scalar's isosurfaces are drawn or
+/// the near plane may cut the mesh; AUTOMATIC where the visible tetrahedra are many for the pixels
+/// and no tetrahedra overlap (folded faces: a walk would see one of them where they add up). The
+/// adjacency is brought up to date here.
+bool vtkPreIntegratedTetrahedraMapper::ChooseRayCasting(const vtkUnstructuredVolumeFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  if (this->RenderMode == PROJECTION || impl.DrawCellSurfaces || impl.NearPlaneMayCut(frame))
+    return false;
+  const double pixels = static_cast<double>(frame.Width) * frame.Height;
+  if (this->RenderMode == AUTOMATIC &&
+    static_cast<double>(impl.Visible.Drawn.size()) < RayCastingTetrahedraPerPixel * pixels)
+    return false;
+  impl.Walk.Update(impl.Mesh);
+  return this->RenderMode == RAY_CASTING || impl.Walk.FoldedFaces() == 0;
 }
 
 /// Whether the order depends on the scene: skipping on, a threshold below 1, and more than one

@@ -25,6 +25,17 @@
  * The fragment shader integrates the ray segment and the result is composited back to front into a
  * float image that is blended into VTK's scene, clipped at the depth of opaque geometry.
  *
+ * Ray casting (RenderMode; AUTOMATIC takes it for meshes of many tetrahedra per pixel, where
+ * projecting pays the setup of millions of triangles of a few pixels each): no sort and no
+ * triangles per tetrahedron. An entry pass finds, per pixel, the boundary face where the ray enters
+ * (each face tested exactly), and a full-screen pass walks the ray from there through the
+ * tetrahedra by face adjacency (vtkPreIntegratedTetrahedraWalk; uvTetrahedralWalk.h), integrating
+ * each segment as the projected fragments do and compositing front to back until the ray leaves
+ * the mesh or reaches OpacityThreshold. Exit faces come from Plücker products computed alike by
+ * both tetrahedra of a face, so rays cannot slip between cells; where a ray leaves a non-convex
+ * mesh, crosses a hole or a face two cells do not share, the next peel picks it up. The adjacency
+ * (16 bytes per tetrahedron) matches faces by position, so seams of repeated points are crossed.
+ *
  * Integration modes:
  * - PARTIAL_PRE_INTEGRATION (default): the segment is cut where its scalar crosses a transfer-
  *   function node and each piece is integrated with the Psi table of Moreland and Angel. This is the
@@ -104,11 +115,13 @@ public:
     AUTOMATIC = 2
   };
   ///@{
-  /// How the GPU reaches the pixels (see the class description): PROJECTION (default) draws every
-  /// visible tetrahedron in visibility order; RAY_CASTING walks each pixel's ray through the
-  /// tetrahedra by face adjacency, front to back, with no sort. Ray casting takes what projection
-  /// can, except a cell scalar's isosurfaces and a near plane cutting the mesh's bounds: those frames
-  /// are projected. AUTOMATIC: ray casting where it can. GetUsedRayCasting: what the last frame did.
+  /// How the GPU reaches the pixels (see the class description): PROJECTION draws every visible
+  /// tetrahedron in visibility order; RAY_CASTING walks each pixel's ray through the tetrahedra by
+  /// face adjacency, front to back, with no sort; AUTOMATIC (default) casts rays where the visible
+  /// tetrahedra number at least half the viewport's pixels and none overlap (a folded face: tangled
+  /// input cells, which the optical model adds up and a walk would see one of), and projects the
+  /// rest. Frames that draw a cell scalar's isosurfaces, or whose near plane may cut the mesh's
+  /// bounds, are projected whatever the mode. GetUsedRayCasting: what the last frame did.
   vtkSetClampMacro(RenderMode, int, PROJECTION, AUTOMATIC);
   vtkGetMacro(RenderMode, int);
   void SetRenderModeToProjection() { this->SetRenderMode(PROJECTION); }
@@ -179,6 +192,7 @@ protected:
   bool DrawFrontToBack(
     const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target, vtkShaderProgram* program);
   bool ChooseSegmentTable(const vtkUnstructuredVolumeFrame& frame);
+  bool ChooseRayCasting(const vtkUnstructuredVolumeFrame& frame);
   bool OrderIsChosen();
   bool ChooseFrontToBack();
   bool MeasureOpaqueShare(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);
@@ -187,7 +201,7 @@ protected:
   bool DrawByRayCasting(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);
 
   bool CountShadedFragments = false;
-  int RenderMode = PROJECTION;
+  int RenderMode = AUTOMATIC;
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
 
 private:

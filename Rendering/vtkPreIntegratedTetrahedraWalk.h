@@ -62,6 +62,7 @@ public:
     this->Neighbours =
       uv::PackedFaceNeighbours(uv::MakeTetrahedronFaceAdjacency(corners, uvvtk::ParallelFor), uvvtk::ParallelFor);
     this->Boundary = uv::BoundaryFaceRecords(this->Neighbours);
+    this->Folded = uv::FoldedFaces(corners, mesh.PointData, 4, this->Neighbours, uvvtk::ParallelFor);
     this->BuiltFor = mesh.TopologyVersion;
     ++this->Builds;
   }
@@ -181,6 +182,8 @@ public:
   }
 
   std::size_t BoundaryFaces() const { return this->Boundary.size(); }
+  /// Interior faces with both tetrahedra on one side (uv::FoldedFaces), as of the last Update.
+  std::size_t FoldedFaces() const { return this->Folded; }
   int GetBuilds() const { return this->Builds; }
   /// Host bytes (the adjacency and the boundary faces).
   std::size_t GetBytes() const
@@ -206,6 +209,7 @@ public:
 private:
   std::vector<std::int32_t> Neighbours, Boundary;
   std::uint64_t BuiltFor = 0; // the mesh's TopologyVersion
+  std::size_t Folded = 0;
   int Builds = 0;
   vtkUnstructuredVolumeBufferTexture NeighbourTexture, BoundaryTexture;
   vtkNew<vtkTextureObject> Entry, EntryDepth, Exit;

@@ -8,10 +8,12 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
                       analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
-                      finite_image, inside_camera, inside_out, reference, rmse, spike_property)
+                      finite_image, inside_camera, inside_out, plate_and_block, reference, rmse,
+                      spike_property)
 
 from unstructuredvolume import vtkAnalyticMeshSource  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdList, vtkPoints  # noqa: E402
+from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper  # noqa: E402
@@ -165,6 +167,158 @@ class AccuracyTests(SceneTestCase):
         self.check(mesh, prop, camera, 96, 3e-4)
 
 
+def unshared_halves(mesh):
+    """The same tetrahedra with the points of the cells whose first point has x > 0 repeated: two
+    halves that touch along a seam without sharing a point (a mesh written in blocks)."""
+    copy = vtkUnstructuredGrid()
+    points = vtkPoints()
+    values = vtkFloatArray()
+    values.SetName(mesh.GetPointData().GetScalars().GetName())
+    scalars = mesh.GetPointData().GetScalars()
+    for p in range(mesh.GetNumberOfPoints()):
+        points.InsertNextPoint(mesh.GetPoint(p))
+        values.InsertNextValue(scalars.GetValue(p))
+    repeated = {}
+    ids = vtkIdList()
+    for c in range(mesh.GetNumberOfCells()):
+        mesh.GetCellPoints(c, ids)
+        corners = [ids.GetId(k) for k in range(4)]
+        if mesh.GetPoint(corners[0])[0] > 0:
+            for k, p in enumerate(corners):
+                if p not in repeated:
+                    repeated[p] = points.InsertNextPoint(mesh.GetPoint(p))
+                    values.InsertNextValue(scalars.GetValue(p))
+                corners[k] = repeated[p]
+        copy.InsertNextCell(VTK_TETRA, 4, corners)
+    copy.SetPoints(points)
+    copy.GetPointData().SetScalars(values)
+    return copy
+
+
+class RayCastingTests(SceneTestCase):
+    """RenderMode RAY_CASTING: rays walk the tetrahedra by adjacency. Against the exact reference
+    (which intersects every ray with every tetrahedron, independently of the walk)."""
+
+    def check(self, mesh, prop, camera, size, bound, peels=None, **settings):
+        # Threshold 1: no early termination (its error, at most 1 - OpacityThreshold, is checked below).
+        settings.setdefault("OpacityThreshold", 1.0)
+        scene = Scene(mesh, prop, camera, size, RenderMode=1, **settings)
+        image = scene.render()
+        error, worst = rmse(image, reference(mesh, prop, camera, size))
+        print(f"\n  RMSE {error:.3g}, max {worst:.3g} (bound {bound}), {scene.mapper.GetNumberOfPeels()} peels", end="")
+        self.assertTrue(scene.mapper.GetUsedRayCasting())
+        self.assertEqual(scene.events.errors, 0)
+        self.assertLess(error, bound)
+        if peels is not None:
+            self.assertEqual(scene.mapper.GetNumberOfPeels(), peels)
+        return scene
+
+    def test_exact_segments_perspective_and_parallel(self):
+        # A convex mesh: one walk per ray, the integration's own error left.
+        mesh = analytic(8)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        self.check(mesh, prop, camera_for(mesh), 128, 2e-5, peels=1, SegmentIntegration=2)
+        parallel = camera_for(mesh, 50, -20, parallel=True)
+        exact = copy_image(self.check(mesh, prop, parallel, 128, 2e-5, peels=1, SegmentIntegration=2).render())
+        # Rays stop at the default OpacityThreshold (0.999): pixels change by at most 1 - 0.999.
+        stopped = Scene(mesh, prop, parallel, 128, RenderMode=1, SegmentIntegration=2).render()
+        worst = rmse(stopped, exact)[1]
+        self.assertGreater(worst, 1e-4)
+        self.assertLessEqual(worst, 1e-3 + 1e-6)
+
+    def test_jittered_mesh_with_a_thin_spike_and_the_segment_table(self):
+        mesh = analytic(7, STEINER, vtkAnalyticMeshSource.JITTER)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        self.check(mesh, spike_property(low, high, 0.05), camera_for(mesh, 10, 40), 128, 5e-5)
+        prop = uvrender.volume_property((low, high))
+        self.check(mesh, prop, camera_for(mesh), 128, 1e-4)
+
+    def test_non_convex_mesh_across_its_gap(self):
+        # Rays through the block leave the mesh and enter the plate behind: a second peel.
+        mesh, _ = plate_and_block()
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        prop.SetScalarOpacityUnitDistance(1.0)
+        # From beyond the plate's far end (its fixture camera stands above the plate, where the near
+        # plane cuts the mesh's bounds and frames are projected).
+        camera = vtkCamera()
+        camera.SetPosition(14, 0.5, 6)
+        camera.SetFocalPoint(1.5, 0.5, 0.7)
+        camera.SetViewUp(0, 0, 1)
+        camera.SetViewAngle(30)
+        camera.SetClippingRange(0.5, 30)
+        self.check(mesh, prop, camera, 96, 1e-6, peels=2, SegmentIntegration=2)
+
+    def test_seam_of_repeated_points_is_crossed(self):
+        # Faces are matched by position: the seam between the halves is no boundary, one walk per
+        # ray (matched by point id it took two peels) and the same image as the joined mesh.
+        joined = analytic(6)
+        halves = unshared_halves(joined)
+        self.assertGreater(halves.GetNumberOfPoints(), joined.GetNumberOfPoints())
+        prop = uvrender.volume_property(joined.GetPointData().GetScalars().GetRange())
+        camera = camera_for(joined, 80, 10)
+        self.check(halves, prop, camera, 96, 1e-5, peels=1, SegmentIntegration=2)
+
+    def test_twisted_mesh_split_on_the_fly(self):
+        # Twisted hexahedra split into tetrahedra whose boundary faces fold: where rays leave and
+        # enter again the walk peels; no order to get wrong.
+        hexes = analytic(6, ML, vtkAnalyticMeshSource.TWIST, vtkAnalyticMeshSource.HEXAHEDRA)
+        from unstructuredvolume import vtkHexahedraToTetrahedra
+        split = vtkHexahedraToTetrahedra()
+        split.SetInputData(hexes)
+        split.Update()
+        prop = uvrender.volume_property(hexes.GetPointData().GetScalars().GetRange())
+        self.check(split.GetOutput(), prop, camera_for(hexes, 50, -20, parallel=True), 128, 2e-6,
+                   SegmentIntegration=2)
+
+    def test_isosurfaces_and_shading(self):
+        # Gradients at each segment's ends come from the walk's barycentric weights.
+        mesh = analytic(7, STEINER, vtkAnalyticMeshSource.JITTER)
+        low, high = mesh.GetPointData().GetScalars().GetRange()
+        prop = uvrender.volume_property((low, high))
+        prop.ShadeOn()
+        scene = Scene(mesh, prop, camera_for(mesh), 96, RenderMode=1)
+        scene.mapper.AddIsosurface(low + 0.6 * (high - low), 0.9, 0.8, 0.2, 0.5)
+        image = copy_image(scene.render())
+        self.assertTrue(scene.mapper.GetUsedRayCasting())
+        projected = Scene(mesh, prop, camera_for(mesh), 96, RenderMode=0)
+        projected.mapper.AddIsosurface(low + 0.6 * (high - low), 0.9, 0.8, 0.2, 0.5)
+        error, worst = rmse(image, projected.render())
+        print(f"\n  against projection: RMSE {error:.3g}, max {worst:.3g}", end="")
+        self.assertLess(error, 1e-4)
+
+    def test_cell_scalar_is_constant_in_each_tetrahedron(self):
+        mesh = analytic(6, STEINER, vtkAnalyticMeshSource.JITTER)
+        values = vtkFloatArray()
+        values.SetName("cells")
+        ids = vtkIdList()
+        point_values = mesh.GetPointData().GetScalars()
+        for c in range(mesh.GetNumberOfCells()):
+            mesh.GetCellPoints(c, ids)
+            values.InsertNextValue(sum(point_values.GetValue(ids.GetId(k)) for k in range(4)) / 4)
+        mesh.GetPointData().Initialize()
+        mesh.GetCellData().SetScalars(values)
+        prop = uvrender.volume_property(values.GetRange())
+        self.check(mesh, prop, camera_for(mesh), 96, 1e-5, peels=1, SegmentIntegration=2)
+
+    def test_opaque_geometry_ends_the_rays(self):
+        check_geometry_shown_later(self, RenderMode=1)
+
+    def test_near_plane_in_the_mesh_is_projected_and_automatic_chooses_by_size(self):
+        mesh = analytic(6)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        inside = Scene(mesh, prop, inside_camera(), 64, RenderMode=1)
+        inside.render()
+        self.assertFalse(inside.mapper.GetUsedRayCasting())
+        # AUTOMATIC (default): 1,296 tetrahedra on 128^2 pixels are projected, 82,944 on 64^2 cast.
+        small = Scene(mesh, prop, camera_for(mesh), 128)
+        small.render()
+        self.assertFalse(small.mapper.GetUsedRayCasting())
+        large_mesh = analytic(24)
+        large = Scene(large_mesh, prop, camera_for(large_mesh), 64)
+        large.render()
+        self.assertTrue(large.mapper.GetUsedRayCasting())
+
+
 class OpaqueGeometryTests(SceneTestCase):
     def test_geometry_shown_later_cuts_the_volume_and_hidden_again_does_not(self):
         check_geometry_shown_later(self)
@@ -173,21 +327,26 @@ class OpaqueGeometryTests(SceneTestCase):
 class HostMemoryTests(SceneTestCase):
     def test_host_bytes_per_tetrahedron(self):
         # Kept between frames, per tetrahedron: 4 point ids (16 B), its scalar range (8), its place in
-        # the drawn list (4) and the order (4), its 4 face neighbours (16); per point a recentred
-        # position and scalar (16). Sort keys and the exact order's state live only while sorting,
-        # centroids are computed when sorting. The issue's aim: at most 100 B per tetrahedron.
+        # the drawn list (4) and, projected, the order (4) and its 4 face neighbours for the face order
+        # (16), or, ray-cast, its 4 face neighbours for the walk (16) and no order; per point a
+        # recentred position and scalar (16); ray-cast, per boundary face its record (4). Sort keys and
+        # the exact order's state live only while sorting, centroids are computed when sorting. The
+        # issue's aim: at most 100 B per tetrahedron.
         mesh = analytic(16)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
-        scene = Scene(mesh, prop, camera_for(mesh), 64)
-        scene.render()
         tets, points = mesh.GetNumberOfCells(), mesh.GetNumberOfPoints()
-        per_tet = scene.mapper.GetHostMemoryInBytes() / tets
-        expected = 48 + 16 * points / tets
-        print(f"\n  {per_tet:.1f} B per tetrahedron kept on the host (itemised {expected:.1f})", end="")
-        self.assertEqual(scene.events.errors, 0)
-        self.assertGreaterEqual(per_tet, expected)  # every item counted
-        self.assertLessEqual(per_tet, expected + 1.0)
-        self.assertLessEqual(per_tet, 100.0)
+        boundary = 6 * 16 * 16 * 2  # two triangles per square of the cube's surface
+        for mode, expected in ((0, 48 + 16 * points / tets), (1, 44 + (16 * points + 4 * boundary) / tets)):
+            scene = Scene(mesh, prop, camera_for(mesh), 64, RenderMode=mode)
+            scene.render()
+            self.assertEqual(scene.mapper.GetUsedRayCasting(), mode == 1)
+            per_tet = scene.mapper.GetHostMemoryInBytes() / tets
+            print(f"\n  mode {mode}: {per_tet:.1f} B per tetrahedron kept on the host (itemised {expected:.1f})",
+                  end="")
+            self.assertEqual(scene.events.errors, 0)
+            self.assertGreaterEqual(per_tet, expected)  # every item counted
+            self.assertLessEqual(per_tet, expected + 1.0)
+            self.assertLessEqual(per_tet, 100.0)
 
 
 class BaselineTests(BaselineTestCase):
@@ -309,7 +468,8 @@ class EarlyTerminationTests(SceneTestCase):
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         prop.SetScalarOpacityUnitDistance(unit_distance)
         camera = camera_for(mesh)
-        return mesh, prop, camera, Scene(mesh, prop, camera, 96, CountShadedFragments=True, **settings)
+        # Projected (the ray caster stops each ray itself): the subject is the masked batches.
+        return mesh, prop, camera, Scene(mesh, prop, camera, 96, CountShadedFragments=True, RenderMode=0, **settings)
 
     def render_both_ways(self, scene, refreshes=5):
         """The image and shaded fragments with skipping on, then off (back to front, no mask)."""
