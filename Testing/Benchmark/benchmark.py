@@ -81,14 +81,17 @@ MAPPERS = [
     ("VTK UGVolumeRayCast", vtkUnstructuredGridVolumeRayCastMapper, "tets"),
     ("VTK UGZSweep", vtkUnstructuredGridVolumeZSweepMapper, "tets"),
     ("UV PreIntegratedTetrahedra", vtkPreIntegratedTetrahedraMapper, "tets"),
-    # Rays walking the tetrahedra by face adjacency where the default projects them.
+    # The default chooses by size (RenderMode AUTOMATIC): each way forced.
     ("UV PreIntegratedTetrahedra, ray casting",
      lambda: configured(vtkPreIntegratedTetrahedraMapper, RenderModeToRayCasting=None), "tets"),
+    ("UV PreIntegratedTetrahedra, projection",
+     lambda: configured(vtkPreIntegratedTetrahedraMapper, RenderModeToProjection=None), "tets"),
     # Exact segments (cut at every node) where the default reads its segment table.
     ("UV PreIntegratedTetrahedra, exact segments",
      lambda: configured(vtkPreIntegratedTetrahedraMapper, SegmentIntegration=2), "tets"),
     ("UV PreIntegrated (geometry shader)", lambda: configured(vtkPreIntegratedTetrahedraMapper,
-                                                             ProjectionRouteToGeometryShader=None), "tets"),
+                                                             ProjectionRouteToGeometryShader=None,
+                                                             RenderModeToProjection=None), "tets"),
     ("UV AverageScalarTetrahedra", lambda: configured(vtkPreIntegratedTetrahedraMapper,
                                                       IntegrationModeToAverageScalar=None), "tets"),
     ("UV HexRayCast Accurate", vtkHexahedralRayCastMapper, "hexahedra"),
