@@ -150,11 +150,9 @@ struct WalkedTetrahedron
       if (product == 0.0f)
       {
         // A tie: the first-order term once the direction is turned by a tiny fixed generic amount,
-        // scaled far below any other product.
-        float tie = glm::dot(glm::vec3(0.3112f, 0.5697f, 0.7607f), moment);
-        tie = tie != 0.0f ? tie : glm::dot(glm::vec3(0.8716f, -0.2873f, 0.3972f), moment);
-        product = tie * 1e-20f;
-        product = product != 0.0f ? product : (tie < 0.0f ? -1e-30f : 1e-30f);
+        // scaled far below any other product (positive where that is 0 too).
+        const float tie = glm::dot(glm::vec3(0.3112f, 0.5697f, 0.7607f), moment) * 1e-20f;
+        product = tie != 0.0f ? tie : 1e-30f;
       }
       this->Edges[e] = flip ? -product : product;
     }

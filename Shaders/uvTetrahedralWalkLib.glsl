@@ -30,22 +30,19 @@ bool Before(vec3 a, vec3 b)
 /// The ray's product with edge a -> b, from the earlier corner (Before) whichever way it is asked.
 /// Corners are relative to the ray's origin: the same subtraction in every tetrahedron. A product
 /// of exactly 0 (the ray meets the edge's line: through a vertex, along an edge or a face) is the
-/// first-order term once the ray's direction is turned by a tiny fixed generic amount (a second one
-/// where the first is a tie too), scaled far below any other product: every tetrahedron round the
-/// edge then sees the same line in general position, and a face that holds the ray's line gets
-/// weights in the ratio of where that turned line crosses it.
+/// first-order term once the ray's direction is turned by a tiny fixed generic amount, scaled far
+/// below any other product (positive where that is 0 too): every tetrahedron round the edge then
+/// sees the same line in general position, and a face that holds the ray's line gets weights in
+/// the ratio of where that turned line crosses it.
 float EdgeProduct(vec3 pa, vec3 pb, vec3 direction)
 {
   bool flip = Before(pb, pa);
   vec3 moment = cross(flip ? pb : pa, flip ? pa : pb);
   float product = dot(direction, moment);
-  if (product == 0.0)
-  {
-    float tie = dot(vec3(0.3112, 0.5697, 0.7607), moment);
-    tie = tie != 0.0 ? tie : dot(vec3(0.8716, -0.2873, 0.3972), moment);
-    product = tie * 1e-20;
-    product = product != 0.0 ? product : (tie < 0.0 ? -1e-30 : 1e-30);
-  }
+  // Without a branch: CPU rasterisers run a branch's body for every lane whenever one takes it.
+  float tie = dot(vec3(0.3112, 0.5697, 0.7607), moment) * 1e-20;
+  tie = tie != 0.0 ? tie : 1e-30;
+  product = product != 0.0 ? product : tie;
   return flip ? -product : product;
 }
 
