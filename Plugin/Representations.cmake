@@ -20,8 +20,9 @@ uv_representation_entry(
   MENU "Volume (Pre-integrated Tetrahedra)"
   GROUP "Pre-integrated Tetrahedra"
   PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance SegmentIntegration
-    VisibilityOrder OpacityThreshold ProjectionRoute
-  UNSHARED OpacityThreshold TetrahedraOpacityThreshold)
+    VisibilityOrder OpacityThreshold ProjectionRoute RenderMode
+  # The shells' RenderMode chooses between shells and cell projection.
+  UNSHARED OpacityThreshold TetrahedraOpacityThreshold RenderMode TetrahedraRenderMode)
 
 uv_representation_entry(
   PROXY BarycentricShellRepresentation

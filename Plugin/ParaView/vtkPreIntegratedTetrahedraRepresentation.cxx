@@ -17,3 +17,9 @@ void vtkPreIntegratedTetrahedraRepresentation::SetIntegrationMode(int mode)
   this->PreIntegratedMapper->SetIntegrationMode(mode);
   this->MarkModified();
 }
+
+void vtkPreIntegratedTetrahedraRepresentation::SetRenderMode(int mode)
+{
+  this->PreIntegratedMapper->SetRenderMode(mode);
+  this->MarkModified();
+}

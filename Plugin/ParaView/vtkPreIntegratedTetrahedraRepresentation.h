@@ -25,6 +25,7 @@ public:
   ///@{
   /// Forwarded to vtkPreIntegratedTetrahedraMapper.
   void SetIntegrationMode(int mode);
+  void SetRenderMode(int mode);
   ///@}
 
 protected:

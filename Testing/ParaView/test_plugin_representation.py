@@ -26,7 +26,7 @@ fraction = float(sys.argv[6]) if len(sys.argv) > 6 else 0.0
 ENTRY, SETTINGS = {
     "preintegrated": ("Volume (Pre-integrated Tetrahedra)",
                       {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8, "IntegrationMode": "Partial pre-integration",
-                       "TetrahedraOpacityThreshold": 0.999}),
+                       "TetrahedraOpacityThreshold": 0.999, "TetrahedraRenderMode": "Ray casting"}),
     "hexahedral": ("Volume (Hexahedral Ray Cast)",
                    {"Isovalues": [200.0], "IsosurfaceOpacity": 0.8,
                     "HexahedralIntegrationMode": "Accurate", "OpacityThreshold": 0.99}),
