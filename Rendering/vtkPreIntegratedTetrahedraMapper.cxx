@@ -317,6 +317,9 @@ void vtkPreIntegratedTetrahedraMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntegrationMode: "
      << (this->IntegrationMode == AVERAGE_SCALAR ? "AverageScalar" : "PartialPreIntegration") << "\n";
   os << indent << "CountShadedFragments: " << this->CountShadedFragments << "\n";
+  const char* modes[] = { "Projection", "RayCasting", "Automatic" };
+  os << indent << "RenderMode: " << modes[this->RenderMode] << " (last frame "
+     << (this->Impl->RayCasting ? "ray-cast" : "projected") << ")\n";
 }
 
 bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
