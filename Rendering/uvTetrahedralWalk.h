@@ -243,8 +243,8 @@ inline std::vector<WalkSegment> Walk(std::int32_t record, const std::vector<std:
   leftMesh = false;
   std::int32_t cell = record / 4;
   int entered = record % 4;
-  const float base = glm::dot(WalkedTetrahedron::Normalised(load(cell, origin).FaceWeights(entered)),
-    load(cell, origin).Along);
+  const WalkedTetrahedron first = load(cell, origin);
+  const float base = glm::dot(WalkedTetrahedron::Normalised(first.FaceWeights(entered)), first.Along);
   const glm::vec3 start = origin + base * direction;
   WalkedTetrahedron t = load(cell, start);
   glm::vec4 frontWeights = WalkedTetrahedron::Normalised(t.FaceWeights(entered));

@@ -202,12 +202,7 @@ public:
       return;
     }
     for (vtkTextureObject* texture : { this->Entry.Get(), this->Exit.Get(), this->Accumulation.Get() })
-    {
-      texture->SetContext(window);
-      texture->SetMinificationFilter(vtkTextureObject::Nearest);
-      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-      texture->Allocate2D(width, height, 4, VTK_FLOAT);
-    }
+      uvgl::AllocateFloatImage(texture, window, width, height, 4);
     this->EntryDepth->SetContext(window);
     this->EntryDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
     this->Framebuffer->SetContext(window);

@@ -10,8 +10,6 @@ flat in int boundaryFace;
 flat in vec3 faceCorners[3];
 flat in vec3 outwardNormal;
 
-uniform usamplerBuffer tetrahedronPoints; // declared for the walk library, unused here
-uniform samplerBuffer pointData;
 uniform vec3 nearPlane[3];
 uniform vec3 rayDirection[3];
 uniform vec2 viewportSize;

@@ -63,6 +63,21 @@ def analytic_hexahedra(resolution, field=ML, distortion=0):
     return analytic(resolution, field, distortion, vtkAnalyticMeshSource.HEXAHEDRA)
 
 
+def mean_cell_values(mesh, name="cells"):
+    """The mesh's point scalar averaged over each cell's points, as the only data."""
+    points = mesh.GetPointData().GetScalars()
+    values = vtkDoubleArray()
+    values.SetName(name)
+    ids = vtkIdList()
+    for c in range(mesh.GetNumberOfCells()):
+        mesh.GetCellPoints(c, ids)
+        values.InsertNextValue(sum(points.GetValue(ids.GetId(k)) for k in range(ids.GetNumberOfIds()))
+                               / ids.GetNumberOfIds())
+    mesh.GetPointData().Initialize()
+    mesh.GetCellData().SetScalars(values)
+    return mesh
+
+
 def inside_out(mesh):
     """A copy of a tetrahedral mesh with the second and third point of every cell swapped: the same
     tetrahedra, each in the opposite orientation."""

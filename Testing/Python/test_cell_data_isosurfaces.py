@@ -18,7 +18,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shared_data  # noqa: E402
 import uvrender  # noqa: E402
 from fixtures import (HexScene, Scene, SceneTestCase, analytic_hexahedra, camera_for, copy_image,  # noqa: E402
-                      hex_dominant, load_shared, rmse, shared_window, OPEN_SCENES)
+                      hex_dominant, load_shared, mean_cell_values, rmse, shared_window, OPEN_SCENES)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
                                 vtkHexahedraToTetrahedra, vtkPreIntegratedTetrahedraMapper,
@@ -45,21 +45,6 @@ MESH_BOUNDS = {("hex_dominant", "preintegrated"): 5e-3, ("hex_dominant", "cell p
                ("hex_dominant", "shells"): 5e-3, ("tetrahedra", "preintegrated"): 5e-3,
                ("tetrahedra", "cell projection"): 5e-3, ("tetrahedra", "shells"): 5e-3}
 EVERY_MAPPER = ["hexahedral", "preintegrated", "cell projection", "shells"]
-
-
-def mean_cell_values(mesh, name="cells"):
-    """The mesh's point scalar averaged over each cell's points, as the only data."""
-    points = mesh.GetPointData().GetScalars()
-    values = vtkDoubleArray()
-    values.SetName(name)
-    ids = vtkIdList()
-    for c in range(mesh.GetNumberOfCells()):
-        mesh.GetCellPoints(c, ids)
-        values.InsertNextValue(sum(points.GetValue(ids.GetId(k)) for k in range(ids.GetNumberOfIds()))
-                               / ids.GetNumberOfIds())
-    mesh.GetPointData().Initialize()
-    mesh.GetCellData().SetScalars(values)
-    return mesh
 
 
 def wavy_cell_values(mesh):

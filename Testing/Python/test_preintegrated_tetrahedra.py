@@ -8,15 +8,24 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
                       analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
-                      finite_image, inside_camera, inside_out, plate_and_block, reference, rmse,
-                      spike_property)
+                      finite_image, inside_camera, inside_out, mean_cell_values, plate_and_block, reference,
+                      rmse, spike_property)
 
-from unstructuredvolume import vtkAnalyticMeshSource  # noqa: E402
+from unstructuredvolume import vtkAnalyticMeshSource, vtkHexahedraToTetrahedra  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdList, vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper  # noqa: E402
+
+
+def twisted_hexahedra_and_split():
+    """Twisted Marschner-Lobb hexahedra (6^3) and vtkHexahedraToTetrahedra's split of them."""
+    hexes = analytic(6, ML, vtkAnalyticMeshSource.TWIST, vtkAnalyticMeshSource.HEXAHEDRA)
+    split = vtkHexahedraToTetrahedra()
+    split.SetInputData(hexes)
+    split.Update()
+    return hexes, split.GetOutput()
 
 
 class AccuracyTests(SceneTestCase):
@@ -65,17 +74,13 @@ class AccuracyTests(SceneTestCase):
 
     def test_parallel_twisted_mesh_split_on_the_fly(self):
         # Hexahedra in: the mapper splits them (one warning) and renders the tets exactly.
-        hexes = analytic(6, ML, vtkAnalyticMeshSource.TWIST, vtkAnalyticMeshSource.HEXAHEDRA)
-        from unstructuredvolume import vtkHexahedraToTetrahedra
-        split = vtkHexahedraToTetrahedra()
-        split.SetInputData(hexes)
-        split.Update()
+        hexes, tets = twisted_hexahedra_and_split()
         prop = uvrender.volume_property(hexes.GetPointData().GetScalars().GetRange())
         camera = camera_for(hexes, 50, -20, parallel=True)
         scene = Scene(hexes, prop, camera, 128, SegmentIntegration=2)
         image = scene.render()
         self.assertEqual(scene.events.warnings, 1)
-        expected = reference(split.GetOutput(), prop, camera, 128)
+        expected = reference(tets, prop, camera, 128)
         error, _ = rmse(image, expected)
         # The twist makes the centroid order wrong for some pairs of tetrahedra; the face order
         # (default) is exact, leaving the exact segments' own error (the same mesh untwisted: 5e-7).
@@ -261,13 +266,9 @@ class RayCastingTests(SceneTestCase):
     def test_twisted_mesh_split_on_the_fly(self):
         # Twisted hexahedra split into tetrahedra whose boundary faces fold: where rays leave and
         # enter again the walk peels; no order to get wrong.
-        hexes = analytic(6, ML, vtkAnalyticMeshSource.TWIST, vtkAnalyticMeshSource.HEXAHEDRA)
-        from unstructuredvolume import vtkHexahedraToTetrahedra
-        split = vtkHexahedraToTetrahedra()
-        split.SetInputData(hexes)
-        split.Update()
+        hexes, tets = twisted_hexahedra_and_split()
         prop = uvrender.volume_property(hexes.GetPointData().GetScalars().GetRange())
-        self.check(split.GetOutput(), prop, camera_for(hexes, 50, -20, parallel=True), 128, 2e-6,
+        self.check(tets, prop, camera_for(hexes, 50, -20, parallel=True), 128, 2e-6,
                    SegmentIntegration=2)
 
     def test_isosurfaces_and_shading(self):
@@ -287,17 +288,8 @@ class RayCastingTests(SceneTestCase):
         self.assertLess(error, 1e-4)
 
     def test_cell_scalar_is_constant_in_each_tetrahedron(self):
-        mesh = analytic(6, STEINER, vtkAnalyticMeshSource.JITTER)
-        values = vtkFloatArray()
-        values.SetName("cells")
-        ids = vtkIdList()
-        point_values = mesh.GetPointData().GetScalars()
-        for c in range(mesh.GetNumberOfCells()):
-            mesh.GetCellPoints(c, ids)
-            values.InsertNextValue(sum(point_values.GetValue(ids.GetId(k)) for k in range(4)) / 4)
-        mesh.GetPointData().Initialize()
-        mesh.GetCellData().SetScalars(values)
-        prop = uvrender.volume_property(values.GetRange())
+        mesh = mean_cell_values(analytic(6, STEINER, vtkAnalyticMeshSource.JITTER))
+        prop = uvrender.volume_property(mesh.GetCellData().GetScalars().GetRange())
         self.check(mesh, prop, camera_for(mesh), 96, 1e-5, peels=1, SegmentIntegration=2)
 
     def test_opaque_geometry_ends_the_rays(self):
