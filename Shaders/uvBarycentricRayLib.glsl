@@ -6,9 +6,8 @@
 // parallel projection (planar ones).
 in vec3 eyePosition;
 in vec4 faceCoordinates;
-in vec4 rayDirection;
+in vec4 rayDirection; // parallel projection: the coordinates' change per unit along -z
 flat in vec4 cellScalars;
-flat in vec4 parallelPerUnit;
 flat in int cellId;
 #ifdef UV_CELL_GRADIENTS
 flat in vec3 cellGradient;
@@ -45,7 +44,7 @@ BarycentricRay FragmentRay()
   BarycentricRay ray;
   ray.face = faceCoordinates;
   ray.length = parallelProjection == 1 ? -eyePosition.z : length(eyePosition);
-  ray.perUnit = parallelProjection == 1 ? parallelPerUnit : rayDirection / ray.length;
+  ray.perUnit = parallelProjection == 1 ? rayDirection : rayDirection / ray.length;
   return ray;
 }
 

@@ -13,9 +13,11 @@ uniform int parallelProjection;
 
 out vec3 eyePosition;          // the fragment's eye-space point on the face
 out vec4 faceCoordinates;      // its barycentric coordinates
-out vec4 rayDirection;         // perspective: M^-1 (x, 0), the direction attribute b
+// Perspective: M^-1 (x, 0), the direction attribute b. Parallel projection: the coordinates' change
+// per unit along -z, the same at every vertex. (One output serves both: on CPU rasterisers each
+// output costs every triangle's setup and memory.)
+out vec4 rayDirection;
 flat out vec4 cellScalars;     // normalised scalar at the four vertices
-flat out vec4 parallelPerUnit; // parallel projection: the coordinates' change per unit along -z
 flat out int cellId;
 #ifdef UV_CELL_GRADIENTS
 flat out vec3 cellGradient;    // the linear field's gradient, eye space (normalised scalar units)
@@ -70,9 +72,8 @@ void EmitAttributes(EyeTetrahedron tet, int k, int id)
   unit[k] = 1.0;
   eyePosition = tet.v[k];
   faceCoordinates = unit;
-  rayDirection = unit - tet.eyeCoordinates;
+  rayDirection = parallelProjection == 1 ? tet.parallelPerUnit : unit - tet.eyeCoordinates;
   cellScalars = tet.scalars;
-  parallelPerUnit = tet.parallelPerUnit;
   cellId = id;
 #ifdef UV_CELL_GRADIENTS
   cellGradient = tet.gradient;
