@@ -12,10 +12,15 @@
 #ifndef uvTetrahedralWalk_h
 #define uvTetrahedralWalk_h
 
+#include "uvBoundaryGapOrder.h"
+
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace uv
@@ -83,6 +88,36 @@ inline std::vector<std::int32_t> BoundaryFaceRecords(const std::vector<std::int3
     if (packedNeighbours[i] < 0)
       faces.push_back(static_cast<std::int32_t>(i));
   return faces;
+}
+
+/// Puts first in `boundary` (BoundaryFaceRecords, ascending) the faces by which a ray can enter the
+/// mesh again after leaving it, and returns how many: the faces off the mesh's convex hull. A ray
+/// that enters by a face on the hull comes from beyond the hull's plane there, where nothing of the
+/// mesh lies, so it cannot have left the mesh before. None on a convex mesh; all of them when there
+/// are more than `maximumFaces` (the test takes each face against each boundary point).
+/// `corners`: 4 point ids per tetrahedron, matched as `neighbours` (MakeTetrahedronFaceAdjacency's)
+/// were; `position(t, k)`: corner k of tetrahedron t.
+template <typename Position, typename ParallelFor>
+std::size_t MoveReentryFacesFirst(std::vector<std::int32_t>& boundary, const std::vector<std::uint32_t>& corners,
+  const std::vector<std::int32_t>& neighbours, Position&& position, ParallelFor&& parallelFor,
+  std::size_t maximumFaces)
+{
+  if (BoundaryIsConvex(corners, position, neighbours))
+    return 0;
+  if (boundary.size() > maximumFaces)
+    return boundary.size();
+  std::vector<std::pair<std::uint32_t, int>> faces;
+  faces.reserve(boundary.size());
+  for (std::int32_t record : boundary)
+    faces.emplace_back(static_cast<std::uint32_t>(record / 4), static_cast<int>(record % 4));
+  std::vector<std::int32_t> reentry;
+  for (const auto& face : FacesOffTheHull(faces, position, parallelFor))
+    reentry.push_back(static_cast<std::int32_t>(4 * face.first + face.second));
+  // Both lists ascend: the rest is what remains of the boundary after the reentry faces.
+  std::vector<std::int32_t> ordered = reentry;
+  std::set_difference(boundary.begin(), boundary.end(), reentry.begin(), reentry.end(), std::back_inserter(ordered));
+  boundary.swap(ordered);
+  return reentry.size();
 }
 
 /// Whether position a comes before b (lexicographically): the order an edge's product is computed in,

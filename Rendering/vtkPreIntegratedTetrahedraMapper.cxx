@@ -710,7 +710,9 @@ bool vtkPreIntegratedTetrahedraMapper::DrawByRayCasting(
   const glm::dvec3 bounds[2] = { impl.Low, impl.High };
   // Every tetrahedron at most once a ray, and a margin (the walk ends at the boundary anyway).
   const int maximumSteps = static_cast<int>(std::min<std::size_t>(impl.Mesh.Size() + 8, 1 << 24));
-  for (int peel = 0; peel < vtkPreIntegratedTetrahedraWalk::MaximumPeels; ++peel)
+  // After the first peel, rays can enter again only by faces off the mesh's hull: none, no peel.
+  const int peels = impl.Walk.ReentryFaces() > 0 ? vtkPreIntegratedTetrahedraWalk::MaximumPeels : 1;
+  for (int peel = 0; peel < peels; ++peel)
   {
     const long entered =
       impl.Walk.DrawEntries(frame, center, target, impl.TetrahedronPoints, impl.Points, bounds, peel == 0);

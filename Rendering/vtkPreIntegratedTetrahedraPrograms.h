@@ -61,7 +61,8 @@ struct vtkPreIntegratedTetrahedraPrograms
     uvgl::ProgramSources sources;
     if (options.RayCasting)
     {
-      sources.Vertex = uvgl::ShaderSource(uvFullScreenTriangleVS, "");
+      // At the far plane: the walk's depth test against the entry depth skips pixels no ray enters.
+      sources.Vertex = uvgl::ShaderSource(uvFullScreenTriangleVS, "#define UV_AT_FAR_PLANE\n");
       sources.Fragment = uvgl::ShaderSource(uvTetrahedralWalkFS, defines,
         { { "//UV::EyeRay", uvEyeRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
           { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib },

@@ -8,9 +8,12 @@
  * keeps, per pixel, the nearest one where the ray enters beyond where the previous walk left it.
  * The walk pass (uvTetrahedralWalkFS.glsl, full screen, the mapper's program) follows each ray from
  * that face through the tetrahedra, composites its segments front to back, and writes where the
- * ray left the mesh. Peels go on while some ray enters again (a non-convex mesh, holes, cells that
- * meet without sharing faces), at most MaximumPeels. Holds the adjacency (host and GPU, rebuilt only
- * when the tetrahedra change) and the screen-sized images. (OpenGL layer; not wrapped.)
+ * ray left the mesh; it shades only the pixels the entry pass wrote (a depth test against the
+ * entry's depth). Peels go on while some ray enters again (a non-convex mesh, holes, cells that
+ * meet without sharing faces), at most MaximumPeels; the entry passes after the first draw only the
+ * faces off the mesh's hull, the only ones a ray can enter by again, and a convex mesh has one peel.
+ * Holds the adjacency (host and GPU, rebuilt only when the tetrahedra change) and the screen-sized
+ * images. (OpenGL layer; not wrapped.)
  */
 #ifndef vtkPreIntegratedTetrahedraWalk_h
 #define vtkPreIntegratedTetrahedraWalk_h
@@ -59,9 +62,15 @@ public:
     std::vector<std::uint32_t> corners(mesh.TetrahedronPoints.size());
     for (std::size_t i = 0; i < corners.size(); ++i)
       corners[i] = same[mesh.TetrahedronPoints[i]];
-    this->Neighbours =
-      uv::PackedFaceNeighbours(uv::MakeTetrahedronFaceAdjacency(corners, uvvtk::ParallelFor), uvvtk::ParallelFor);
+    const std::vector<std::int32_t> adjacency = uv::MakeTetrahedronFaceAdjacency(corners, uvvtk::ParallelFor);
+    this->Neighbours = uv::PackedFaceNeighbours(adjacency, uvvtk::ParallelFor);
     this->Boundary = uv::BoundaryFaceRecords(this->Neighbours);
+    const auto position = [&mesh](std::size_t t, int k) {
+      const float* p = &mesh.PointData[4 * static_cast<std::size_t>(mesh.TetrahedronPoints[4 * t + k])];
+      return glm::dvec3(p[0], p[1], p[2]);
+    };
+    this->Reentry = uv::MoveReentryFacesFirst(
+      this->Boundary, corners, adjacency, position, uvvtk::ParallelFor, MaximumHullTestFaces);
     this->Folded = uv::FoldedFaces(corners, mesh.PointData, 4, this->Neighbours, uvvtk::ParallelFor);
     this->BuiltFor = mesh.TopologyVersion;
     ++this->Builds;
@@ -127,8 +136,8 @@ public:
                                            : glm::vec4(glm::vec3(frame.EyeInModel(center)), 1.0f);
       program->SetUniform4f("eyeInModel", glm::value_ptr(eye));
       target.GetNoAttributes()->Bind();
-      samples = uvgl::SamplesPassed(
-        [&] { glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->Boundary.size())); });
+      const std::size_t faces = firstPeel ? this->Boundary.size() : this->Reentry;
+      samples = uvgl::SamplesPassed([&] { glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * faces)); });
       target.GetNoAttributes()->Release();
       this->Exit->Deactivate();
       this->BoundaryTexture.Unbind();
@@ -156,6 +165,12 @@ public:
     glClearBufferfv(GL_COLOR, 1, done);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+    // Only pixels the entry pass wrote (depth below 1) are walked: the others fail the test before
+    // their fragments are shaded.
+    target.AttachDepth(this->EntryDepth);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_GREATER);
+    state->vtkglDepthMask(GL_FALSE);
     this->Entry->Activate();
     program->SetUniformi("entry", this->Entry->GetTextureUnit());
     this->BoundaryTexture.Bind(program, "boundaryFaces");
@@ -168,6 +183,8 @@ public:
     this->Entry->Deactivate();
     this->BoundaryTexture.Unbind();
     this->NeighbourTexture.Unbind();
+    state->vtkglDisable(GL_DEPTH_TEST);
+    target.AttachDepth(nullptr);
     framebuffer->RemoveColorAttachment(1);
     framebuffer->ActivateDrawBuffers(1);
   }
@@ -182,6 +199,8 @@ public:
   }
 
   std::size_t BoundaryFaces() const { return this->Boundary.size(); }
+  /// The boundary faces the peels after the first draw (uv::MoveReentryFacesFirst); 0: one peel.
+  std::size_t ReentryFaces() const { return this->Reentry; }
   /// Interior faces with both tetrahedra on one side (uv::FoldedFaces), as of the last Update.
   std::size_t FoldedFaces() const { return this->Folded; }
   int GetBuilds() const { return this->Builds; }
@@ -207,7 +226,12 @@ public:
   }
 
 private:
-  std::vector<std::int32_t> Neighbours, Boundary;
+  /// The hull test's limit: beyond it every boundary face counts as one a ray may enter again by
+  /// (the test is once per mesh, but takes each face against each boundary point).
+  static constexpr std::size_t MaximumHullTestFaces = 20000;
+
+  std::vector<std::int32_t> Neighbours, Boundary; // Boundary: the reentry faces first
+  std::size_t Reentry = 0;
   std::uint64_t BuiltFor = 0; // the mesh's TopologyVersion
   std::size_t Folded = 0;
   int Builds = 0;

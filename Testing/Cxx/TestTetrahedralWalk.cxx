@@ -192,3 +192,66 @@ TEST(TetrahedralWalk, RaysThroughVerticesAndAlongEdgesAndFacesStillCrossTheMesh)
     EXPECT_GT(ExpectWalkAgrees(mesh, walk, origins[ray], direction, third, false), 0u) << "ray " << ray;
   }
 }
+
+TEST(TetrahedralWalk, RaysEnterAgainOnlyByTheFacesOffTheHull)
+{
+  // A cube with a notch cut into its top (non-convex) and the whole cube (convex).
+  const auto identity = [](glm::dvec3 p) { return p; };
+  const Mesh notched = Cubes(4, identity, [](int i, int, int k) { return !(i >= 1 && i <= 2 && k >= 2); });
+  const auto reentryFaces = [](const Mesh& mesh, WalkMesh& walk) {
+    const auto position = [&mesh](std::size_t t, int k) { return mesh.At(t, k); };
+    return uv::MoveReentryFacesFirst(walk.Boundary, mesh.Corners,
+      uv::MakeTetrahedronFaceAdjacency(mesh.Corners, Serial), position, Serial, 100000);
+  };
+  WalkMesh whole(Cubes(4, identity));
+  EXPECT_EQ(reentryFaces(Cubes(4, identity), whole), 0u);
+  WalkMesh walk(notched);
+  const std::vector<std::int32_t> before = walk.Boundary;
+  const std::size_t reentry = reentryFaces(notched, walk);
+  // The notch's floor (2 x 4 squares) and its two walls (4 x 2 each), two triangles a square.
+  EXPECT_EQ(reentry, 2u * (8u + 2u * 8u));
+  std::vector<std::int32_t> sorted = walk.Boundary;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(sorted, before) << "the boundary was not only reordered";
+  const std::vector<std::int32_t> first(walk.Boundary.begin(), walk.Boundary.begin() + reentry);
+  // Random rays through the notch: each time one enters the mesh again (brute force, double), the
+  // face it enters by is among the first ones.
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int reentries = 0;
+  for (int ray = 0; ray < 400; ++ray)
+  {
+    const glm::dvec3 origin(-1.0, unit(random), 0.55 + 0.45 * unit(random));
+    const glm::dvec3 target(2.0, unit(random), 0.5 + 0.5 * unit(random));
+    const glm::dvec3 direction = glm::normalize(target - origin);
+    double reach = -1e300;
+    for (const auto& [enter, leave, t] : BruteForcePath(notched, origin, direction, 0.0))
+    {
+      if (reach > -1e300 && enter > reach + 1e-9)
+      {
+        // The face of t the ray enters by at `enter`: the entering plane crossed last.
+        int face = -1;
+        double last = -1e300;
+        for (int k = 0; k < 4; ++k)
+        {
+          const glm::dvec3 a = notched.At(t, (k + 1) % 4), b = notched.At(t, (k + 2) % 4),
+                           c = notched.At(t, (k + 3) % 4);
+          glm::dvec3 n = glm::cross(b - a, c - a);
+          if (glm::dot(n, notched.At(t, k) - a) > 0.0)
+            n = -n;
+          const double along = glm::dot(n, direction);
+          if (along < 0.0 && -glm::dot(n, origin - a) / along > last)
+          {
+            last = -glm::dot(n, origin - a) / along;
+            face = k;
+          }
+        }
+        ++reentries;
+        EXPECT_NE(std::find(first.begin(), first.end(), 4 * t + face), first.end())
+          << "ray " << ray << " enters again by tetrahedron " << t << "'s face " << face;
+      }
+      reach = std::max(reach, leave);
+    }
+  }
+  EXPECT_GT(reentries, 100); // the rays did cross the notch
+}
