@@ -14,18 +14,45 @@ vtkUnstructuredVolumeFloatTarget::vtkUnstructuredVolumeFloatTarget() = default;
 
 vtkUnstructuredVolumeFloatTarget::~vtkUnstructuredVolumeFloatTarget() = default;
 
-void vtkUnstructuredVolumeFloatTarget::Resize(vtkOpenGLRenderWindow* window, int width, int height)
+void vtkUnstructuredVolumeFloatTarget::Resize(
+  vtkOpenGLRenderWindow* window, int width, int height, int tileWidth, int tileHeight)
 {
-  if (window == this->Context && width == this->Width && height == this->Height)
+  if (window == this->Context && width == this->Width && height == this->Height && tileWidth == this->TileWidth &&
+    tileHeight == this->TileHeight)
   {
     return;
   }
+  this->TileWidth = tileWidth;
+  this->TileHeight = tileHeight;
   this->SceneDepth->SetContext(window);
   this->SceneDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
   this->Color->SetContext(window);
-  this->Color->SetMinificationFilter(vtkTextureObject::Nearest);
-  this->Color->SetMagnificationFilter(vtkTextureObject::Nearest);
+  // A reduced image is stretched over its tile: filtered, its edge texels not wrapped around. At
+  // the tile's size nearest sampling copies the image exactly.
+  const bool reduced = tileWidth != width || tileHeight != height;
+  const int filter = reduced ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
+  this->Color->SetMinificationFilter(filter);
+  this->Color->SetMagnificationFilter(filter);
+  this->Color->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->Color->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
+  if (reduced)
+  {
+    this->TileDepth->SetContext(window);
+    this->TileDepth->AllocateDepth(tileWidth, tileHeight, vtkTextureObject::Float32);
+    this->TileFramebuffer->SetContext(window);
+    this->TileFramebuffer->SaveCurrentBindingsAndBuffers();
+    this->TileFramebuffer->Bind();
+    this->TileFramebuffer->AddDepthAttachment(this->TileDepth);
+    this->TileFramebuffer->DeactivateDrawBuffers(); // depth only: complete without a colour image
+    this->TileFramebuffer->DeactivateReadBuffer();
+    this->TileFramebuffer->RestorePreviousBindingsAndBuffers();
+  }
+  else if (this->TileDepth->GetHandle())
+  {
+    this->TileDepth->ReleaseGraphicsResources(window);
+    this->TileFramebuffer->ReleaseGraphicsResources(window);
+  }
   this->Framebuffer->SetContext(window);
   this->Framebuffer->SaveCurrentBindingsAndBuffers();
   this->Framebuffer->Bind();
@@ -56,7 +83,21 @@ void vtkUnstructuredVolumeFloatTarget::AttachDepth(vtkTextureObject* depth)
 
 bool vtkUnstructuredVolumeFloatTarget::CopySceneDepth(int originX, int originY)
 {
-  return uvgl::CopySceneDepth(this->SceneDepth, originX, originY, this->Width, this->Height);
+  if (!this->Reduced())
+  {
+    return uvgl::CopySceneDepth(this->SceneDepth, originX, originY, this->Width, this->Height);
+  }
+  const bool copied = uvgl::CopySceneDepth(this->TileDepth, originX, originY, this->TileWidth, this->TileHeight);
+  // Each image pixel takes the depth nearest its centre (a blit between two Float32 depth images).
+  this->AttachDepth(this->SceneDepth);
+  this->TileFramebuffer->SaveCurrentBindingsAndBuffers();
+  this->TileFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  this->Context->GetState()->vtkglBlitFramebuffer(0, 0, this->TileWidth, this->TileHeight, 0, 0, this->Width,
+    this->Height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  this->TileFramebuffer->RestorePreviousBindingsAndBuffers();
+  this->AttachDepth(nullptr);
+  return copied;
 }
 
 void vtkUnstructuredVolumeFloatTarget::Bind()
@@ -87,7 +128,7 @@ void vtkUnstructuredVolumeFloatTarget::Unbind()
 bool vtkUnstructuredVolumeFloatTarget::Composite(int originX, int originY)
 {
   return uvgl::CompositeIntoScene(
-    this->Context, this->Color, this->NoAttributes, originX, originY, this->Width, this->Height);
+    this->Context, this->Color, this->NoAttributes, originX, originY, this->TileWidth, this->TileHeight);
 }
 
 vtkTextureObject* vtkUnstructuredVolumeFloatTarget::GetColor()
@@ -117,9 +158,11 @@ void vtkUnstructuredVolumeFloatTarget::Release()
     this->Color->ReleaseGraphicsResources(this->Context);
     this->SceneDepth->ReleaseGraphicsResources(this->Context);
     this->Framebuffer->ReleaseGraphicsResources(this->Context);
+    this->TileDepth->ReleaseGraphicsResources(this->Context);
+    this->TileFramebuffer->ReleaseGraphicsResources(this->Context);
   }
   this->NoAttributes->ReleaseGraphicsResources();
   this->Context = nullptr;
   this->AttachedDepth = nullptr;
-  this->Width = this->Height = 0;
+  this->Width = this->Height = this->TileWidth = this->TileHeight = 0;
 }

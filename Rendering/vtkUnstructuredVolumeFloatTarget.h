@@ -26,8 +26,11 @@ public:
   vtkUnstructuredVolumeFloatTarget();
   ~vtkUnstructuredVolumeFloatTarget();
 
-  /// Allocates the colour image and the scene-depth copy at width x height (only when changed).
-  void Resize(vtkOpenGLRenderWindow* window, int width, int height);
+  /// Allocates the colour image and the scene-depth copy at width x height (only when changed),
+  /// for a tile of the window of tileWidth x tileHeight pixels. A tile larger than the image
+  /// (ImageSampleDistance above 1): the scene's depth is copied at the tile's size and resampled to
+  /// the image's, and Composite stretches the image over the tile (linear filtering).
+  void Resize(vtkOpenGLRenderWindow* window, int width, int height, int tileWidth, int tileHeight);
   /// Attaches `depth` (a depth texture of the target's size) to the framebuffer, or detaches with null.
   void AttachDepth(vtkTextureObject* depth);
 
@@ -44,8 +47,8 @@ public:
   void ReadBack(vtkSmartPointer<vtkImageData>& image);
   /// Restores the bindings Bind saved.
   void Unbind();
-  /// Blends the colour image over VTK's scene at (originX, originY); false when the composite shaders
-  /// do not compile.
+  /// Blends the colour image over VTK's scene, over the tile at (originX, originY); false when the
+  /// composite shaders do not compile.
   bool Composite(int originX, int originY);
 
   vtkTextureObject* GetColor();
@@ -60,12 +63,17 @@ private:
   vtkUnstructuredVolumeFloatTarget(const vtkUnstructuredVolumeFloatTarget&) = delete;
   void operator=(const vtkUnstructuredVolumeFloatTarget&) = delete;
 
+  bool Reduced() const { return this->TileWidth != this->Width || this->TileHeight != this->Height; }
+
   vtkNew<vtkTextureObject> Color, SceneDepth;
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  // A reduced image's scene depth at the tile's size, read from by the resampling blit.
+  vtkNew<vtkTextureObject> TileDepth;
+  vtkNew<vtkOpenGLFramebufferObject> TileFramebuffer;
   vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
   vtkOpenGLRenderWindow* Context = nullptr;
   vtkTextureObject* AttachedDepth = nullptr;
-  int Width = 0, Height = 0;
+  int Width = 0, Height = 0, TileWidth = 0, TileHeight = 0;
 };
 
 #endif

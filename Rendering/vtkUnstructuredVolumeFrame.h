@@ -24,6 +24,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 struct vtkUnstructuredVolumeFrame
 {
   vtkRenderer* Renderer = nullptr;
@@ -31,7 +34,8 @@ struct vtkUnstructuredVolumeFrame
   vtkVolumeProperty* Property = nullptr;
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkCamera* Camera = nullptr;
-  int Width = 0, Height = 0, OriginX = 0, OriginY = 0; // the renderer's tile of the window
+  int OriginX = 0, OriginY = 0, TileWidth = 0, TileHeight = 0; // the renderer's tile of the window
+  int Width = 0, Height = 0; // the image the mapper draws: the tile's size, or less (ReduceImage)
   bool Parallel = false;
   double NearDepth = 0.0; // eye distance of the near clipping plane, where rays begin
   bool OpaqueDepth = true; // the depth buffer may hold geometry drawn before the volume
@@ -52,6 +56,8 @@ struct vtkUnstructuredVolumeFrame
       frame.Width = frame.Height = 0;
       return frame;
     }
+    frame.TileWidth = frame.Width;
+    frame.TileHeight = frame.Height;
     const double aspect = static_cast<double>(frame.Width) / frame.Height;
     frame.Parallel = frame.Camera->GetParallelProjection() != 0;
     double clippingRange[2];
@@ -62,6 +68,16 @@ struct vtkUnstructuredVolumeFrame
     frame.EyeToClip = uvgl::ToGlm(frame.Camera->GetProjectionTransformMatrix(aspect, -1, 1));
     frame.OpaqueDepth = MayHaveDrawnDepth(renderer);
     return frame;
+  }
+
+  /// An image of one pixel per `distance` pixels of the tile along each axis (rounded up, so that
+  /// it spans the whole tile); the camera's matrices stay the tile's.
+  void ReduceImage(double distance)
+  {
+    if (this->IsEmpty() || !(distance > 1.0))
+      return;
+    this->Width = std::max(1, static_cast<int>(std::ceil(this->TileWidth / distance)));
+    this->Height = std::max(1, static_cast<int>(std::ceil(this->TileHeight / distance)));
   }
 
   /// Whether anything may have been drawn into the depth buffer before the volumes: a visible prop

@@ -183,7 +183,8 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     return;
   }
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  const vtkUnstructuredVolumeFrame frame = vtkUnstructuredVolumeFrame::Make(renderer, volume, window);
+  vtkUnstructuredVolumeFrame frame = vtkUnstructuredVolumeFrame::Make(renderer, volume, window);
+  frame.ReduceImage(this->ImageSampleDistance);
   if (frame.IsEmpty() || !this->Prepare(frame))
   {
     this->KeepTransparentImage(frame);
@@ -217,7 +218,7 @@ void vtkUnstructuredVolumeMapper::KeepTransparentImage(const vtkUnstructuredVolu
 bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFrame& frame)
 {
   vtkUnstructuredVolumeFloatTarget& target = this->Base->Target;
-  target.Resize(frame.Window, frame.Width, frame.Height);
+  target.Resize(frame.Window, frame.Width, frame.Height, frame.TileWidth, frame.TileHeight);
   if (!target.CopySceneDepth(frame.OriginX, frame.OriginY) && !this->Base->WarnedMultisample)
   {
     vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
@@ -288,6 +289,7 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Isosurfaces: " << this->Base->Isosurfaces.Size() << "\n";
   os << indent << "KeepFloatImage: " << this->KeepFloatImage << "\n";
+  os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
   os << indent << "ProjectionRoute: " << (this->ProjectionRoute == VERTEX_PULLING ? "VertexPulling" : "GeometryShader")
      << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";

@@ -86,6 +86,11 @@ MAPPERS = [
      lambda: configured(vtkPreIntegratedTetrahedraMapper, RenderModeToRayCasting=None), "tets"),
     ("UV PreIntegratedTetrahedra, projection",
      lambda: configured(vtkPreIntegratedTetrahedraMapper, RenderModeToProjection=None), "tets"),
+    # Fewer rays or fragments (ImageSampleDistance): the image drawn at half and a quarter of the
+    # viewport's width and height, stretched over it.
+    *[(f"UV PreIntegratedTetrahedra, image sample distance {n}",
+       (lambda n=n: configured(vtkPreIntegratedTetrahedraMapper, ImageSampleDistance=float(n))), "tets")
+      for n in (2, 4)],
     # Exact segments (cut at every node) where the default reads its segment table.
     ("UV PreIntegratedTetrahedra, exact segments",
      lambda: configured(vtkPreIntegratedTetrahedraMapper, SegmentIntegration=2), "tets"),
@@ -98,6 +103,8 @@ MAPPERS = [
     ("UV HexRayCast Fast", lambda: configured(vtkHexahedralRayCastMapper, IntegrationModeToFast=None), "hexahedra"),
     ("UV HexRayCast 8 steps", lambda: configured(vtkHexahedralRayCastMapper, IntegrationModeToFixedSteps=None),
      "hexahedra"),
+    ("UV HexRayCast Accurate, image sample distance 2",
+     lambda: configured(vtkHexahedralRayCastMapper, ImageSampleDistance=2.0), "hexahedra"),
     # Accurate without early ray termination: what stopping at opacity 0.99 saves and costs.
     ("UV HexRayCast Accurate, no early stop", lambda: configured(vtkHexahedralRayCastMapper, OpacityThreshold=1.0),
      "hexahedra"),

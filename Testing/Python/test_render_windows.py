@@ -33,6 +33,10 @@ ISOSURFACES = 300
 # Opaque unlit isosurfaces against thin opaque shells of the reference: the nearest crossing, apart
 # from pixels where two crossings lie close along the ray.
 ISOSURFACE_RMSE = 0.06
+# ImageSampleDistance 2, the window's pixels against the full image's, with an opaque sphere: the
+# stretched image blurs the volume's and the sphere's edges (an image left unclipped by the sphere,
+# or drawn over part of the tile, is ten times as far off).
+STRETCHED_IMAGE_RMSE = 0.02
 
 # (mapper, case): why the mapper is known to fail the case. Each is a bug left open: its subtest must
 # still fail (a fix makes it pass, and then it must be taken out of this list). None is open.
@@ -242,6 +246,41 @@ class RenderWindowTests(SceneTestCase):
             self.assertLessEqual(largest_error(drawn, image), SAME_SCENE, f"viewport {k}")
             tile = window_pixels(window, size * (k % 2), size * (k // 2), size, size)
             self.assertLessEqual(largest_error(tile, pixels), WINDOW_PIXELS, f"viewport {k}'s pixels")
+
+    def test_image_sample_distance_draws_the_smaller_image_over_the_tile(self):
+        # Distance 2 in a 48-pixel viewport offset in a wider window: the mapper's image is the
+        # 24-pixel scene (the same rays), stretched over the whole viewport; with an opaque sphere,
+        # clipped at the depth resampled to the image.
+        size = 48
+        for name, factory, settings, make_mesh in MAPPERS:
+            with self.subTest(mapper=name):
+                mesh = make_mesh()
+                prop, camera = ramp_property(mesh), camera_for(mesh)
+                small, _ = self.alone(factory, settings, mesh, prop, camera, size // 2)
+                _, full = self.alone(factory, settings, mesh, prop, camera, size, (sphere_actor(mesh),))
+                window = bare_shared_window()
+                renderer = vtkRenderer()
+                renderer.SetBackground(0, 0, 0)
+                renderer.SetBackgroundAlpha(0.0)
+                renderer.SetViewport(1.0 / 3.0, 0.0, 1.0, 1.0)
+                renderer.SetActiveCamera(camera)
+                volume = vtkVolume()
+                volume.SetMapper(new_mapper(factory, dict(settings, ImageSampleDistance=2.0), mesh))
+                volume.SetProperty(prop)
+                renderer.AddVolume(volume)
+                events = Events(volume.GetMapper())
+                window.AddRenderer(renderer)
+                self.extra.append((window, renderer))
+                window.SetSize(size * 3 // 2, size)
+                window.Render()
+                drawn = volume.GetMapper().GetFloatImage()
+                self.assert_valid(drawn, size // 2, size // 2, events)
+                self.assertLessEqual(largest_error(drawn, small), SAME_SCENE)
+                renderer.AddActor(sphere_actor(mesh))
+                window.Render()
+                self.assert_valid(volume.GetMapper().GetFloatImage(), size // 2, size // 2, events)
+                tile = window_pixels(window, size // 2, 0, size, size)
+                self.assertLessEqual(rmse(tile, full)[0], STRETCHED_IMAGE_RMSE)
 
     def test_the_renderer_after_each_mapper_draws_as_alone(self):
         """Each mapper's first frame in the left half, then a new ray caster in the right half of the
