@@ -107,6 +107,12 @@ void vtkUnstructuredVolumeRepresentation::SetOpacityThreshold(double threshold)
   this->MarkModified();
 }
 
+void vtkUnstructuredVolumeRepresentation::SetImageSampleDistance(double distance)
+{
+  this->PinnedMapper->SetImageSampleDistance(distance);
+  this->MarkModified();
+}
+
 void vtkUnstructuredVolumeRepresentation::UpdateMapperParameters()
 {
   this->Superclass::UpdateMapperParameters();

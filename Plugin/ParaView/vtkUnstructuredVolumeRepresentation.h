@@ -52,6 +52,9 @@ public:
   /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetOpacityThreshold).
   void SetOpacityThreshold(double threshold);
 
+  /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetImageSampleDistance).
+  void SetImageSampleDistance(double distance);
+
   /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetTransferFunctionTolerance).
   void SetTransferFunctionTolerance(double tolerance);
 

@@ -108,6 +108,36 @@ if baseline:
           f"{100 * share:.2f}% of pixels more than 2 levels off (at most {100 * fraction:.2f}%), largest {worst:.0f}")
     assert error <= threshold, error
     assert share <= fraction, share
+# ImageSampleDistance 2, a setting of every entry: the volume drawn at half the view's width and
+# height, stretched over it. Near the full image (edges blur), but not it: the setting reached the
+# mapper.
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+
+def screenshot_pixels(path):
+    SaveScreenshot(path, view, ImageResolution=[300, 300])  # noqa: F405
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput().GetPointData().GetScalars()
+
+
+stem = os.path.splitext(output)[0]
+full = screenshot_pixels(stem + "_sample_distance_1.png")
+display.ImageSampleDistance = 2.0
+Render(view)  # noqa: F405
+stretched = screenshot_pixels(stem + "_sample_distance_2.png")
+display.ImageSampleDistance = 1.0
+squares, changed = 0.0, 0
+for i in range(full.GetNumberOfTuples()):
+    a, b = full.GetTuple(i), stretched.GetTuple(i)
+    d = [abs(a[c] - b[c]) for c in range(3)]
+    squares += sum(x * x for x in d) / 3
+    changed += 1 if max(d) > 2 else 0
+levels = (squares / full.GetNumberOfTuples()) ** 0.5
+print(f"image sample distance 2: RMSE {levels:.2f} levels against distance 1, {changed} pixels more than 2 off")
+assert changed > 0, "ImageSampleDistance did not reach the mapper"
+assert levels < 8.0, levels
 # The entry is offered on a structured grid (a transformed image) and on multiblock data too (after
 # the image: showing them may rescale the shared colour map).
 for label, source in (("structured grid", Transform(Input=wavelet)),  # noqa: F405
