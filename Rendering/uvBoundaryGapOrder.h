@@ -97,6 +97,51 @@ inline bool ScreenBounds(const PixelGrid& grid, const glm::dvec3 (&p)[3], int& x
   return x0 <= x1 && y0 <= y1;
 }
 
+/// A triangle's projection onto the image as three edge functions of the screen point, each the
+/// distance in pixels from its edge, positive inside: a pixel whose centre lies well outside one
+/// cannot have its ray meet the triangle, and is passed over without the exact test.
+struct ScreenTriangle
+{
+  double A[3], B[3], C[3];
+
+  /// Whether the screen point (x, y) lies more than `margin` pixels outside an edge.
+  bool Outside(double x, double y, double margin) const
+  {
+    for (int i = 0; i < 3; ++i)
+      if (this->A[i] * x + this->B[i] * y + this->C[i] < -margin)
+        return true;
+    return false;
+  }
+};
+
+/// The triangle's ScreenTriangle, where it lies wholly beyond the near plane and is not seen
+/// edge-on; false otherwise (every pixel of its bounds is then tested exactly).
+inline bool ProjectTriangle(const PixelGrid& grid, const glm::dvec3 (&p)[3], ScreenTriangle& triangle)
+{
+  double x[3], y[3];
+  for (int j = 0; j < 3; ++j)
+  {
+    const glm::dvec4 clip = grid.ModelToClip * glm::dvec4(p[j], 1.0);
+    if (!(clip.w > 0.0) || clip.z + clip.w < 0.0)
+      return false;
+    x[j] = (clip.x / clip.w + 1.0) * 0.5 * grid.Width;
+    y[j] = (clip.y / clip.w + 1.0) * 0.5 * grid.Height;
+  }
+  const double area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+  if (!(std::abs(area) > 1e-9))
+    return false;
+  const double side = area > 0.0 ? 1.0 : -1.0; // inside is left of each edge, counter-clockwise
+  for (int i = 0; i < 3; ++i)
+  {
+    const int j = (i + 1) % 3;
+    const double dx = x[j] - x[i], dy = y[j] - y[i], length = std::sqrt(dx * dx + dy * dy);
+    triangle.A[i] = -dy * side / length;
+    triangle.B[i] = dx * side / length;
+    triangle.C[i] = -(triangle.A[i] * x[i] + triangle.B[i] * y[i]);
+  }
+  return true;
+}
+
 /// Whether the ray origin + s step (s >= 0) meets the triangle, edges included within rounding
 /// (a ray along an edge meets both faces on it, so no gap is missed); `at` is s there.
 inline bool RayMeetsTriangle(const glm::dvec3& origin, const glm::dvec3& step, const glm::dvec3 (&p)[3], double& at)
@@ -276,6 +321,9 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
   originX -= origin0, stepX -= step0, originY -= origin0, stepY -= step0;
 
   constexpr std::size_t chunks = 64;
+  // Pixels this far outside a face's projection are passed over: far beyond the rounding of the
+  // projection and of the exact test's edge slack.
+  constexpr double PrefilterMargin = 0.01;
   std::vector<std::vector<Crossing>> found(chunks);
   const std::size_t perChunk = (faces.size() + chunks - 1) / chunks;
   parallelFor(chunks, [&](std::size_t begin, std::size_t end) {
@@ -291,9 +339,14 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
         int x0, x1, y0, y1;
         if (!ScreenBounds(grid, p, x0, x1, y0, y1))
           continue;
+        // Most pixels of the bounds (padded for rounding) lie clearly outside a small face.
+        ScreenTriangle screen;
+        const bool prefilter = ProjectTriangle(grid, p, screen);
         for (int y = y0; y <= y1; ++y)
           for (int x = x0; x <= x1; ++x)
           {
+            if (prefilter && screen.Outside(x + 0.5, y + 0.5, PrefilterMargin))
+              continue;
             const glm::dvec3 origin = origin0 + double(x) * originX + double(y) * originY;
             const glm::dvec3 step = step0 + double(x) * stepX + double(y) * stepY;
             double at;

@@ -374,3 +374,47 @@ TEST(BoundaryGapOrder, ScreenBoundsStayOnTheImage)
   EXPECT_EQ(y0, 0);
   EXPECT_EQ(y1, 39);
 }
+
+TEST(BoundaryGapOrder, PixelsOutsideAProjectedTriangleMissIt)
+{
+  // Random triangles, some crossing the near plane or seen nearly edge-on: wherever a pixel's ray
+  // meets one exactly, its centre is not outside the triangle's projection (the prefilter that
+  // spares GapConstraints the exact test loses no crossing), and most pixels of the bounds are.
+  const uv::PixelGrid grid = Perspective(glm::dvec3(6.0, 0.5, 4.0), 40);
+  const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t met = 0, bounded = 0, passedOver = 0, projected = 0;
+  for (int n = 0; n < 400; ++n)
+  {
+    const glm::dvec3 centre = Target + 1.5 * glm::dvec3(unit(random), unit(random), unit(random));
+    const double size = n % 4 == 0 ? 3.0 : 0.15;
+    glm::dvec3 p[3] = { centre + size * glm::dvec3(unit(random), unit(random), unit(random)),
+      centre + size * glm::dvec3(unit(random), unit(random), unit(random)), centre };
+    if (n % 7 == 0)
+      p[2] = 0.5 * (p[0] + p[1]) + 1e-7 * glm::dvec3(unit(random), unit(random), unit(random)); // edge-on
+    int x0, x1, y0, y1;
+    uv::ScreenTriangle screen;
+    if (!uv::ScreenBounds(grid, p, x0, x1, y0, y1) || !uv::ProjectTriangle(grid, p, screen))
+      continue;
+    ++projected;
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+      {
+        glm::dvec3 origin, step;
+        grid.Ray(x, y, clipToModel, origin, step);
+        double at;
+        const bool outside = screen.Outside(x + 0.5, y + 0.5, 0.01);
+        ++bounded;
+        passedOver += outside ? 1 : 0;
+        if (uv::RayMeetsTriangle(origin, step, p, at))
+        {
+          ++met;
+          EXPECT_FALSE(outside) << "triangle " << n << ", pixel " << x << " " << y;
+        }
+      }
+  }
+  EXPECT_GT(projected, 200u);
+  EXPECT_GT(met, 1000u);
+  EXPECT_GT(passedOver, bounded / 3);
+}
