@@ -65,10 +65,7 @@ public:
     const std::vector<std::int32_t> adjacency = uv::MakeTetrahedronFaceAdjacency(corners, uvvtk::ParallelFor);
     this->Neighbours = uv::PackedFaceNeighbours(adjacency, uvvtk::ParallelFor);
     this->Boundary = uv::BoundaryFaceRecords(this->Neighbours);
-    const auto position = [&mesh](std::size_t t, int k) {
-      const float* p = &mesh.PointData[4 * static_cast<std::size_t>(mesh.TetrahedronPoints[4 * t + k])];
-      return glm::dvec3(p[0], p[1], p[2]);
-    };
+    const auto position = [&mesh](std::size_t t, int k) { return glm::dvec3(mesh.Corner(t, k)); };
     this->Reentry = uv::MoveReentryFacesFirst(
       this->Boundary, corners, adjacency, position, uvvtk::ParallelFor, MaximumHullTestFaces);
     this->Folded = uv::FoldedFaces(corners, mesh.PointData, 4, this->Neighbours, uvvtk::ParallelFor);

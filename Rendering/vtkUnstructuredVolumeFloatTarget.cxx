@@ -22,6 +22,8 @@ void vtkUnstructuredVolumeFloatTarget::Resize(
   {
     return;
   }
+  this->Width = width;
+  this->Height = height;
   this->TileWidth = tileWidth;
   this->TileHeight = tileHeight;
   this->SceneDepth->SetContext(window);
@@ -29,14 +31,13 @@ void vtkUnstructuredVolumeFloatTarget::Resize(
   this->Color->SetContext(window);
   // A reduced image is stretched over its tile: filtered, its edge texels not wrapped around. At
   // the tile's size nearest sampling copies the image exactly.
-  const bool reduced = tileWidth != width || tileHeight != height;
-  const int filter = reduced ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
+  const int filter = this->Reduced() ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
   this->Color->SetMinificationFilter(filter);
   this->Color->SetMagnificationFilter(filter);
   this->Color->SetWrapS(vtkTextureObject::ClampToEdge);
   this->Color->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
-  if (reduced)
+  if (this->Reduced())
   {
     this->TileDepth->SetContext(window);
     this->TileDepth->AllocateDepth(tileWidth, tileHeight, vtkTextureObject::Float32);
@@ -60,8 +61,6 @@ void vtkUnstructuredVolumeFloatTarget::Resize(
   this->Framebuffer->ActivateDrawBuffers(1);
   this->Framebuffer->RestorePreviousBindingsAndBuffers();
   this->Context = window;
-  this->Width = width;
-  this->Height = height;
   this->AttachedDepth = nullptr; // reattached by the mapper against its resized depth
 }
 

@@ -93,16 +93,16 @@ public:
     return sizeof(std::uint32_t) * (this->TetrahedronPoints.capacity() + this->CornerPoints.capacity()) +
       sizeof(float) * (this->PointData.capacity() + this->ScalarLow.capacity() + this->ScalarHigh.capacity());
   }
+  /// Recentred corner k of tetrahedron t.
+  glm::vec3 Corner(std::size_t t, int k) const
+  {
+    const float* p = &this->PointData[4 * std::size_t(this->TetrahedronPoints[4 * t + k])];
+    return glm::vec3(p[0], p[1], p[2]);
+  }
   /// Recentred centroid of tetrahedron t, computed when asked (kept, it would cost 12 bytes a cell).
   glm::vec3 Centroid(std::size_t t) const
   {
-    glm::vec3 sum(0.0f);
-    for (int k = 0; k < 4; ++k)
-    {
-      const float* p = &this->PointData[4 * std::size_t(this->TetrahedronPoints[4 * t + k])];
-      sum += glm::vec3(p[0], p[1], p[2]);
-    }
-    return 0.25f * sum;
+    return 0.25f * (this->Corner(t, 0) + this->Corner(t, 1) + this->Corner(t, 2) + this->Corner(t, 3));
   }
   bool OnCells() const { return this->Scalar.OnCells; }
   /// For a cell scalar's isosurfaces: per tetrahedron the values across its faces (shared faces of
@@ -537,11 +537,7 @@ private:
       this->Adjacency = uv::MakeTetrahedronFaceAdjacency(ids, ParallelFor);
       this->AdjacencyFor = mesh.TopologyVersion;
     }
-    const float* points = mesh.PointData.data();
-    const auto position = [&](std::size_t t, int k) {
-      const float* p = points + 4 * static_cast<std::size_t>(drawn[4 * t + k]);
-      return glm::dvec3(p[0], p[1], p[2]);
-    };
+    const auto position = [&mesh](std::size_t t, int k) { return glm::dvec3(mesh.Corner(t, k)); };
     this->UpdateBoundary(mesh, ids, position);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
     if (!this->Boundary.empty() && pixels.Width > 0 && pixels.Height > 0)
