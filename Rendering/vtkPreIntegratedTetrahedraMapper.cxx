@@ -69,6 +69,15 @@ void SetPixelRays(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& f
   program->SetUniform3f("rayY", rayY);
 }
 
+/// The pulled faces' parallel-projection eye depth from the window depth (uvBarycentricRayLib.glsl's
+/// FaceDepth): z_ndc = P22 z_eye + P32 and window depth (z_ndc + 1) / 2, so depth = -z_eye is affine in it.
+void SetWindowDepthToEyeDepth(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& frame)
+{
+  const double p22 = frame.EyeToClip[2][2], p32 = frame.EyeToClip[3][2];
+  const float toDepth[2] = { static_cast<float>(-2.0 / p22), static_cast<float>((1.0 + p32) / p22) };
+  program->SetUniform2f("windowDepthToEyeDepth", toDepth);
+}
+
 /// Front to back pays for its mask passes and, on CPU rasterisers, for a slower blend and order
 /// (the benchmark measured both orders) only where pixels become opaque: it is chosen when at least
 /// this share of the covered pixels reached the opacity threshold in the last frame.
@@ -505,6 +514,7 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   program->SetUniformf("zeroTolerance", 1e-6f);
   program->SetUniformi("parallelProjection", frame.Parallel ? 1 : 0);
   SetPixelRays(program, frame);
+  SetWindowDepthToEyeDepth(program, frame);
   program->SetUniformi("averageScalar", this->IntegrationMode == AVERAGE_SCALAR ? 1 : 0);
   program->SetUniformi("shadeVolume", impl.Shade ? 1 : 0);
   program->SetUniformi("isosurfaceCount", static_cast<int>(impl.Isovalues.size()));

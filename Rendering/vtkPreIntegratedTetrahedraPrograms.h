@@ -38,7 +38,7 @@ struct vtkPreIntegratedTetrahedraPrograms
     bool NodeTexture = false;  // more transfer-function nodes than fit in uniforms
     bool CellSurfaces = false; // a cell scalar's isosurfaces, on the faces between cells
     bool SegmentTable = false; // one table read per segment (no isosurfaces, no shading)
-    bool NearPlaneCuts = true; // fans only: some tetrahedra may cross the near plane, ray-cast them
+    bool NearPlaneCuts = true; // some tetrahedra may cross the near plane: rays begin there (fans ray-cast them)
     bool OpaqueDepth = true;   // opaque geometry may have been drawn: its depth ends segments
     bool RayCasting = false;   // full screen, rays walk the tetrahedra (no cell surfaces; ignores the route)
   };
@@ -52,12 +52,12 @@ struct vtkPreIntegratedTetrahedraPrograms
       defines += "#define UV_CELL_SURFACES\n";
     if (options.SegmentTable)
       defines += "#define UV_SEGMENT_TABLE\n";
-    if (options.NearPlaneCuts && !options.VertexPulling)
+    if (options.NearPlaneCuts)
       defines += "#define UV_NEAR_PLANE_CUTS\n";
     if (options.OpaqueDepth)
       defines += "#define UV_OPAQUE_DEPTH\n";
     if (options.VertexPulling && !options.RayCasting)
-      defines += "#define UV_FACES\n";
+      defines += "#define UV_FACES\n#define UV_DEPTH_RAY\n";
     uvgl::ProgramSources sources;
     if (options.RayCasting)
     {
@@ -92,14 +92,11 @@ struct vtkPreIntegratedTetrahedraPrograms
 
   static std::vector<Options> AllOptions()
   {
-    // Near-plane cuts only change the fans (pulled faces are clipped by the near plane instead).
     std::vector<Options> all;
     for (bool depth : { true, false })
       for (bool pulling : { true, false })
         for (bool cuts : { true, false })
         {
-          if (pulling && !cuts)
-            continue;
           for (bool gradients : { false, true })
             for (bool nodeTexture : { false, true })
               all.push_back({ pulling, gradients, nodeTexture, false, false, cuts, depth });

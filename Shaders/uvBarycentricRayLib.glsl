@@ -4,7 +4,13 @@
 // (ShellSampleFromFace), which keeps float's digits that the eye's large coordinates would cost.
 // "Distance" z is the eye distance under perspective (spherical shells) and the depth -z_eye under
 // parallel projection (planar ones).
+//
+// With UV_DEPTH_RAY (vtkPreIntegratedTetrahedraMapper) the ray is measured instead in eye depth from
+// the fragment's point on the face: every quantity is an offset from that point, so the eye's
+// distance is neither added nor cancelled, and the fragment needs no eye-space position at all.
+#ifndef UV_DEPTH_RAY
 in vec3 eyePosition;
+#endif
 in vec4 faceCoordinates;
 in vec4 rayDirection; // parallel projection: the coordinates' change per unit along -z
 flat in vec4 cellScalars;
@@ -32,6 +38,53 @@ uniform float nearDepth; // eye-space depth of the near clipping plane, where ra
 uniform sampler2D opaqueDistances; // r: the distance of the scene's opaque geometry, per pixel
 #endif
 
+#ifdef UV_DEPTH_RAY
+/// A fragment's ray from its point on the face: the barycentric coordinates there and their change per
+/// unit of eye depth. Perspective: rayDirection is M^-1 applied to the eye-space point, exact under
+/// perspective-correct interpolation, and the ray through that point has depth rate point / depth;
+/// gl_FragCoord.w is 1 / depth. Parallel: rayDirection already is the rate, and gl_FragCoord.w is 1.
+struct FaceRay
+{
+  vec4 face;
+  vec4 rate;
+};
+
+FaceRay FragmentFaceRay()
+{
+  return FaceRay(faceCoordinates, rayDirection * gl_FragCoord.w);
+}
+
+/// The depth offsets from the face point at which each coordinate reaches 0 (infinite or NaN where
+/// it does not change; the callers mask those out).
+vec4 ZeroOffsets(FaceRay ray)
+{
+  return -ray.face / ray.rate;
+}
+
+/// Where the ray enters the tetrahedron: the last offset at which a growing coordinate is 0. (The
+/// coordinates' rates sum to 0, so some coordinate grows and some falls.)
+float EntryOffset(FaceRay ray)
+{
+  vec4 entries = mix(vec4(-3.0e38), ZeroOffsets(ray), greaterThan(ray.rate, vec4(0.0)));
+  return max(max(entries.x, entries.y), max(entries.z, entries.w));
+}
+
+/// Where it leaves: the first offset at which a falling coordinate reaches 0 (about 0 on a back face).
+float ExitOffset(FaceRay ray)
+{
+  vec4 exits = mix(vec4(3.0e38), ZeroOffsets(ray), lessThan(ray.rate, vec4(0.0)));
+  return min(min(exits.x, exits.y), min(exits.z, exits.w));
+}
+
+/// The eye depth of the fragment's point on the face. Parallel projection: affine in the window
+/// depth, depth = windowDepthToEyeDepth.x * gl_FragCoord.z + windowDepthToEyeDepth.y.
+uniform vec2 windowDepthToEyeDepth;
+float FaceDepth()
+{
+  return parallelProjection == 1 ? windowDepthToEyeDepth.x * gl_FragCoord.z + windowDepthToEyeDepth.y
+                                 : 1.0 / gl_FragCoord.w;
+}
+#else
 struct BarycentricRay
 {
   vec4 face;    // coordinates at the fragment's point on the face
@@ -92,6 +145,8 @@ vec3 EyePointAt(float z)
 {
   return parallelProjection == 1 ? vec3(eyePosition.xy, -z) : eyePosition * (z / length(eyePosition));
 }
+
+#endif
 
 /// Tetrahedron `cell`'s vertex gradients (`gradients` per point of `cellPoints`, model space) at
 /// barycentric coordinates `front` and `back`, in eye space (`toEye`, the normal matrix).

@@ -11,7 +11,9 @@ uniform mat4 modelToEye;
 uniform mat4 eyeToClip;
 uniform int parallelProjection;
 
-out vec3 eyePosition;          // the fragment's eye-space point on the face
+#ifndef UV_DEPTH_RAY
+out vec3 eyePosition;          // the fragment's eye-space point on the face (UV_DEPTH_RAY: not needed)
+#endif
 out vec4 faceCoordinates;      // its barycentric coordinates
 // Perspective: M^-1 (x, 0), the direction attribute b. Parallel projection: the coordinates' change
 // per unit along -z, the same at every vertex. (One output serves both: on CPU rasterisers each
@@ -70,7 +72,9 @@ void EmitAttributes(EyeTetrahedron tet, int k, int id)
 {
   vec4 unit = vec4(0.0);
   unit[k] = 1.0;
+#ifndef UV_DEPTH_RAY
   eyePosition = tet.v[k];
+#endif
   faceCoordinates = unit;
   rayDirection = parallelProjection == 1 ? tet.parallelPerUnit : unit - tet.eyeCoordinates;
   cellScalars = tet.scalars;

@@ -33,11 +33,14 @@ flat in int rayCastTetrahedron;  // >= 0: intersect the eye ray with this tetrah
 flat in int fragmentTetrahedron;
 #endif
 uniform int parallelProjection;
+#ifdef UV_NEAR_PLANE_CUTS
+uniform float nearDepth; // where rays begin
+#endif
+#endif
 // The eye ray at pixel (x, y) is affine in it: perspective, its direction is (dot(rayX, (x, y, 1)),
 // dot(rayY, (x, y, 1)), -1) from the eye; parallel, its origin is (those, 0) and it runs along -z.
 uniform vec3 rayX;
 uniform vec3 rayY;
-#endif
 #ifdef UV_GRADIENTS
 uniform samplerBuffer pointGradients;
 uniform mat3 modelToEyeNormals;
@@ -55,9 +58,6 @@ uniform mat4 modelToEye;
 uniform sampler2D opaqueDepth;      // the scene's depth buffer before the volume
 uniform mat4 clipToEye;
 uniform vec2 viewportSize;
-#endif
-#ifdef UV_NEAR_PLANE_CUTS
-uniform float nearDepth; // where rays begin
 #endif
 
 //UV::TransferFunction
@@ -111,25 +111,35 @@ void main()
   vec3 frontPoint, backPoint;
   float frontScalar, backScalar;
   vec3 frontGradient = vec3(0.0), backGradient = vec3(0.0);
+  float segmentLength;
+  vec2 ray = vec2(dot(rayX, vec3(gl_FragCoord.xy, 1.0)), dot(rayY, vec3(gl_FragCoord.xy, 1.0)));
 #ifdef UV_FACES
-  vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : eyePosition;
-  BarycentricRay faceRay = FragmentRay();
-  float entry = EntryDistance(faceRay), exit = ExitDistance(faceRay);
+  // Offsets in eye depth from the fragment's point on the face (uvBarycentricRayLib.glsl).
+  vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : vec3(ray, -1.0);
+  FaceRay faceRay = FragmentFaceRay();
+  float entry = EntryOffset(faceRay), exit = ExitOffset(faceRay);
+  float faceDepth = FaceDepth();
+#ifdef UV_NEAR_PLANE_CUTS
+  // Only compiled in when the near plane cuts the mesh's bounds: rays begin there.
+  entry = max(entry, nearDepth - faceDepth);
+#endif
   if (!(entry < exit))
   {
     discard;
   }
-  vec4 frontWeights = CoordinatesAt(faceRay, entry), backWeights = CoordinatesAt(faceRay, exit);
+  vec4 frontWeights = faceRay.face + entry * faceRay.rate, backWeights = faceRay.face + exit * faceRay.rate;
   frontScalar = dot(cellScalars, frontWeights);
   backScalar = dot(cellScalars, backWeights);
-  frontPoint = EyePointAt(entry);
-  backPoint = EyePointAt(exit);
+  // Perspective: a unit of depth is |direction| of length along the ray.
+  segmentLength = (exit - entry) * (parallelProjection == 1 ? 1.0 : length(direction));
+  vec3 origin = parallelProjection == 1 ? vec3(ray, 0.0) : vec3(0.0);
+  frontPoint = origin + (faceDepth + entry) * direction;
+  backPoint = origin + (faceDepth + exit) * direction;
 #ifdef UV_GRADIENTS
   VertexGradientsAt(tetrahedronPoints, pointGradients, modelToEyeNormals, cellId, frontWeights, backWeights,
     frontGradient, backGradient);
 #endif
 #else
-  vec2 ray = vec2(dot(rayX, vec3(gl_FragCoord.xy, 1.0)), dot(rayY, vec3(gl_FragCoord.xy, 1.0)));
   vec3 origin = parallelProjection == 1 ? vec3(ray, 0.0) : vec3(0.0);
   vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : vec3(ray, -1.0);
 #ifdef UV_NEAR_PLANE_CUTS
@@ -200,6 +210,7 @@ void main()
     backGradient = backGradientOverW / backData.z;
 #endif
   }
+  segmentLength = distance(frontPoint, backPoint);
 #endif
 
 #ifdef UV_OPAQUE_DEPTH
@@ -219,9 +230,9 @@ void main()
     backPoint = mix(frontPoint, backPoint, u);
     backScalar = mix(frontScalar, backScalar, u);
     backGradient = mix(frontGradient, backGradient, u);
+    segmentLength *= u;
   }
 #endif
-  float segmentLength = distance(frontPoint, backPoint);
 #ifdef UV_SEGMENT_TABLE
   vec4 result = TableSegment(frontScalar, backScalar, segmentLength);
 #else

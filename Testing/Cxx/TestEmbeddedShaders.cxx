@@ -70,8 +70,8 @@ protected:
 TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
 {
   const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
-  // 23 option sets (6 of pulled faces, 12 of fans, 5 of ray casting), with and without the opaque depth
-  EXPECT_EQ(all.size(), 46u);
+  // 29 option sets (12 of pulled faces, 12 of fans, 5 of ray casting), with and without the opaque depth
+  EXPECT_EQ(all.size(), 58u);
   for (const auto& options : all)
   {
     const std::string variant = std::string("tetrahedra program, ") +
