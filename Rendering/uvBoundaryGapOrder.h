@@ -294,23 +294,101 @@ std::vector<std::pair<std::uint32_t, int>> FacesOffTheHull(const std::vector<std
   return kept;
 }
 
+/// The pixels of row y (centres at y + 0.5) within [first, last] whose centres may lie inside a
+/// projected triangle by `margin`: [first, last] narrowed to them, one pixel wider for rounding
+/// (each pixel is still tested; the span only spares the loop the bounds' corners).
+inline void NarrowToRow(const ScreenTriangle& triangle, double y, double margin, int& first, int& last)
+{
+  double low = -1e300, high = 1e300; // pixel centres x + 0.5 allowed by every edge
+  for (int i = 0; i < 3; ++i)
+  {
+    // A x + B y + C >= -margin
+    const double rest = triangle.B[i] * y + triangle.C[i] + margin;
+    if (triangle.A[i] > 0.0)
+      low = std::max(low, -rest / triangle.A[i]);
+    else if (triangle.A[i] < 0.0)
+      high = std::min(high, -rest / triangle.A[i]);
+    else if (rest < 0.0)
+      low = 1e300;
+  }
+  // Clamped to [first, last] in double first: the bounds can lie far off the row, or be empty.
+  const double from = std::max(static_cast<double>(first), std::floor(low - 0.5) - 1.0);
+  const double to = std::min(static_cast<double>(last), std::ceil(high - 0.5) + 1.0);
+  if (!(from <= to))
+  {
+    last = first - 1;
+    return;
+  }
+  first = static_cast<int>(from);
+  last = static_cast<int>(to);
+}
+
+/// A boundary face made ready for the pixel rays (GapConstraints): its corners, outward normal and
+/// tetrahedron, the pixels its projection can cover and, where it has one, that projection.
+struct GapFace
+{
+  glm::dvec3 P[3];
+  glm::dvec3 Outward;
+  std::uint32_t Tetrahedron = 0;
+  int X0 = 0, X1 = -1, Y0 = 0, Y1 = -1; // empty unless ScreenBounds found pixels
+  bool Projected = false;               // Screen holds the projection (else every pixel is tested)
+  ScreenTriangle Screen;
+};
+
+/// Where a pixel's ray crosses a boundary face (GapConstraints).
+struct GapCrossing
+{
+  std::uint32_t Pixel; // in its band of rows
+  std::uint32_t Tetrahedron;
+  double At; // ray parameter
+  bool Leaves;
+};
+
+/// The gap pairs along one pixel's ray, from its crossings (sorted here): the tetrahedron the ray
+/// enters the mesh by again lies behind every one it left the mesh from just before.
+inline void PairsAlongRay(std::vector<GapCrossing>::iterator begin, std::vector<GapCrossing>::iterator end,
+  std::vector<std::uint32_t>& left, std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs)
+{
+  if (end - begin < 2 || (end - begin == 2 && !begin->Leaves && !(begin + 1)->Leaves))
+    return;
+  // Leaving before entering where they coincide (a gap of width 0).
+  std::sort(begin, end, [](const GapCrossing& a, const GapCrossing& b) {
+    return a.At != b.At ? a.At < b.At : (a.Leaves && !b.Leaves);
+  });
+  if (end - begin == 2 && !begin->Leaves)
+    return; // in and out: no gap
+  left.clear();
+  for (auto c = begin; c != end; ++c)
+  {
+    if (c->Leaves)
+    {
+      if (c != begin && !(c - 1)->Leaves)
+        left.clear(); // a new exit after an entry: the earlier exits are not next to what follows
+      left.push_back(c->Tetrahedron);
+    }
+    else
+    {
+      for (std::uint32_t front : left)
+        if (front != c->Tetrahedron && (pairs.empty() || pairs.back() != std::make_pair(front, c->Tetrahedron)))
+          pairs.emplace_back(front, c->Tetrahedron);
+    }
+  }
+}
+
 /// The order constraints a non-convex mesh's gaps add for the rays of `grid`: pairs (front, behind),
-/// each once, meaning a ray through the image leaves the mesh from `front` and enters it again
-/// next at `behind`, which must then be drawn first. `faces` from BoundaryFaces, or only those
-/// FacesOffTheHull (the same pairs, sooner);
-/// `parallelFor(count, function(begin, end))` runs over chunks of faces, in parallel if it likes
-/// (the result does not depend on it).
+/// each once, sorted, meaning a ray through the image leaves the mesh from `front` and enters it
+/// again next at `behind`, which must then be drawn first. `faces` from BoundaryFaces, or only those
+/// FacesOffTheHull (the same pairs, sooner); `parallelFor(count, function(begin, end))` runs over
+/// faces and then over bands of rows, in parallel if it likes (the result does not depend on it).
+/// The image is taken a band of rows at a time, so the crossings held at once are those of a band,
+/// not of the whole image.
 template <typename Position, typename ParallelFor>
 std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
   const std::vector<std::pair<std::uint32_t, int>>& faces, Position&& position, const PixelGrid& grid, ParallelFor&& parallelFor)
 {
-  struct Crossing
-  {
-    std::uint32_t Pixel;
-    std::uint32_t Tetrahedron;
-    double At; // ray parameter
-    bool Leaves;
-  };
+  using Pair = std::pair<std::uint32_t, std::uint32_t>;
+  if (grid.Width <= 0 || grid.Height <= 0)
+    return {};
   // The near and far points of a pixel's ray are affine in the pixel under any projection (w is
   // constant on a plane of constant depth): three rays give every other.
   const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
@@ -320,88 +398,95 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
   grid.Ray(0, 1, clipToModel, originY, stepY);
   originX -= origin0, stepX -= step0, originY -= origin0, stepY -= step0;
 
-  constexpr std::size_t chunks = 64;
+  std::vector<GapFace> ready(faces.size());
+  parallelFor(faces.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f)
+    {
+      GapFace& face = ready[f];
+      const std::uint32_t t = faces[f].first;
+      const int k = faces[f].second;
+      face.Tetrahedron = t;
+      for (int j = 0; j < 3; ++j)
+        face.P[j] = position(t, (k + 1 + j) % 4);
+      face.Outward = glm::cross(face.P[1] - face.P[0], face.P[2] - face.P[0]);
+      if (glm::dot(face.Outward, position(t, k) - face.P[0]) > 0.0)
+        face.Outward = -face.Outward;
+      if (!ScreenBounds(grid, face.P, face.X0, face.X1, face.Y0, face.Y1))
+        face.X0 = 0, face.X1 = -1, face.Y0 = 0, face.Y1 = -1;
+      else
+        face.Projected = ProjectTriangle(grid, face.P, face.Screen);
+    }
+  });
+
+  // Bands of rows, and the faces whose bounds reach each (a counting sort).
+  constexpr int TargetBands = 64;
+  const int bandRows = std::max(1, (grid.Height + TargetBands - 1) / TargetBands);
+  const int bands = (grid.Height + bandRows - 1) / bandRows;
+  std::vector<std::uint32_t> bandFirst(bands + 1, 0), bandFaces;
+  for (const GapFace& face : ready)
+    for (int b = face.Y0 / bandRows; face.Y0 <= face.Y1 && b <= face.Y1 / bandRows; ++b)
+      ++bandFirst[b + 1];
+  for (int b = 0; b < bands; ++b)
+    bandFirst[b + 1] += bandFirst[b];
+  bandFaces.resize(bandFirst.back());
+  {
+    std::vector<std::uint32_t> next(bandFirst.begin(), bandFirst.end() - 1);
+    for (std::size_t f = 0; f < ready.size(); ++f)
+      for (int b = ready[f].Y0 / bandRows; ready[f].Y0 <= ready[f].Y1 && b <= ready[f].Y1 / bandRows; ++b)
+        bandFaces[next[b]++] = static_cast<std::uint32_t>(f);
+  }
+
   // Pixels this far outside a face's projection are passed over: far beyond the rounding of the
   // projection and of the exact test's edge slack.
   constexpr double PrefilterMargin = 0.01;
-  std::vector<std::vector<Crossing>> found(chunks);
-  const std::size_t perChunk = (faces.size() + chunks - 1) / chunks;
-  parallelFor(chunks, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t chunk = begin; chunk < end; ++chunk)
-      for (std::size_t f = chunk * perChunk; f < std::min(faces.size(), (chunk + 1) * perChunk); ++f)
+  std::vector<std::vector<Pair>> bandPairs(bands);
+  parallelFor(static_cast<std::size_t>(bands), [&](std::size_t begin, std::size_t end) {
+    std::vector<GapCrossing> crossings, grouped;
+    std::vector<std::uint32_t> first, left;
+    for (std::size_t b = begin; b < end; ++b)
+    {
+      const int rowBegin = static_cast<int>(b) * bandRows, rowEnd = std::min(grid.Height, rowBegin + bandRows);
+      crossings.clear();
+      for (std::uint32_t i = bandFirst[b]; i < bandFirst[b + 1]; ++i)
       {
-        const std::uint32_t t = faces[f].first;
-        const int k = faces[f].second;
-        const glm::dvec3 p[3] = { position(t, (k + 1) % 4), position(t, (k + 2) % 4), position(t, (k + 3) % 4) };
-        glm::dvec3 outward = glm::cross(p[1] - p[0], p[2] - p[0]);
-        if (glm::dot(outward, position(t, k) - p[0]) > 0.0)
-          outward = -outward;
-        int x0, x1, y0, y1;
-        if (!ScreenBounds(grid, p, x0, x1, y0, y1))
-          continue;
-        // Most pixels of the bounds (padded for rounding) lie clearly outside a small face.
-        ScreenTriangle screen;
-        const bool prefilter = ProjectTriangle(grid, p, screen);
-        for (int y = y0; y <= y1; ++y)
+        const GapFace& face = ready[bandFaces[i]];
+        for (int y = std::max(face.Y0, rowBegin); y <= std::min(face.Y1, rowEnd - 1); ++y)
+        {
+          int x0 = face.X0, x1 = face.X1;
+          if (face.Projected)
+            NarrowToRow(face.Screen, y + 0.5, PrefilterMargin, x0, x1);
           for (int x = x0; x <= x1; ++x)
           {
-            if (prefilter && screen.Outside(x + 0.5, y + 0.5, PrefilterMargin))
+            if (face.Projected && face.Screen.Outside(x + 0.5, y + 0.5, PrefilterMargin))
               continue;
             const glm::dvec3 origin = origin0 + double(x) * originX + double(y) * originY;
             const glm::dvec3 step = step0 + double(x) * stepX + double(y) * stepY;
             double at;
-            if (RayMeetsTriangle(origin, step, p, at))
-              found[chunk].push_back(
-                { static_cast<std::uint32_t>(y * grid.Width + x), t, at, glm::dot(outward, step) > 0.0 });
+            if (RayMeetsTriangle(origin, step, face.P, at))
+              crossings.push_back({ static_cast<std::uint32_t>((y - rowBegin) * grid.Width + x), face.Tetrahedron, at,
+                glm::dot(face.Outward, step) > 0.0 });
           }
+        }
       }
-  });
-  // Grouped by pixel (counting sort), then each pixel's few crossings along its ray.
-  std::vector<std::uint32_t> first(std::size_t(grid.Width) * grid.Height + 1, 0);
-  for (const auto& list : found)
-    for (const Crossing& c : list)
-      ++first[c.Pixel + 1];
-  for (std::size_t i = 1; i < first.size(); ++i)
-    first[i] += first[i - 1];
-  std::vector<Crossing> crossings(first.back());
-  {
-    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-    for (const auto& list : found)
-      for (const Crossing& c : list)
-        crossings[next[c.Pixel]++] = c;
-  }
-  std::vector<std::vector<Crossing>>().swap(found);
-  // Leaving before entering where they coincide (a gap of width 0).
-  const auto alongRay = [](const Crossing& a, const Crossing& b) {
-    return a.At != b.At ? a.At < b.At : (a.Leaves && !b.Leaves);
-  };
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  std::vector<std::uint32_t> left; // the tetrahedra the ray last left the mesh from
-  for (std::size_t pixel = 0; pixel + 1 < first.size(); ++pixel)
-  {
-    const auto begin = crossings.begin() + first[pixel], end = crossings.begin() + first[pixel + 1];
-    if (end - begin < 2 || (end - begin == 2 && !begin->Leaves && !(begin + 1)->Leaves))
-      continue;
-    std::sort(begin, end, alongRay);
-    if (end - begin == 2 && !begin->Leaves)
-      continue; // in and out: no gap
-    left.clear();
-    for (auto c = begin; c != end; ++c)
-    {
-      if (c->Leaves)
-      {
-        if (c != begin && !(c - 1)->Leaves)
-          left.clear(); // a new exit after an entry: the earlier exits are not next to what follows
-        left.push_back(c->Tetrahedron);
-      }
-      else
-      {
-        for (std::uint32_t front : left)
-          if (front != c->Tetrahedron)
-            pairs.emplace_back(front, c->Tetrahedron);
-      }
+      // Grouped by pixel (counting sort), then each pixel's few crossings along its ray.
+      first.assign(std::size_t(rowEnd - rowBegin) * grid.Width + 1, 0);
+      for (const GapCrossing& c : crossings)
+        ++first[c.Pixel + 1];
+      for (std::size_t i = 1; i < first.size(); ++i)
+        first[i] += first[i - 1];
+      grouped.resize(crossings.size());
+      for (const GapCrossing& c : crossings)
+        grouped[first[c.Pixel]++] = c; // first[p] ends at pixel p's end, its start is first[p - 1]
+      std::vector<Pair>& pairs = bandPairs[b];
+      for (std::size_t pixel = 0; pixel + 1 < first.size(); ++pixel)
+        PairsAlongRay(grouped.begin() + (pixel == 0 ? 0 : first[pixel - 1]), grouped.begin() + first[pixel], left, pairs);
+      std::sort(pairs.begin(), pairs.end());
+      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     }
-  }
+  });
+  std::vector<Pair> pairs;
+  for (const auto& list : bandPairs)
+    pairs.insert(pairs.end(), list.begin(), list.end());
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
