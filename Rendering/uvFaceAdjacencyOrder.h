@@ -110,7 +110,7 @@ public:
   /// Bytes kept between sorts: none, the state below lives only while sorting.
   std::size_t GetBytes() const
   {
-    return this->Behind.capacity() + this->State.capacity() +
+    return this->Side.capacity() + this->Behind.capacity() + this->State.capacity() +
       sizeof(std::uint32_t) * (this->Waiting.capacity() + this->AheadFirst.capacity() + this->AheadOf.capacity() +
                                 this->NewOrder.capacity() + this->Stack.capacity());
   }
@@ -128,6 +128,25 @@ public:
     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& gaps = {})
   {
     const std::size_t count = corners.size() / 4;
+    // Each shared face is decided once, by the lower-indexed tetrahedron, which writes the side of
+    // both its slots (each slot has one writer, so the parallel loop needs no lock).
+    this->Side.assign(4 * count, 0);
+    parallelFor(count, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t)
+        for (int k = 0; k < 4; ++k)
+        {
+          const std::int32_t u = neighbours[4 * t + k];
+          if (u <= static_cast<std::int32_t>(t))
+            continue; // no neighbour, or the lower one decides
+          const std::size_t other = static_cast<std::size_t>(u);
+          int j = 0;
+          while (j < 3 && neighbours[4 * other + j] != static_cast<std::int32_t>(t))
+            ++j;
+          const int side = LowSide(corners, position, t, k, eye, parallel);
+          this->Side[4 * t + k] = static_cast<std::int8_t>(side);
+          this->Side[4 * other + j] = static_cast<std::int8_t>(-side);
+        }
+    });
     this->Behind.assign(count, 0);
     this->Waiting.assign(count, 0);
     parallelFor(count, [&](std::size_t begin, std::size_t end) {
@@ -135,17 +154,11 @@ public:
       {
         std::uint8_t behind = 0, waiting = 0;
         for (int k = 0; k < 4; ++k)
-        {
-          const std::int32_t u = neighbours[4 * t + k];
-          if (u < 0)
-            continue;
-          const int side = NeighbourSide(corners, position, neighbours, t, k, static_cast<std::size_t>(u), eye, parallel);
-          if (side < 0) // the neighbour is behind: drawn first
+          if (this->Side[4 * t + k] < 0) // the neighbour is behind: drawn first
           {
             behind |= static_cast<std::uint8_t>(1u << k);
             ++waiting;
           }
-        }
         this->Behind[t] = behind;
         this->Waiting[t] = waiting;
       }
@@ -163,19 +176,14 @@ private:
     Placed = 4   // placed in the new order (or, not drawn, passed on)
   };
 
-  /// -1: the neighbour across face k of t is behind t (farther from the eye), 1: in front, 0: the
-  /// eye is in the face's plane (either order). Decided from the lower-indexed tetrahedron's side.
+  /// For the face k of `low` shared with a higher-indexed neighbour: -1 where the neighbour is behind
+  /// `low` (farther from the eye), 1 where in front, 0 where the eye is in the face's plane (either
+  /// order).
   template <typename Position>
-  static int NeighbourSide(const std::vector<std::uint32_t>& corners, Position& position,
-    const std::vector<std::int32_t>& neighbours, std::size_t t, int k, std::size_t u, const glm::dvec3& eye, bool parallel)
+  static int LowSide(const std::vector<std::uint32_t>& corners, Position& position, std::size_t low, int lowCorner,
+    const glm::dvec3& eye, bool parallel)
   {
-    const std::size_t low = std::min(t, u);
-    int lowCorner = k;
-    if (low != t)
-      for (int j = 0; j < 4; ++j)
-        if (neighbours[4 * u + j] == static_cast<std::int32_t>(t))
-          lowCorner = j;
-    // The face's corners by ascending id: the same three numbers from either side.
+    // The face's corners by ascending id: the plane of the same three numbers for every view.
     std::array<std::pair<std::uint32_t, int>, 3> face;
     for (int j = 0; j < 3; ++j)
     {
@@ -190,10 +198,8 @@ private:
     const double lowSide = glm::dot(normal, position(low, lowCorner) - a);
     if (eyeSide == 0.0 || lowSide == 0.0)
       return 0;
-    // The eye on the low tetrahedron's side: the low one is in front.
-    const bool lowInFront = (eyeSide > 0.0) == (lowSide > 0.0);
-    const bool tInFront = low == t ? lowInFront : !lowInFront;
-    return tInFront ? -1 : 1;
+    // The eye on the low tetrahedron's side: the low one is in front, its neighbour behind.
+    return (eyeSide > 0.0) == (lowSide > 0.0) ? -1 : 1;
   }
 
   /// The tetrahedra in front of each across a gap, AheadOf[AheadFirst[t] .. AheadFirst[t + 1]), and
@@ -292,6 +298,7 @@ private:
 
   void Release()
   {
+    std::vector<std::int8_t>().swap(this->Side);
     std::vector<std::uint8_t>().swap(this->Behind);
     std::vector<std::uint32_t>().swap(this->Waiting);
     std::vector<std::uint32_t>().swap(this->AheadFirst);
@@ -310,6 +317,7 @@ private:
     return false;
   }
 
+  std::vector<std::int8_t> Side;     // per face slot 4t + k: -1 the neighbour is behind t, 1 in front, 0 either
   std::vector<std::uint8_t> Behind;  // per tetrahedron: bit k, the neighbour across face k is behind it
   std::vector<std::uint32_t> Waiting; // neighbours (and tetrahedra across gaps) behind it not yet placed
   std::vector<std::uint32_t> AheadFirst, AheadOf; // IndexGaps
