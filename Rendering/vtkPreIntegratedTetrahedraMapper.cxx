@@ -83,6 +83,11 @@ void SetWindowDepthToEyeDepth(vtkShaderProgram* program, const vtkUnstructuredVo
 /// this share of the covered pixels reached the opacity threshold in the last frame.
 constexpr double FrontToBackOpaqueShare = 0.25;
 
+/// The share is measured every frame near or above that, but only every this many frames while the
+/// last measure was under half of it: far from the choice, a view seldom turns it at once, and the
+/// order only changes the frame time, not the image.
+constexpr int FramesBetweenDistantMeasures = 8;
+
 /// AUTOMATIC casts rays from this many visible tetrahedra per pixel of the viewport on. A walk step
 /// costs more than a projected fragment, a projected tetrahedron costs its triangles' setup however
 /// few pixels it covers: the benchmark's scenes cross over near one tetrahedron per pixel (a mesh
@@ -139,6 +144,19 @@ public:
   // share of covered pixels the last frame left opaque (negative: not measured yet).
   bool FrontToBack = false;
   double OpaqueShare = -1.0;
+  int FramesSinceMeasure = 0;
+
+  /// Whether this frame measures the opaque share (FramesBetweenDistantMeasures).
+  bool MeasureIsDue()
+  {
+    if (this->OpaqueShare < 0.0 || this->OpaqueShare >= 0.5 * FrontToBackOpaqueShare ||
+      ++this->FramesSinceMeasure >= FramesBetweenDistantMeasures)
+    {
+      this->FramesSinceMeasure = 0;
+      return true;
+    }
+    return false;
+  }
 
   vtkIdType DrawnTetrahedra = 0;
   int MeshUploads = 0, TransferFunctionUploads = 0, MaskRefreshes = 0;
@@ -471,7 +489,7 @@ bool vtkPreIntegratedTetrahedraMapper::Draw(
   else
     this->DrawBackToFront(frame, program);
   this->CheckGLErrors("the projected tetrahedra");
-  if (drawn && this->OrderIsChosen())
+  if (drawn && this->OrderIsChosen() && impl.MeasureIsDue())
   {
     drawn = this->MeasureOpaqueShare(frame, target);
     this->CheckGLErrors("the tetrahedra's opaque-share measure");

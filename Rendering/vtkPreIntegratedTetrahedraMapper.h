@@ -73,9 +73,10 @@
  * paper's pseudo early ray termination). Its error is at most 1 - OpacityThreshold. The order is
  * chosen per frame: front to back costs its mask passes (one full-screen pass per batch, at most
  * about 64 a frame) and, on CPU rasterisers, a slower blend and traversal of the order, and saves
- * only where pixels become opaque; so each frame counts (two occlusion-queried mask passes) the
- * share of the covered pixels it left opaque, and the next frame goes front to back when that share
- * is at least a quarter (the first frame does, to measure it). Back to front is kept where nothing
+ * only where pixels become opaque; so a frame counts (two occlusion-queried mask passes) the share
+ * of the covered pixels it left opaque, and the next frame goes front to back when that share is at
+ * least a quarter (the first frame does, to measure it). Under an eighth, the count is taken every
+ * eighth frame only: so far from the choice it seldom turns at once. Back to front is kept where nothing
  * can be saved: threshold 1, skipping off, or a mesh of one batch (4096 tetrahedra or fewer).
  */
 #ifndef vtkPreIntegratedTetrahedraMapper_h
@@ -155,8 +156,9 @@ public:
 
   ///@{
   /// Early termination (see the class description): whether the last frame composited front to
-  /// back, the share of covered pixels it left opaque (what the next frame's order is chosen by; -1
-  /// where the order is not chosen), the opacity-mask refreshes it ran, and, with
+  /// back, the share of covered pixels the last measured frame left opaque (what the next frame's
+  /// order is chosen by; -1 where the order is not chosen; measured every frame from half the share
+  /// that turns the order on, else every eighth frame), the opacity-mask refreshes it ran, and, with
   /// CountShadedFragments on (default off: an occlusion query per batch, each waited for), the
   /// fragments that passed the mask and were not discarded.
   bool GetDrewFrontToBack();

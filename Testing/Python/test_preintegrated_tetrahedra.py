@@ -529,6 +529,24 @@ class EarlyTerminationTests(SceneTestCase):
             self.assertGreater(max_alpha(on), 0.999)
             self.assertLessEqual(rmse(on, off)[1], 1.0 - scene.mapper.GetOpacityThreshold() + 1e-6, route)
 
+    def test_a_share_far_under_the_choice_is_measured_every_eighth_frame(self):
+        # Translucent: nothing is opaque, so the share is measured again only on the eighth frame
+        # after; made nearly opaque meanwhile, the frames stay back to front until that measure.
+        mesh, prop, camera, scene = self.scene(1.0)
+        scene.render()
+        self.assertEqual(scene.mapper.GetOpaquePixelShare(), 0.0)
+        prop.SetScalarOpacityUnitDistance(0.01)
+        frames = 0
+        while scene.mapper.GetOpaquePixelShare() == 0.0 and frames < 20:
+            scene.render()
+            frames += 1
+            self.assertFalse(scene.mapper.GetDrewFrontToBack())
+        self.assertEqual(frames, 8)
+        self.assertGreater(scene.mapper.GetOpaquePixelShare(), 0.25)
+        scene.render()
+        self.assertTrue(scene.mapper.GetDrewFrontToBack())
+        self.assertEqual(scene.events.errors, 0)
+
     def test_threshold_one_keeps_back_to_front(self):
         mesh, prop, camera, scene = self.scene(0.01, OpacityThreshold=1.0)
         scene.render()
