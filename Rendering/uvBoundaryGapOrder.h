@@ -333,7 +333,22 @@ struct GapFace
   int X0 = 0, X1 = -1, Y0 = 0, Y1 = -1; // empty unless ScreenBounds found pixels
   bool Projected = false;               // Screen holds the projection (else every pixel is tested)
   ScreenTriangle Screen;
+  // The ray of pixel (x, y) meets the face's plane where Outward . (origin + at step - P[0]) = 0;
+  // both dot products are affine in the pixel: at = (Base - OriginDot . (1, x, y)) / StepDot . (1, x, y).
+  double Base = 0.0;
+  glm::dvec3 OriginDot{ 0.0 }, StepDot{ 0.0 };
 };
+
+/// Whether the screen point (x, y) lies more than `margin` pixels inside each edge of a projected
+/// triangle: its ray meets the triangle wherever the exact test would say so, and only the plane
+/// need be crossed.
+inline bool WellInside(const ScreenTriangle& triangle, double x, double y, double margin)
+{
+  for (int i = 0; i < 3; ++i)
+    if (!(triangle.A[i] * x + triangle.B[i] * y + triangle.C[i] > margin))
+      return false;
+  return true;
+}
 
 /// Where a pixel's ray crosses a boundary face (GapConstraints).
 struct GapCrossing
@@ -415,6 +430,11 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
         face.X0 = 0, face.X1 = -1, face.Y0 = 0, face.Y1 = -1;
       else
         face.Projected = ProjectTriangle(grid, face.P, face.Screen);
+      face.Base = glm::dot(face.Outward, face.P[0]);
+      face.OriginDot = glm::dvec3(
+        glm::dot(face.Outward, origin0), glm::dot(face.Outward, originX), glm::dot(face.Outward, originY));
+      face.StepDot =
+        glm::dvec3(glm::dot(face.Outward, step0), glm::dot(face.Outward, stepX), glm::dot(face.Outward, stepY));
     }
   });
 
@@ -459,12 +479,22 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
           {
             if (face.Projected && face.Screen.Outside(x + 0.5, y + 0.5, PrefilterMargin))
               continue;
+            const std::uint32_t pixel = static_cast<std::uint32_t>((y - rowBegin) * grid.Width + x);
+            if (face.Projected && WellInside(face.Screen, x + 0.5, y + 0.5, PrefilterMargin))
+            {
+              // Well inside the projection: the ray meets the face where it meets its plane.
+              const glm::dvec3 pixelTerms(1.0, double(x), double(y));
+              const double along = glm::dot(face.StepDot, pixelTerms);
+              const double at = (face.Base - glm::dot(face.OriginDot, pixelTerms)) / along;
+              if (at >= 0.0)
+                crossings.push_back({ pixel, face.Tetrahedron, at, along > 0.0 });
+              continue;
+            }
             const glm::dvec3 origin = origin0 + double(x) * originX + double(y) * originY;
             const glm::dvec3 step = step0 + double(x) * stepX + double(y) * stepY;
             double at;
             if (RayMeetsTriangle(origin, step, face.P, at))
-              crossings.push_back({ static_cast<std::uint32_t>((y - rowBegin) * grid.Width + x), face.Tetrahedron, at,
-                glm::dot(face.Outward, step) > 0.0 });
+              crossings.push_back({ pixel, face.Tetrahedron, at, glm::dot(face.Outward, step) > 0.0 });
           }
         }
       }
