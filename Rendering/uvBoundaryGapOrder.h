@@ -52,6 +52,31 @@ struct PixelGrid
   }
 };
 
+/// Every pixel's ray of a grid from three: the near and far points of a pixel's ray are affine in the
+/// pixel under any projection (w is constant on a plane of constant depth).
+struct PixelRays
+{
+  glm::dvec3 Origin0, OriginX, OriginY; ///< the ray's near point: Origin0 + x OriginX + y OriginY
+  glm::dvec3 Step0, StepX, StepY;       ///< and its step to the far point, likewise
+
+  explicit PixelRays(const PixelGrid& grid)
+  {
+    const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
+    grid.Ray(0, 0, clipToModel, this->Origin0, this->Step0);
+    grid.Ray(1, 0, clipToModel, this->OriginX, this->StepX);
+    grid.Ray(0, 1, clipToModel, this->OriginY, this->StepY);
+    this->OriginX -= this->Origin0, this->StepX -= this->Step0;
+    this->OriginY -= this->Origin0, this->StepY -= this->Step0;
+  }
+
+  /// The ray of pixel (x, y).
+  void At(int x, int y, glm::dvec3& origin, glm::dvec3& step) const
+  {
+    origin = this->Origin0 + double(x) * this->OriginX + double(y) * this->OriginY;
+    step = this->Step0 + double(x) * this->StepX + double(y) * this->StepY;
+  }
+};
+
 /// The pixels whose centres a triangle can cover, clipped to the grid; false where none (behind the
 /// near plane or off the image). The part beyond the near plane is projected, so a triangle that
 /// crosses it is bounded too.
@@ -104,14 +129,17 @@ struct ScreenTriangle
 {
   double A[3], B[3], C[3];
 
-  /// Whether the screen point (x, y) lies more than `margin` pixels outside an edge.
-  bool Outside(double x, double y, double margin) const
+  /// How far inside every edge the screen point (x, y) lies, in pixels (negative: outside one).
+  double Clearance(double x, double y) const
   {
-    for (int i = 0; i < 3; ++i)
-      if (this->A[i] * x + this->B[i] * y + this->C[i] < -margin)
-        return true;
-    return false;
+    double nearest = this->A[0] * x + this->B[0] * y + this->C[0];
+    for (int i = 1; i < 3; ++i)
+      nearest = std::min(nearest, this->A[i] * x + this->B[i] * y + this->C[i]);
+    return nearest;
   }
+
+  /// Whether the screen point (x, y) lies more than `margin` pixels outside an edge.
+  bool Outside(double x, double y, double margin) const { return this->Clearance(x, y) < -margin; }
 };
 
 /// The triangle's ScreenTriangle, where it lies wholly beyond the near plane and is not seen
@@ -339,17 +367,6 @@ struct GapFace
   glm::dvec3 OriginDot{ 0.0 }, StepDot{ 0.0 };
 };
 
-/// Whether the screen point (x, y) lies more than `margin` pixels inside each edge of a projected
-/// triangle: its ray meets the triangle wherever the exact test would say so, and only the plane
-/// need be crossed.
-inline bool WellInside(const ScreenTriangle& triangle, double x, double y, double margin)
-{
-  for (int i = 0; i < 3; ++i)
-    if (!(triangle.A[i] * x + triangle.B[i] * y + triangle.C[i] > margin))
-      return false;
-  return true;
-}
-
 /// Where a pixel's ray crosses a boundary face (GapConstraints).
 struct GapCrossing
 {
@@ -404,15 +421,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
   using Pair = std::pair<std::uint32_t, std::uint32_t>;
   if (grid.Width <= 0 || grid.Height <= 0)
     return {};
-  // The near and far points of a pixel's ray are affine in the pixel under any projection (w is
-  // constant on a plane of constant depth): three rays give every other.
-  const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
-  glm::dvec3 origin0, step0, originX, stepX, originY, stepY;
-  grid.Ray(0, 0, clipToModel, origin0, step0);
-  grid.Ray(1, 0, clipToModel, originX, stepX);
-  grid.Ray(0, 1, clipToModel, originY, stepY);
-  originX -= origin0, stepX -= step0, originY -= origin0, stepY -= step0;
-
+  const PixelRays rays(grid);
   std::vector<GapFace> ready(faces.size());
   parallelFor(faces.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f)
@@ -431,10 +440,10 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
       else
         face.Projected = ProjectTriangle(grid, face.P, face.Screen);
       face.Base = glm::dot(face.Outward, face.P[0]);
-      face.OriginDot = glm::dvec3(
-        glm::dot(face.Outward, origin0), glm::dot(face.Outward, originX), glm::dot(face.Outward, originY));
-      face.StepDot =
-        glm::dvec3(glm::dot(face.Outward, step0), glm::dot(face.Outward, stepX), glm::dot(face.Outward, stepY));
+      face.OriginDot = glm::dvec3(glm::dot(face.Outward, rays.Origin0), glm::dot(face.Outward, rays.OriginX),
+        glm::dot(face.Outward, rays.OriginY));
+      face.StepDot = glm::dvec3(
+        glm::dot(face.Outward, rays.Step0), glm::dot(face.Outward, rays.StepX), glm::dot(face.Outward, rays.StepY));
     }
   });
 
@@ -477,12 +486,14 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
             NarrowToRow(face.Screen, y + 0.5, PrefilterMargin, x0, x1);
           for (int x = x0; x <= x1; ++x)
           {
-            if (face.Projected && face.Screen.Outside(x + 0.5, y + 0.5, PrefilterMargin))
+            const double clearance = face.Projected ? face.Screen.Clearance(x + 0.5, y + 0.5) : 0.0;
+            if (clearance < -PrefilterMargin)
               continue;
             const std::uint32_t pixel = static_cast<std::uint32_t>((y - rowBegin) * grid.Width + x);
-            if (face.Projected && WellInside(face.Screen, x + 0.5, y + 0.5, PrefilterMargin))
+            if (clearance > PrefilterMargin)
             {
-              // Well inside the projection: the ray meets the face where it meets its plane.
+              // Well inside the projection: the ray meets the face wherever the exact test would say
+              // so, where it meets the face's plane.
               const glm::dvec3 pixelTerms(1.0, double(x), double(y));
               const double along = glm::dot(face.StepDot, pixelTerms);
               const double at = (face.Base - glm::dot(face.OriginDot, pixelTerms)) / along;
@@ -490,8 +501,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
                 crossings.push_back({ pixel, face.Tetrahedron, at, along > 0.0 });
               continue;
             }
-            const glm::dvec3 origin = origin0 + double(x) * originX + double(y) * originY;
-            const glm::dvec3 step = step0 + double(x) * stepX + double(y) * stepY;
+            glm::dvec3 origin, step;
+            rays.At(x, y, origin, step);
             double at;
             if (RayMeetsTriangle(origin, step, face.P, at))
               crossings.push_back({ pixel, face.Tetrahedron, at, glm::dot(face.Outward, step) > 0.0 });

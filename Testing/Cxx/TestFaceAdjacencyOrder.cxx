@@ -425,20 +425,15 @@ namespace
 std::vector<std::pair<std::uint32_t, std::uint32_t>> GapPairsOfEveryPixel(
   const Mesh& mesh, const std::vector<std::pair<std::uint32_t, int>>& faces, const uv::PixelGrid& grid)
 {
-  const glm::dmat4 clipToModel = glm::inverse(grid.ModelToClip);
-  glm::dvec3 origin0, step0, originX, stepX, originY, stepY;
-  grid.Ray(0, 0, clipToModel, origin0, step0);
-  grid.Ray(1, 0, clipToModel, originX, stepX);
-  grid.Ray(0, 1, clipToModel, originY, stepY);
-  originX -= origin0, stepX -= step0, originY -= origin0, stepY -= step0;
+  const uv::PixelRays rays(grid);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   std::vector<uv::GapCrossing> crossings;
   std::vector<std::uint32_t> left;
   for (int y = 0; y < grid.Height; ++y)
     for (int x = 0; x < grid.Width; ++x)
     {
-      const glm::dvec3 origin = origin0 + double(x) * originX + double(y) * originY;
-      const glm::dvec3 step = step0 + double(x) * stepX + double(y) * stepY;
+      glm::dvec3 origin, step;
+      rays.At(x, y, origin, step);
       crossings.clear();
       for (const auto& face : faces)
       {
