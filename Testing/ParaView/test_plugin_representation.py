@@ -81,28 +81,40 @@ view.CameraViewAngle = 30.0
 Render(view)  # noqa: F405
 SaveScreenshot(output, view, ImageResolution=[300, 300])  # noqa: F405
 
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+
+def read_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader
+
+
+def pixel_differences(first, second):
+    """Between two images' pixels (colour channels): how many differ by more than 2 levels, the
+    largest difference, and the RMSE in levels."""
+    channels = min(first.GetNumberOfComponents(), second.GetNumberOfComponents(), 3)
+    off, worst, squares = 0, 0, 0.0
+    for i in range(first.GetNumberOfTuples()):
+        a, b = first.GetTuple(i), second.GetTuple(i)
+        d = [abs(a[c] - b[c]) for c in range(channels)]
+        worst = max(worst, max(d))
+        off += 1 if max(d) > 2 else 0
+        squares += sum(x * x for x in d) / channels
+    return off, worst, (squares / first.GetNumberOfTuples()) ** 0.5
+
+
 if baseline:
-    from vtkmodules.vtkIOImage import vtkPNGReader
     from vtkmodules.vtkImagingCore import vtkImageDifference
-    readers = []
-    for path in (output, baseline):
-        reader = vtkPNGReader()
-        reader.SetFileName(path)
-        reader.Update()
-        readers.append(reader)
+    readers = [read_png(path) for path in (output, baseline)]
     difference = vtkImageDifference()
     difference.SetInputConnection(readers[0].GetOutputPort())
     difference.SetImageConnection(readers[1].GetOutputPort())
     difference.Update()
     error = difference.GetThresholdedError()
     images = [r.GetOutput().GetPointData().GetScalars() for r in readers]
-    channels = min(images[0].GetNumberOfComponents(), images[1].GetNumberOfComponents(), 3)
-    off, worst = 0, 0
-    for i in range(images[0].GetNumberOfTuples()):
-        a, b = images[0].GetTuple(i), images[1].GetTuple(i)
-        d = max(abs(a[c] - b[c]) for c in range(channels))
-        worst = max(worst, d)
-        off += 1 if d > 2 else 0
+    off, worst, _ = pixel_differences(images[0], images[1])
     share = off / images[0].GetNumberOfTuples()
     print(f"image difference against {baseline}: thresholded {error:.3f} (at most {threshold}), "
           f"{100 * share:.2f}% of pixels more than 2 levels off (at most {100 * fraction:.2f}%), largest {worst:.0f}")
@@ -111,15 +123,11 @@ if baseline:
 # ImageSampleDistance 2, a setting of every entry: the volume drawn at half the view's width and
 # height, stretched over it. Near the full image (edges blur), but not it: the setting reached the
 # mapper.
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
 
 def screenshot_pixels(path):
     SaveScreenshot(path, view, ImageResolution=[300, 300])  # noqa: F405
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput().GetPointData().GetScalars()
+    return read_png(path).GetOutput().GetPointData().GetScalars()
 
 
 stem = os.path.splitext(output)[0]
@@ -128,13 +136,7 @@ display.ImageSampleDistance = 2.0
 Render(view)  # noqa: F405
 stretched = screenshot_pixels(stem + "_sample_distance_2.png")
 display.ImageSampleDistance = 1.0
-squares, changed = 0.0, 0
-for i in range(full.GetNumberOfTuples()):
-    a, b = full.GetTuple(i), stretched.GetTuple(i)
-    d = [abs(a[c] - b[c]) for c in range(3)]
-    squares += sum(x * x for x in d) / 3
-    changed += 1 if max(d) > 2 else 0
-levels = (squares / full.GetNumberOfTuples()) ** 0.5
+changed, _, levels = pixel_differences(full, stretched)
 print(f"image sample distance 2: RMSE {levels:.2f} levels against distance 1, {changed} pixels more than 2 off")
 assert changed > 0, "ImageSampleDistance did not reach the mapper"
 assert levels < 8.0, levels
