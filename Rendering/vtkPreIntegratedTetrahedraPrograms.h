@@ -57,7 +57,13 @@ struct vtkPreIntegratedTetrahedraPrograms
     if (options.OpaqueDepth)
       defines += "#define UV_OPAQUE_DEPTH\n";
     if (options.VertexPulling && !options.RayCasting)
+    {
       defines += "#define UV_FACES\n#define UV_DEPTH_RAY\n";
+      // A pixel's ray is affine on screen, so the faces can carry it (uvBarycentricTetrahedronLib.glsl)
+      // where no vertex can lie behind the eye: not where the near plane cuts the mesh.
+      if (!options.NearPlaneCuts)
+        defines += "#define UV_RAY_ATTRIBUTE\n";
+    }
     uvgl::ProgramSources sources;
     if (options.RayCasting)
     {

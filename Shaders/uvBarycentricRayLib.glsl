@@ -15,6 +15,9 @@ in vec4 faceCoordinates;
 in vec4 rayDirection; // parallel projection: the coordinates' change per unit along -z
 flat in vec4 cellScalars;
 flat in int cellId;
+#ifdef UV_RAY_ATTRIBUTE
+noperspective in vec2 pixelRay; // the eye ray through this pixel (uvBarycentricTetrahedronLib.glsl)
+#endif
 #ifdef UV_CELL_GRADIENTS
 flat in vec3 cellGradient;
 #endif

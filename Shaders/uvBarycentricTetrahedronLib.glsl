@@ -20,6 +20,12 @@ out vec4 faceCoordinates;      // its barycentric coordinates
 // output costs every triangle's setup and memory.)
 out vec4 rayDirection;
 flat out vec4 cellScalars;     // normalised scalar at the four vertices
+#ifdef UV_RAY_ATTRIBUTE
+// The eye ray through the fragment's pixel: perspective, its (x, y) per unit of depth, x / -z; parallel
+// projection, its origin (x, y). Either is affine on screen, so interpolated without perspective it is
+// exact, and the fragment stage need not rebuild it from its window position.
+noperspective out vec2 pixelRay;
+#endif
 flat out int cellId;
 #ifdef UV_CELL_GRADIENTS
 flat out vec3 cellGradient;    // the linear field's gradient, eye space (normalised scalar units)
@@ -85,6 +91,9 @@ void EmitAttributes(EyeTetrahedron tet, int k, int id)
 #ifdef UV_TEXTURE
   for (int v = 0; v < 4; ++v)
     cellTextureCoordinates[v] = texelFetch(pointTextureCoordinates, int(tet.ids[v]));
+#endif
+#ifdef UV_RAY_ATTRIBUTE
+  pixelRay = parallelProjection == 1 ? tet.v[k].xy : tet.v[k].xy / -tet.v[k].z;
 #endif
   gl_Position = eyeToClip * vec4(tet.v[k], 1.0);
 }

@@ -112,7 +112,11 @@ void main()
   float frontScalar, backScalar;
   vec3 frontGradient = vec3(0.0), backGradient = vec3(0.0);
   float segmentLength;
+#ifdef UV_RAY_ATTRIBUTE
+  vec2 ray = pixelRay; // the same ray, carried by the face: cheaper on CPU rasterisers
+#else
   vec2 ray = vec2(dot(rayX, vec3(gl_FragCoord.xy, 1.0)), dot(rayY, vec3(gl_FragCoord.xy, 1.0)));
+#endif
 #ifdef UV_FACES
   // Offsets in eye depth from the fragment's point on the face (uvBarycentricRayLib.glsl).
   vec3 direction = parallelProjection == 1 ? vec3(0.0, 0.0, -1.0) : vec3(ray, -1.0);
