@@ -35,6 +35,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -209,6 +210,36 @@ public:
         return true;
     }
     return false;
+  }
+
+  /// What of the view volume may cut the mesh: the near plane (NearPlaneMayCut), else its sides or
+  /// far plane where some point lies beyond one of them or on it (a relative margin for rounding),
+  /// else nothing. The corners of the mesh's bounds are tried first: inside, so is every point.
+  vtkPreIntegratedTetrahedraPrograms::Clipping ClippingOf(const vtkUnstructuredVolumeFrame& frame)
+  {
+    using Clipping = vtkPreIntegratedTetrahedraPrograms::Clipping;
+    if (this->NearPlaneMayCut(frame))
+      return Clipping::NearPlane;
+    const glm::dmat4 modelToClip = frame.ModelToClip(this->Mesh.Center);
+    const auto inside = [&modelToClip](const glm::dvec3& p) {
+      const glm::dvec4 clip = modelToClip * glm::dvec4(p, 1.0);
+      const double limit = (1.0 - 1e-3) * clip.w;
+      return std::abs(clip.x) < limit && std::abs(clip.y) < limit && clip.z < limit;
+    };
+    bool boxInside = true;
+    for (int corner = 0; corner < 8 && boxInside; ++corner)
+      boxInside = inside(glm::dvec3((corner & 1) ? this->High.x : this->Low.x,
+        (corner & 2) ? this->High.y : this->Low.y, (corner & 4) ? this->High.z : this->Low.z));
+    if (boxInside)
+      return Clipping::None;
+    const std::vector<float>& points = this->Mesh.PointData;
+    std::atomic<bool> allInside(true);
+    uvvtk::ParallelFor(points.size() / 4, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end && allInside.load(std::memory_order_relaxed); ++i)
+        if (!inside(glm::dvec3(points[4 * i], points[4 * i + 1], points[4 * i + 2])))
+          allInside = false;
+    });
+    return allInside ? Clipping::None : Clipping::Sides;
   }
 
   /// Draws the tetrahedra in draw places [first, first + count) of the order with `program` (bound).
@@ -511,7 +542,7 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   options.NodeTexture = uvgl::NodesNeedTexture(impl.TransferFunction.Nodes);
   options.CellSurfaces = impl.DrawCellSurfaces;
   options.SegmentTable = impl.UseTable;
-  options.NearPlaneCuts = impl.NearPlaneMayCut(frame);
+  options.Clips = impl.ClippingOf(frame);
   options.OpaqueDepth = frame.OpaqueDepth;
   options.RayCasting = impl.RayCasting;
   vtkShaderProgram* program =

@@ -31,6 +31,15 @@
 
 struct vtkPreIntegratedTetrahedraPrograms
 {
+  /// What of the view volume may cut the mesh's faces: nothing; only its sides or far plane; or the
+  /// near plane, where rays begin (the fans then ray-cast the tetrahedra it cuts).
+  enum class Clipping
+  {
+    None,
+    Sides,
+    NearPlane
+  };
+
   struct Options
   {
     bool VertexPulling = true; // faces pulled (UV_FACES); else a geometry shader emits the fans
@@ -38,9 +47,9 @@ struct vtkPreIntegratedTetrahedraPrograms
     bool NodeTexture = false;  // more transfer-function nodes than fit in uniforms
     bool CellSurfaces = false; // a cell scalar's isosurfaces, on the faces between cells
     bool SegmentTable = false; // one table read per segment (no isosurfaces, no shading)
-    bool NearPlaneCuts = true; // some tetrahedra may cross the near plane: rays begin there (fans ray-cast them)
     bool OpaqueDepth = true;   // opaque geometry may have been drawn: its depth ends segments
     bool RayCasting = false;   // full screen, rays walk the tetrahedra (no cell surfaces; ignores the route)
+    Clipping Clips = Clipping::NearPlane;
   };
 
   static uvgl::ProgramSources Sources(const Options& options)
@@ -52,7 +61,7 @@ struct vtkPreIntegratedTetrahedraPrograms
       defines += "#define UV_CELL_SURFACES\n";
     if (options.SegmentTable)
       defines += "#define UV_SEGMENT_TABLE\n";
-    if (options.NearPlaneCuts)
+    if (options.Clips == Clipping::NearPlane)
       defines += "#define UV_NEAR_PLANE_CUTS\n";
     if (options.OpaqueDepth)
       defines += "#define UV_OPAQUE_DEPTH\n";
@@ -60,8 +69,9 @@ struct vtkPreIntegratedTetrahedraPrograms
     {
       defines += "#define UV_FACES\n#define UV_DEPTH_RAY\n";
       // A pixel's ray is affine on screen, so the faces can carry it (uvBarycentricTetrahedronLib.glsl)
-      // where no vertex can lie behind the eye: not where the near plane cuts the mesh.
-      if (!options.NearPlaneCuts)
+      // where nothing clips them: Mesa's clipper interpolates such attributes wrongly at the vertices
+      // it makes.
+      if (options.Clips == Clipping::None)
         defines += "#define UV_RAY_ATTRIBUTE\n";
     }
     uvgl::ProgramSources sources;
@@ -101,20 +111,22 @@ struct vtkPreIntegratedTetrahedraPrograms
     std::vector<Options> all;
     for (bool depth : { true, false })
       for (bool pulling : { true, false })
-        for (bool cuts : { true, false })
+        for (Clipping clips : { Clipping::NearPlane, Clipping::Sides, Clipping::None })
         {
+          if (!pulling && clips == Clipping::None)
+            continue; // the fans' sources are those of Clipping::Sides
           for (bool gradients : { false, true })
             for (bool nodeTexture : { false, true })
-              all.push_back({ pulling, gradients, nodeTexture, false, false, cuts, depth });
-          all.push_back({ pulling, false, false, true, false, cuts, depth });
-          all.push_back({ pulling, false, false, false, true, cuts, depth });
+              all.push_back({ pulling, gradients, nodeTexture, false, false, depth, false, clips });
+          all.push_back({ pulling, false, false, true, false, depth, false, clips });
+          all.push_back({ pulling, false, false, false, true, depth, false, clips });
         }
     for (bool depth : { true, false })
     {
       for (bool gradients : { false, true })
         for (bool nodeTexture : { false, true })
-          all.push_back({ true, gradients, nodeTexture, false, false, false, depth, true });
-      all.push_back({ true, false, false, false, true, false, depth, true });
+          all.push_back({ true, gradients, nodeTexture, false, false, depth, true, Clipping::Sides });
+      all.push_back({ true, false, false, false, true, depth, true, Clipping::Sides });
     }
     return all;
   }

@@ -70,14 +70,15 @@ protected:
 TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
 {
   const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
-  // 29 option sets (12 of pulled faces, 12 of fans, 5 of ray casting), with and without the opaque depth
-  EXPECT_EQ(all.size(), 58u);
+  // 35 option sets (18 of pulled faces, 12 of fans, 5 of ray casting), with and without the opaque depth
+  EXPECT_EQ(all.size(), 70u);
   for (const auto& options : all)
   {
     const std::string variant = std::string("tetrahedra program, ") +
       (options.VertexPulling ? "vertex pulling" : "geometry shader") + (options.Gradients ? ", gradients" : "") +
       (options.NodeTexture ? ", node texture" : "") + (options.CellSurfaces ? ", cell surfaces" : "") +
-      (options.SegmentTable ? ", segment table" : "") + (options.NearPlaneCuts ? ", near-plane cuts" : "") +
+      (options.SegmentTable ? ", segment table" : "") + (options.Clips == vtkPreIntegratedTetrahedraPrograms::Clipping::NearPlane ? ", near-plane cuts"
+        : options.Clips == vtkPreIntegratedTetrahedraPrograms::Clipping::Sides ? ", clipped sides" : "") +
       (options.OpaqueDepth ? ", opaque depth" : "") + (options.RayCasting ? ", ray casting" : "");
     this->ExpectLinks(vtkPreIntegratedTetrahedraPrograms::Sources(options), variant);
   }

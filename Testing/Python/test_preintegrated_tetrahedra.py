@@ -46,6 +46,21 @@ class AccuracyTests(SceneTestCase):
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         self.check(mesh, prop, camera_for(mesh), 512, 2e-5, SegmentIntegration=2)
 
+    def test_faces_far_beyond_the_viewport(self):
+        # Zoomed in from outside the mesh (the near plane cuts nothing): the faces' pixel-ray
+        # attribute, interpolated without perspective, must stay exact on triangles that reach far
+        # past the viewport (at the narrower angle, past llvmpipe's guard band, so clipped there).
+        mesh = analytic(6)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+        for angle in (2.0, 0.05):
+            camera = vtkCamera()
+            camera.SetPosition(0.31, -1.5, 0.17)
+            camera.SetFocalPoint(0.35, 0.0, 0.12)
+            camera.SetViewUp(0, 0, 1)
+            camera.SetViewAngle(angle)
+            camera.SetClippingRange(0.01, 10)
+            self.check(mesh, prop, camera, 64, 1e-5, SegmentIntegration=2)
+
     def test_segment_table_within_its_measured_error(self):
         # AUTOMATIC reads the table of whole segments where its largest error against exact
         # segments, measured when built, is within the tolerance: each segment is then off by at
