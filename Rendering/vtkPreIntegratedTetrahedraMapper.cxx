@@ -542,7 +542,8 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   options.NodeTexture = uvgl::NodesNeedTexture(impl.TransferFunction.Nodes);
   options.CellSurfaces = impl.DrawCellSurfaces;
   options.SegmentTable = impl.UseTable;
-  options.Clips = impl.ClippingOf(frame);
+  // Rays are cast only where the near plane cuts nothing, and their programs take no clipped faces.
+  options.Clips = impl.RayCasting ? vtkPreIntegratedTetrahedraPrograms::Clipping::Sides : impl.ClippingOf(frame);
   options.OpaqueDepth = frame.OpaqueDepth;
   options.RayCasting = impl.RayCasting;
   vtkShaderProgram* program =
