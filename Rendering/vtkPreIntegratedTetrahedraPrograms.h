@@ -49,7 +49,7 @@ struct vtkPreIntegratedTetrahedraPrograms
     bool SegmentTable = false; // one table read per segment (no isosurfaces, no shading)
     bool OpaqueDepth = true;   // opaque geometry may have been drawn: its depth ends segments
     bool RayCasting = false;   // full screen, rays walk the tetrahedra (no cell surfaces; ignores the route)
-    Clipping Clips = Clipping::NearPlane;
+    Clipping Clips = Clipping::NearPlane; // NearPlane: UV_NEAR_PLANE_CUTS; None: faces carry their ray
   };
 
   static uvgl::ProgramSources Sources(const Options& options)
