@@ -110,7 +110,7 @@ public:
   /// Bytes kept between sorts: none, the state below lives only while sorting.
   std::size_t GetBytes() const
   {
-    return this->Side.capacity() + this->Behind.capacity() + this->State.capacity() +
+    return this->Side.capacity() + this->State.capacity() +
       sizeof(std::uint32_t) * (this->Waiting.capacity() + this->AheadFirst.capacity() + this->AheadOf.capacity() +
                                 this->NewOrder.capacity() + this->Stack.capacity());
   }
@@ -147,19 +147,13 @@ public:
           this->Side[4 * other + j] = static_cast<std::int8_t>(-side);
         }
     });
-    this->Behind.assign(count, 0);
     this->Waiting.assign(count, 0);
     parallelFor(count, [&](std::size_t begin, std::size_t end) {
       for (std::size_t t = begin; t < end; ++t)
       {
-        std::uint8_t behind = 0, waiting = 0;
+        std::uint32_t waiting = 0;
         for (int k = 0; k < 4; ++k)
-          if (this->Side[4 * t + k] < 0) // the neighbour is behind: drawn first
-          {
-            behind |= static_cast<std::uint8_t>(1u << k);
-            ++waiting;
-          }
-        this->Behind[t] = behind;
+          waiting += this->Side[4 * t + k] < 0 ? 1 : 0; // the neighbour is behind: drawn first
         this->Waiting[t] = waiting;
       }
     });
@@ -224,7 +218,7 @@ private:
 
   void Sweep(std::vector<std::uint32_t>& order, const std::vector<std::int32_t>& neighbours)
   {
-    const std::size_t count = this->Behind.size();
+    const std::size_t count = this->Waiting.size();
     this->State.assign(count, 0);
     for (std::uint32_t t : order)
       this->State[t] = Drawn;
@@ -266,14 +260,9 @@ private:
         this->NewOrder.push_back(t);
       for (int k = 0; k < 4; ++k)
       {
+        // Only a neighbour in front of t waits for it (the face's side, decided once for both).
         const std::int32_t u = neighbours[4 * t + k];
-        if (u < 0 || (this->Behind[t] >> k & 1u))
-          continue; // no neighbour, or one behind t
-        std::uint8_t& state = this->State[static_cast<std::size_t>(u)];
-        if (state & Placed)
-          continue;
-        // t is behind u (or beside it, in u's plane: no constraint, nothing to count).
-        if (!this->FacesBehindContain(static_cast<std::size_t>(u), t, neighbours))
+        if (u < 0 || this->Side[4 * t + k] <= 0 || (this->State[static_cast<std::size_t>(u)] & Placed))
           continue;
         this->OneBehindPlaced(static_cast<std::uint32_t>(u));
       }
@@ -299,7 +288,6 @@ private:
   void Release()
   {
     std::vector<std::int8_t>().swap(this->Side);
-    std::vector<std::uint8_t>().swap(this->Behind);
     std::vector<std::uint32_t>().swap(this->Waiting);
     std::vector<std::uint32_t>().swap(this->AheadFirst);
     std::vector<std::uint32_t>().swap(this->AheadOf);
@@ -308,17 +296,7 @@ private:
     std::vector<std::uint32_t>().swap(this->Stack);
   }
 
-  /// Whether t is one of u's neighbours behind it.
-  bool FacesBehindContain(std::size_t u, std::uint32_t t, const std::vector<std::int32_t>& neighbours) const
-  {
-    for (int j = 0; j < 4; ++j)
-      if (neighbours[4 * u + j] == static_cast<std::int32_t>(t) && (this->Behind[u] >> j & 1u))
-        return true;
-    return false;
-  }
-
   std::vector<std::int8_t> Side;     // per face slot 4t + k: -1 the neighbour is behind t, 1 in front, 0 either
-  std::vector<std::uint8_t> Behind;  // per tetrahedron: bit k, the neighbour across face k is behind it
   std::vector<std::uint32_t> Waiting; // neighbours (and tetrahedra across gaps) behind it not yet placed
   std::vector<std::uint32_t> AheadFirst, AheadOf; // IndexGaps
   std::vector<std::uint8_t> State;
