@@ -203,13 +203,18 @@ public:
     const glm::dmat4 modelToEye = frame.ModelToEye(this->Mesh.Center);
     for (int corner = 0; corner < 8; ++corner)
     {
-      const glm::dvec3 p((corner & 1) ? this->High.x : this->Low.x, (corner & 2) ? this->High.y : this->Low.y,
-        (corner & 4) ? this->High.z : this->Low.z);
-      const double depth = -(modelToEye * glm::dvec4(p, 1.0)).z;
+      const double depth = -(modelToEye * glm::dvec4(this->BoundsCorner(corner), 1.0)).z;
       if (!(depth > frame.NearDepth + 1e-3 * (std::abs(frame.NearDepth) + std::abs(depth))))
         return true;
     }
     return false;
+  }
+
+  /// Corner `corner` (bits x, y, z: high or low) of the mesh's bounds, as UpdateBounds left them.
+  glm::dvec3 BoundsCorner(int corner) const
+  {
+    return glm::dvec3((corner & 1) ? this->High.x : this->Low.x, (corner & 2) ? this->High.y : this->Low.y,
+      (corner & 4) ? this->High.z : this->Low.z);
   }
 
   /// What of the view volume may cut the mesh: the near plane (NearPlaneMayCut), else its sides or
@@ -218,7 +223,7 @@ public:
   vtkPreIntegratedTetrahedraPrograms::Clipping ClippingOf(const vtkUnstructuredVolumeFrame& frame)
   {
     using Clipping = vtkPreIntegratedTetrahedraPrograms::Clipping;
-    if (this->NearPlaneMayCut(frame))
+    if (this->NearPlaneMayCut(frame)) // which updates the bounds
       return Clipping::NearPlane;
     const glm::dmat4 modelToClip = frame.ModelToClip(this->Mesh.Center);
     const auto inside = [&modelToClip](const glm::dvec3& p) {
@@ -228,8 +233,7 @@ public:
     };
     bool boxInside = true;
     for (int corner = 0; corner < 8 && boxInside; ++corner)
-      boxInside = inside(glm::dvec3((corner & 1) ? this->High.x : this->Low.x,
-        (corner & 2) ? this->High.y : this->Low.y, (corner & 4) ? this->High.z : this->Low.z));
+      boxInside = inside(this->BoundsCorner(corner));
     if (boxInside)
       return Clipping::None;
     const std::vector<float>& points = this->Mesh.PointData;

@@ -67,6 +67,15 @@ protected:
 };
 }
 
+namespace
+{
+const char* ClippingName(vtkPreIntegratedTetrahedraPrograms::Clipping clips)
+{
+  using Clipping = vtkPreIntegratedTetrahedraPrograms::Clipping;
+  return clips == Clipping::NearPlane ? ", near-plane cuts" : clips == Clipping::Sides ? ", clipped sides" : "";
+}
+}
+
 TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
 {
   const auto all = vtkPreIntegratedTetrahedraPrograms::AllOptions();
@@ -77,8 +86,7 @@ TEST_F(EmbeddedShaders, EveryPreIntegratedTetrahedraProgramLinks)
     const std::string variant = std::string("tetrahedra program, ") +
       (options.VertexPulling ? "vertex pulling" : "geometry shader") + (options.Gradients ? ", gradients" : "") +
       (options.NodeTexture ? ", node texture" : "") + (options.CellSurfaces ? ", cell surfaces" : "") +
-      (options.SegmentTable ? ", segment table" : "") + (options.Clips == vtkPreIntegratedTetrahedraPrograms::Clipping::NearPlane ? ", near-plane cuts"
-        : options.Clips == vtkPreIntegratedTetrahedraPrograms::Clipping::Sides ? ", clipped sides" : "") +
+      (options.SegmentTable ? ", segment table" : "") + ClippingName(options.Clips) +
       (options.OpaqueDepth ? ", opaque depth" : "") + (options.RayCasting ? ", ray casting" : "");
     this->ExpectLinks(vtkPreIntegratedTetrahedraPrograms::Sources(options), variant);
   }
