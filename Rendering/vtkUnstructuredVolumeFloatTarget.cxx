@@ -28,6 +28,7 @@ void vtkUnstructuredVolumeFloatTarget::Resize(
   this->TileHeight = tileHeight;
   this->SceneDepth->SetContext(window);
   this->SceneDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  this->SceneDepthIsFar = false;
   this->Color->SetContext(window);
   // A reduced image is stretched over its tile: filtered, its edge texels not wrapped around. At
   // the tile's size nearest sampling copies the image exactly.
@@ -82,6 +83,7 @@ void vtkUnstructuredVolumeFloatTarget::AttachDepth(vtkTextureObject* depth)
 
 bool vtkUnstructuredVolumeFloatTarget::CopySceneDepth(int originX, int originY)
 {
+  this->SceneDepthIsFar = false;
   if (!this->Reduced())
   {
     return uvgl::CopySceneDepth(this->SceneDepth, originX, originY, this->Width, this->Height);
@@ -97,6 +99,21 @@ bool vtkUnstructuredVolumeFloatTarget::CopySceneDepth(int originX, int originY)
   this->TileFramebuffer->RestorePreviousBindingsAndBuffers();
   this->AttachDepth(nullptr);
   return copied;
+}
+
+void vtkUnstructuredVolumeFloatTarget::ClearSceneDepth()
+{
+  if (this->SceneDepthIsFar)
+  {
+    return;
+  }
+  vtkTextureObject* attached = this->AttachedDepth;
+  this->AttachDepth(this->SceneDepth);
+  vtkOpenGLState* state = this->Context->GetState();
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  this->AttachDepth(attached);
+  this->SceneDepthIsFar = true;
 }
 
 void vtkUnstructuredVolumeFloatTarget::Bind()
@@ -163,5 +180,6 @@ void vtkUnstructuredVolumeFloatTarget::Release()
   this->NoAttributes->ReleaseGraphicsResources();
   this->Context = nullptr;
   this->AttachedDepth = nullptr;
+  this->SceneDepthIsFar = false;
   this->Width = this->Height = this->TileWidth = this->TileHeight = 0;
 }

@@ -4,7 +4,8 @@
  *
  * Every mapper integrates in float, away from VTK's 8-bit framebuffer, and blends the result into
  * the scene at the end: Resize (per frame; reallocates only on change), CopySceneDepth (the depth of
- * the opaque geometry VTK drew so far, so volumes end there), Bind / Unbind around the mapper's
+ * the opaque geometry VTK drew so far, so volumes end there; ClearSceneDepth where VTK drew none),
+ * Bind / Unbind around the mapper's
  * passes, ReadBack (KeepFloatImage) and Composite (ONE, ONE_MINUS_SRC_ALPHA over the viewport).
  * A mapper that masks finished pixels may attach its own depth texture. (OpenGL layer; not wrapped.)
  */
@@ -38,6 +39,10 @@ public:
   /// multisampled framebuffer cannot be copied from: SceneDepth is then the far plane and false is
   /// returned. Call before Bind.
   bool CopySceneDepth(int originX, int originY);
+  /// Sets SceneDepth to the far plane, for a frame in which nothing was drawn before the volumes:
+  /// a clear instead of the copy, which CPU rasterisers convert pixel by pixel. Only where SceneDepth
+  /// holds something else (a copy, or new storage). The target must be bound; its depth writes on.
+  void ClearSceneDepth();
 
   /// Saves VTK's framebuffer bindings, binds the target (one draw buffer) and sets the viewport.
   void Bind();
@@ -73,6 +78,7 @@ private:
   vtkNew<vtkOpenGLVertexArrayObject> NoAttributes;
   vtkOpenGLRenderWindow* Context = nullptr;
   vtkTextureObject* AttachedDepth = nullptr;
+  bool SceneDepthIsFar = false; // SceneDepth holds the far plane everywhere (ClearSceneDepth)
   int Width = 0, Height = 0, TileWidth = 0, TileHeight = 0;
 };
 

@@ -219,7 +219,7 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
 {
   vtkUnstructuredVolumeFloatTarget& target = this->Base->Target;
   target.Resize(frame.Window, frame.Width, frame.Height, frame.TileWidth, frame.TileHeight);
-  if (!target.CopySceneDepth(frame.OriginX, frame.OriginY) && !this->Base->WarnedMultisample)
+  if (frame.OpaqueDepth && !target.CopySceneDepth(frame.OriginX, frame.OriginY) && !this->Base->WarnedMultisample)
   {
     vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
     this->Base->WarnedMultisample = true;
@@ -245,6 +245,12 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   target.Clear();
+  if (!frame.OpaqueDepth)
+  {
+    state->vtkglDepthMask(GL_TRUE);
+    target.ClearSceneDepth(); // nothing drawn before the volumes: no copy to pay for
+    state->vtkglDepthMask(GL_FALSE);
+  }
   this->CheckGLErrors("binding and clearing the float target");
   const bool drawn = this->Draw(frame, target);
   if (drawn && this->KeepFloatImage)

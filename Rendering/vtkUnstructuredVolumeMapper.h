@@ -18,7 +18,8 @@
  *   2. Prepare: the mapper's CPU work (mesh, transfer function, visibility, order); false means
  *      nothing to draw, after the mapper reported any error;
  *   3. Upload: GPU resources brought to the versions Prepare produced;
- *   4. Draw: the mapper's passes into the bound float target, which the base cleared;
+ *   4. Draw: the mapper's passes into the bound float target, which the base cleared, with the
+ *      scene's depth copied beside it (the far plane where no prop may have drawn any);
  *   5. read back (KeepFloatImage), blend into the scene, check for a GL error.
  * Each subclass implements those three steps, ReleaseMapperGraphics and GetMeshMemoryInBytes, and
  * calls CheckGLErrors after each of its passes (the GL-error debug mode, SetGLErrorChecks).

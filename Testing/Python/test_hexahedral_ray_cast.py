@@ -11,7 +11,7 @@ import shared_data  # noqa: E402
 import stress  # noqa: E402  (its generated degenerate meshes and placements)
 import uvrender  # noqa: E402
 from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic, analytic_hexahedra, as_polyhedra,  # noqa: E402
-                      camera_for, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
+                      camera_for, check_geometry_shown_later, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
                       largest_difference,
                       load_shared, plane_scene_setup, property_from_nodes, reference, rmse, thin_shell_property,
                       transparent_property)
@@ -241,6 +241,13 @@ class MixedCellTests(SceneTestCase):
         image = scene.render()
         self.assertEqual((scene.events.errors, scene.events.warnings), (0, 1))
         self.assertEqual(rmse(image, without)[1], 0.0)
+
+
+class OpaqueGeometryTests(SceneTestCase):
+    def test_geometry_shown_later_cuts_the_volume_and_hidden_again_does_not(self):
+        # The traversal reads the scene's depth every frame: copied where a prop may have drawn some,
+        # cleared to the far plane where none did (after a copy, too).
+        check_geometry_shown_later(self, mapper_class=vtkHexahedralRayCastMapper)
 
 
 class IsosurfaceTests(SceneTestCase):
