@@ -60,6 +60,17 @@ uniform mat4 clipToEye;
 uniform vec2 viewportSize;
 #endif
 
+#ifdef UV_OPAQUE_DEPTH
+/// The eye depth (-z) of the opaque geometry in this fragment's pixel (the far plane where none).
+float OpaqueEyeDepth()
+{
+  vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
+  float depth = texelFetch(opaqueDepth, ivec2(gl_FragCoord.xy), 0).r;
+  vec4 opaque = clipToEye * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+  return -opaque.z / opaque.w;
+}
+#endif
+
 //UV::TransferFunction
 
 //UV::Phong
@@ -126,6 +137,11 @@ void main()
 #ifdef UV_NEAR_PLANE_CUTS
   // Only compiled in when the near plane cuts the mesh's bounds: rays begin there.
   entry = max(entry, nearDepth - faceDepth);
+#endif
+#ifdef UV_OPAQUE_DEPTH
+  // Opaque geometry ends the ray: the exit moves up to it, and the scalars, length and gradients
+  // below follow from the moved exit. (A segment wholly behind it is discarded just below.)
+  exit = min(exit, OpaqueEyeDepth() - faceDepth);
 #endif
   if (!(entry < exit))
   {
@@ -217,13 +233,10 @@ void main()
   segmentLength = distance(frontPoint, backPoint);
 #endif
 
-#ifdef UV_OPAQUE_DEPTH
+#if defined(UV_OPAQUE_DEPTH) && !defined(UV_FACES)
   // Opaque geometry: nothing behind it; a segment it cuts ends there. (Only compiled in where the
   // scene may have drawn some: the read and unprojection are a large share of a cheap fragment.)
-  vec2 ndc = gl_FragCoord.xy / viewportSize * 2.0 - 1.0;
-  float depth = texelFetch(opaqueDepth, ivec2(gl_FragCoord.xy), 0).r;
-  vec4 opaque = clipToEye * vec4(ndc, 2.0 * depth - 1.0, 1.0);
-  float opaqueZ = opaque.z / opaque.w;
+  float opaqueZ = -OpaqueEyeDepth();
   if (frontPoint.z <= opaqueZ)
   {
     discard;

@@ -11,7 +11,7 @@ from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, Tetra
                       finite_image, inside_camera, inside_out, mean_cell_values, plate_and_block, reference,
                       rmse, spike_property)
 
-from unstructuredvolume import vtkAnalyticMeshSource, vtkHexahedraToTetrahedra  # noqa: E402
+from unstructuredvolume import vtkAnalyticMeshSource, vtkHexahedraToTetrahedra, vtkHexahedralRayCastMapper  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdList, vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
@@ -329,6 +329,42 @@ class RayCastingTests(SceneTestCase):
 class OpaqueGeometryTests(SceneTestCase):
     def test_geometry_shown_later_cuts_the_volume_and_hidden_again_does_not(self):
         check_geometry_shown_later(self)
+
+    def test_segments_cut_by_a_sphere_against_the_hexahedral_walk(self):
+        # An opaque sphere inside the mesh ends the rays; the projected segments are cut where it
+        # lies. The hexahedral mapper's walk cuts its rays there by its own code: both exact, no
+        # early stop. Measured 8.3e-6 RMSE (silhouette pixels of the sphere differ most); a cut
+        # moved by 0.01 in eye depth gives 6.6e-4.
+        mesh = analytic(8)
+        prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
+
+        def sphere_actor():
+            sphere = vtkSphereSource()
+            sphere.SetRadius(0.45)
+            sphere.SetCenter(0.3, -0.2, 0.2)
+            sphere.SetThetaResolution(48)
+            sphere.SetPhiResolution(48)
+            sphere_mapper = vtkPolyDataMapper()
+            sphere_mapper.SetInputConnection(sphere.GetOutputPort())
+            actor = vtkActor()
+            actor.SetMapper(sphere_mapper)
+            return actor
+
+        for parallel in (False, True):
+            with self.subTest(parallel=parallel):
+                camera = camera_for(mesh, parallel=parallel)
+                alone = copy_image(Scene(mesh, prop, camera, 128, SegmentIntegration=2, RenderMode=0).render())
+                projected = Scene(mesh, prop, camera, 128, (sphere_actor(),), SegmentIntegration=2, RenderMode=0,
+                                  OpacityThreshold=1.0)
+                image = copy_image(projected.render())
+                walked = Scene(mesh, prop, camera, 128, (sphere_actor(),), mapper_class=vtkHexahedralRayCastMapper,
+                               OpacityThreshold=1.0).render()
+                error, worst = rmse(image, walked)
+                print(f"\n  parallel {parallel}: RMSE {error:.3g}, max {worst:.3g}", end="")
+                self.assertGreater(rmse(image, alone)[0], 0.01)  # the sphere hides what lies behind it
+                self.assertLess(error, 3e-5)
+                self.assertFalse(projected.mapper.GetUsedRayCasting())
+                self.assertEqual(projected.events.errors, 0)
 
 
 class HostMemoryTests(SceneTestCase):
