@@ -10,10 +10,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-vtkUnstructuredVolumeFloatTarget::vtkUnstructuredVolumeFloatTarget()
-  : DepthFormat(vtkTextureObject::Float32)
-{
-}
+vtkUnstructuredVolumeFloatTarget::vtkUnstructuredVolumeFloatTarget() = default;
 
 vtkUnstructuredVolumeFloatTarget::~vtkUnstructuredVolumeFloatTarget() = default;
 
@@ -30,7 +27,8 @@ void vtkUnstructuredVolumeFloatTarget::Resize(
   this->TileWidth = tileWidth;
   this->TileHeight = tileHeight;
   this->SceneDepth->SetContext(window);
-  this->TileDepth->SetContext(window); // allocated only for a reduced image
+  this->SceneDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  this->SceneDepthIsFar = false;
   this->Color->SetContext(window);
   // A reduced image is stretched over its tile: filtered, its edge texels not wrapped around. At
   // the tile's size nearest sampling copies the image exactly.
@@ -40,9 +38,10 @@ void vtkUnstructuredVolumeFloatTarget::Resize(
   this->Color->SetWrapS(vtkTextureObject::ClampToEdge);
   this->Color->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
-  this->AllocateDepths();
   if (this->Reduced())
   {
+    this->TileDepth->SetContext(window);
+    this->TileDepth->AllocateDepth(tileWidth, tileHeight, vtkTextureObject::Float32);
     this->TileFramebuffer->SetContext(window);
     this->TileFramebuffer->SaveCurrentBindingsAndBuffers();
     this->TileFramebuffer->Bind();
@@ -82,25 +81,8 @@ void vtkUnstructuredVolumeFloatTarget::AttachDepth(vtkTextureObject* depth)
   this->AttachedDepth = depth;
 }
 
-/// SceneDepth, and TileDepth where the image is reduced, in DepthFormat; neither holds the far plane yet.
-void vtkUnstructuredVolumeFloatTarget::AllocateDepths()
-{
-  this->SceneDepth->AllocateDepth(this->Width, this->Height, this->DepthFormat);
-  if (this->Reduced())
-  {
-    this->TileDepth->AllocateDepth(this->TileWidth, this->TileHeight, this->DepthFormat);
-  }
-  this->SceneDepthIsFar = false;
-}
-
 bool vtkUnstructuredVolumeFloatTarget::CopySceneDepth(int originX, int originY)
 {
-  const int format = uvgl::ReadFramebufferDepthFormat();
-  if (format != this->DepthFormat)
-  {
-    this->DepthFormat = format;
-    this->AllocateDepths();
-  }
   this->SceneDepthIsFar = false;
   if (!this->Reduced())
   {

@@ -35,9 +35,9 @@ public:
   /// Attaches `depth` (a depth texture of the target's size) to the framebuffer, or detaches with null.
   void AttachDepth(vtkTextureObject* depth);
 
-  /// Copies the depth of VTK's current framebuffer at (originX, originY) into SceneDepth, which
-  /// takes that depth buffer's format (reallocated when it changes). A multisampled framebuffer
-  /// cannot be copied from: SceneDepth is then the far plane and false is returned. Call before Bind.
+  /// Copies the depth of VTK's current framebuffer at (originX, originY) into SceneDepth. A
+  /// multisampled framebuffer cannot be copied from: SceneDepth is then the far plane and false is
+  /// returned. Call before Bind.
   bool CopySceneDepth(int originX, int originY);
   /// Sets SceneDepth to the far plane, for a frame in which nothing was drawn before the volumes:
   /// a clear instead of the copy, which CPU rasterisers convert pixel by pixel. Only where SceneDepth
@@ -69,7 +69,6 @@ private:
   void operator=(const vtkUnstructuredVolumeFloatTarget&) = delete;
 
   bool Reduced() const { return this->TileWidth != this->Width || this->TileHeight != this->Height; }
-  void AllocateDepths();
 
   vtkNew<vtkTextureObject> Color, SceneDepth;
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
@@ -80,7 +79,6 @@ private:
   vtkOpenGLRenderWindow* Context = nullptr;
   vtkTextureObject* AttachedDepth = nullptr;
   bool SceneDepthIsFar = false; // SceneDepth holds the far plane everywhere (ClearSceneDepth)
-  int DepthFormat; // of SceneDepth and TileDepth: the scene's depth buffer's (vtkTextureObject's enum)
   int Width = 0, Height = 0, TileWidth = 0, TileHeight = 0;
 };
 

@@ -119,35 +119,6 @@ inline void ReadFloatImage(vtkOpenGLFramebufferObject* framebuffer, unsigned int
   image->GetPointData()->GetScalars()->Modified();
 }
 
-/// The vtkTextureObject depth format (Float32, Fixed16, Fixed24, Fixed32) of the bound read
-/// framebuffer's depth buffer: a copy into a texture of that format needs no conversion, which CPU
-/// rasterisers would make pixel by pixel. Float32 where there is none or it is of another kind, and
-/// for a multisampled one (CopySceneDepth then fills in the far plane as Float32).
-inline int ReadFramebufferDepthFormat()
-{
-  GLint sampleBuffers = 0;
-  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
-  if (sampleBuffers != 0)
-    return vtkTextureObject::Float32;
-  GLint binding = 0;
-  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &binding);
-  const GLenum attachment = binding != 0 ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
-  GLint objectType = GL_NONE;
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &objectType);
-  if (objectType == GL_NONE)
-    return vtkTextureObject::Float32;
-  GLint componentType = GL_NONE, bits = 0;
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
-  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
-  if (componentType != GL_UNSIGNED_NORMALIZED)
-    return vtkTextureObject::Float32;
-  return bits == 16 ? vtkTextureObject::Fixed16
-                    : (bits == 24 ? vtkTextureObject::Fixed24
-                                  : (bits == 32 ? vtkTextureObject::Fixed32 : vtkTextureObject::Float32));
-}
-
 /// Copies the depth of what VTK drew so far (opaque geometry) from the current framebuffer's
 /// viewport into `depth`. A multisampled framebuffer cannot be copied from directly: `depth` is then
 /// filled with the far plane and false returned.
