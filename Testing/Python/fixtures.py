@@ -474,6 +474,23 @@ def copy_image(image):
     return copy
 
 
+def opaque_sphere(radius, center=(0.0, 0.0, 0.0), resolution=8, color=None):
+    """An opaque sphere actor (vtkSphereSource; resolution 8 is its default), for scenes whose geometry
+    ends the volume's rays."""
+    sphere = vtkSphereSource()
+    sphere.SetRadius(radius)
+    sphere.SetCenter(*center)
+    sphere.SetThetaResolution(resolution)
+    sphere.SetPhiResolution(resolution)
+    sphere_mapper = vtkPolyDataMapper()
+    sphere_mapper.SetInputConnection(sphere.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(sphere_mapper)
+    if color is not None:
+        actor.GetProperty().SetColor(*color)
+    return actor
+
+
 def check_geometry_shown_later(test, **settings):
     """A scene with nothing opaque in it does not read the depth buffer (the mapper's `settings`);
     the same mapper must read it again the frame a prop is shown, and a hidden one changes nothing."""
@@ -481,20 +498,11 @@ def check_geometry_shown_later(test, **settings):
     prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
     camera = camera_for(mesh)
 
-    def sphere_actor():
-        sphere = vtkSphereSource()
-        sphere.SetRadius(0.4)
-        sphere_mapper = vtkPolyDataMapper()
-        sphere_mapper.SetInputConnection(sphere.GetOutputPort())
-        actor = vtkActor()
-        actor.SetMapper(sphere_mapper)
-        return actor
-
-    hidden = sphere_actor()
+    hidden = opaque_sphere(0.4)
     hidden.VisibilityOff()
     alone = copy_image(Scene(mesh, prop, camera, 96, **settings).render())
     # Rendered before the scene under test, so that nothing runs between its frames below.
-    expected = copy_image(Scene(mesh, prop, camera, 96, (sphere_actor(),), **settings).render())
+    expected = copy_image(Scene(mesh, prop, camera, 96, (opaque_sphere(0.4),), **settings).render())
     scene = Scene(mesh, prop, camera, 96, (hidden,), **settings)
     test.assertLess(rmse(scene.render(), alone)[1], 1e-6)
     hidden.VisibilityOn()

@@ -10,7 +10,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
                       analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
-                      covered_colour_error, finite_image, inside_camera, plane_scene_setup, reference, rmse,
+                      covered_colour_error, finite_image, inside_camera, opaque_sphere, plane_scene_setup, reference, rmse,
                       spike_property, thin_shell_property, transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
@@ -18,8 +18,6 @@ from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper
 from vtkmodules.vtkCommonCore import vtkDoubleArray  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkCamera  # noqa: E402
-from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper  # noqa: E402
 
 SHELLS, CELL_PROJECTION = vtkBarycentricShellMapper.SHELLS, vtkBarycentricShellMapper.CELL_PROJECTION
 VERTEX, CELL = vtkBarycentricShellMapper.VERTEX_GRADIENTS, vtkBarycentricShellMapper.CELL_GRADIENTS
@@ -404,16 +402,7 @@ class ShellBaselineTests(BaselineTestCase):
         prop.SetDiffuse(0.7)
         prop.SetSpecular(0.4)
         prop.SetSpecularPower(20)
-        sphere = vtkSphereSource()
-        sphere.SetRadius(0.45)
-        sphere.SetCenter(0.4, -0.4, 0.3)
-        sphere.SetThetaResolution(32)
-        sphere.SetPhiResolution(32)
-        sphere_mapper = vtkPolyDataMapper()
-        sphere_mapper.SetInputConnection(sphere.GetOutputPort())
-        actor = vtkActor()
-        actor.SetMapper(sphere_mapper)
-        actor.GetProperty().SetColor(0.8, 0.8, 0.3)
+        actor = opaque_sphere(0.45, (0.4, -0.4, 0.3), 32, (0.8, 0.8, 0.3))
         scene = shell_scene(mesh, prop, camera_for(mesh, parallel=True), 256, (actor,))
         scene.mapper.AddIsosurface(low + 0.3 * (high - low), 0.2, 0.5, 1.0, 0.6)
         scene.mapper.AddIsosurface(low + 0.75 * (high - low), 1.0, 0.4, 0.2, 1.0)

@@ -8,15 +8,14 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
                       analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
-                      finite_image, inside_camera, inside_out, mean_cell_values, plate_and_block, reference,
-                      rmse, spike_property)
+                      finite_image, inside_camera, inside_out, mean_cell_values, opaque_sphere, plate_and_block,
+                      reference, rmse, spike_property)
 
 from unstructuredvolume import vtkAnalyticMeshSource, vtkHexahedraToTetrahedra, vtkHexahedralRayCastMapper  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdList, vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkPiecewiseFunction, vtkUnstructuredGrid  # noqa: E402
-from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkCamera  # noqa: E402
 
 
 def twisted_hexahedra_and_split():
@@ -338,27 +337,15 @@ class OpaqueGeometryTests(SceneTestCase):
         mesh = analytic(8)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
 
-        def sphere_actor():
-            sphere = vtkSphereSource()
-            sphere.SetRadius(0.45)
-            sphere.SetCenter(0.3, -0.2, 0.2)
-            sphere.SetThetaResolution(48)
-            sphere.SetPhiResolution(48)
-            sphere_mapper = vtkPolyDataMapper()
-            sphere_mapper.SetInputConnection(sphere.GetOutputPort())
-            actor = vtkActor()
-            actor.SetMapper(sphere_mapper)
-            return actor
-
         for parallel in (False, True):
             with self.subTest(parallel=parallel):
                 camera = camera_for(mesh, parallel=parallel)
                 alone = copy_image(Scene(mesh, prop, camera, 128, SegmentIntegration=2, RenderMode=0).render())
-                projected = Scene(mesh, prop, camera, 128, (sphere_actor(),), SegmentIntegration=2, RenderMode=0,
-                                  OpacityThreshold=1.0)
+                projected = Scene(mesh, prop, camera, 128, (opaque_sphere(0.45, (0.3, -0.2, 0.2), 48),),
+                                  SegmentIntegration=2, RenderMode=0, OpacityThreshold=1.0)
                 image = copy_image(projected.render())
-                walked = Scene(mesh, prop, camera, 128, (sphere_actor(),), mapper_class=vtkHexahedralRayCastMapper,
-                               OpacityThreshold=1.0).render()
+                walked = Scene(mesh, prop, camera, 128, (opaque_sphere(0.45, (0.3, -0.2, 0.2), 48),),
+                               mapper_class=vtkHexahedralRayCastMapper, OpacityThreshold=1.0).render()
                 error, worst = rmse(image, walked)
                 print(f"\n  parallel {parallel}: RMSE {error:.3g}, max {worst:.3g}", end="")
                 self.assertGreater(rmse(image, alone)[0], 0.01)  # the sphere hides what lies behind it
@@ -412,16 +399,7 @@ class BaselineTests(BaselineTestCase):
         prop.SetDiffuse(0.7)
         prop.SetSpecular(0.4)
         prop.SetSpecularPower(20)
-        sphere = vtkSphereSource()
-        sphere.SetRadius(0.45)
-        sphere.SetCenter(0.4, -0.4, 0.3)
-        sphere.SetThetaResolution(32)
-        sphere.SetPhiResolution(32)
-        sphere_mapper = vtkPolyDataMapper()
-        sphere_mapper.SetInputConnection(sphere.GetOutputPort())
-        actor = vtkActor()
-        actor.SetMapper(sphere_mapper)
-        actor.GetProperty().SetColor(0.8, 0.8, 0.3)
+        actor = opaque_sphere(0.45, (0.4, -0.4, 0.3), 32, (0.8, 0.8, 0.3))
         scene = Scene(mesh, prop, camera_for(mesh, parallel=True), 256, (actor,))
         scene.mapper.AddIsosurface(low + 0.3 * (high - low), 0.2, 0.5, 1.0, 0.6)
         scene.mapper.AddIsosurface(low + 0.75 * (high - low), 1.0, 0.4, 0.2, 1.0)

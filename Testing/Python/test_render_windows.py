@@ -7,13 +7,12 @@ import contextlib
 import unittest
 
 from fixtures import (Events, SceneTestCase, Scene, analytic, analytic_hexahedra, camera_for, copy_image, finite_image,
-                      property_from_nodes, reference, rmse, shared_window, transparent_property)
+                      opaque_sphere, property_from_nodes, reference, rmse, shared_window, transparent_property)
 from unstructuredvolume import (vtkBarycentricShellMapper, vtkHexahedralRayCastMapper,
                                 vtkPreIntegratedTetrahedraMapper, vtkUnstructuredVolumeMapper)
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow, vtkVolume
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkVolume
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
 
 # (name, mapper class, settings, mesh): the tetrahedral mappers on tetrahedra, the ray caster on
@@ -98,16 +97,7 @@ def largest_error(candidate, expected):
 
 def sphere_actor(mesh):
     """A small opaque sphere inside the mesh, so that the scene has VTK's own GPU resources too."""
-    sphere = vtkSphereSource()
-    sphere.SetRadius(0.25)
-    sphere.SetThetaResolution(12)
-    sphere.SetPhiResolution(12)
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(sphere.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetColor(0.9, 0.9, 0.2)
-    return actor
+    return opaque_sphere(0.25, resolution=12, color=(0.9, 0.9, 0.2))
 
 
 class RenderWindowTests(SceneTestCase):
