@@ -110,6 +110,8 @@ void vtkUnstructuredVolumeFloatTarget::ClearSceneDepth()
   vtkTextureObject* attached = this->AttachedDepth;
   this->AttachDepth(this->SceneDepth);
   vtkOpenGLState* state = this->Context->GetState();
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  state->vtkglDepthMask(GL_TRUE); // a clear writes only where depth writes are on
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_DEPTH_BUFFER_BIT);
   this->AttachDepth(attached);

@@ -41,7 +41,7 @@ public:
   bool CopySceneDepth(int originX, int originY);
   /// Sets SceneDepth to the far plane, for a frame in which nothing was drawn before the volumes:
   /// a clear instead of the copy, which CPU rasterisers convert pixel by pixel. Only where SceneDepth
-  /// holds something else (a copy, or new storage). The target must be bound; its depth writes on.
+  /// holds something else (a copy, or new storage). The target must be bound.
   void ClearSceneDepth();
 
   /// Saves VTK's framebuffer bindings, binds the target (one draw buffer) and sets the viewport.

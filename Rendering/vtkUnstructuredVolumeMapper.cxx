@@ -247,9 +247,7 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
   target.Clear();
   if (!frame.OpaqueDepth)
   {
-    state->vtkglDepthMask(GL_TRUE);
     target.ClearSceneDepth(); // nothing drawn before the volumes: no copy to pay for
-    state->vtkglDepthMask(GL_FALSE);
   }
   this->CheckGLErrors("binding and clearing the float target");
   const bool drawn = this->Draw(frame, target);
