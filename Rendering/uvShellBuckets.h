@@ -6,6 +6,8 @@
 #ifndef uvShellBuckets_h
 #define uvShellBuckets_h
 
+#include "uvScreenRectangle.h"
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -128,21 +130,6 @@ inline bool LayoutShells(const RangedCells& volume, const RangedCells& isosurfac
   return true;
 }
 
-/// A box in normalised device coordinates: low x, low y, high x, high y.
-using ScreenBox = glm::dvec4;
-inline ScreenBox EmptyScreenBox()
-{
-  return ScreenBox(1.0, 1.0, -1.0, -1.0);
-}
-inline ScreenBox WholeScreenBox()
-{
-  return ScreenBox(-1.0, -1.0, 1.0, 1.0);
-}
-inline ScreenBox UniteScreenBoxes(const ScreenBox& a, const ScreenBox& b)
-{
-  return ScreenBox(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.z, b.z), std::max(a.w, b.w));
-}
-
 /// The box of a tetrahedron's four points on screen (`screenPoints`: normalised device coordinates,
 /// NaN for a point not in front of the eye, which makes it the whole screen).
 inline ScreenBox TetrahedronScreenBox(
@@ -224,47 +211,6 @@ public:
     ++this->Version;
   }
 };
-
-/// A rectangle of pixels: x, y, width, height.
-using PixelRectangle = std::array<int, 4>;
-
-/// A ScreenBox as the pixels of a width x height viewport it covers, a pixel of margin around,
-/// clamped to the viewport (an empty box covers none).
-inline PixelRectangle ScreenBoxPixels(const ScreenBox& box, int width, int height)
-{
-  const int x0 = std::clamp(static_cast<int>(std::floor((box[0] + 1.0) * 0.5 * width)) - 1, 0, width);
-  const int y0 = std::clamp(static_cast<int>(std::floor((box[1] + 1.0) * 0.5 * height)) - 1, 0, height);
-  const int x1 = std::clamp(static_cast<int>(std::ceil((box[2] + 1.0) * 0.5 * width)) + 1, 0, width);
-  const int y1 = std::clamp(static_cast<int>(std::ceil((box[3] + 1.0) * 0.5 * height)) + 1, 0, height);
-  return { x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0) };
-}
-
-/// The pixels the axis-aligned box `bounds` (x0, x1, y0, y1, z0, z1, world) can cover: its corners
-/// projected by `worldToClip`. The whole viewport when a corner is not in front of the eye.
-inline PixelRectangle BoundsPixels(const double bounds[6], const glm::dmat4& worldToClip, int width, int height)
-{
-  ScreenBox box = EmptyScreenBox();
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const glm::dvec4 clip =
-      worldToClip * glm::dvec4(bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + (corner >> 2)], 1.0);
-    if (!(clip.w > 1e-12))
-    {
-      return { 0, 0, width, height };
-    }
-    const double x = clip.x / clip.w, y = clip.y / clip.w;
-    box = UniteScreenBoxes(box, ScreenBox(x, y, x, y));
-  }
-  return ScreenBoxPixels(box, width, height);
-}
-
-/// The pixels two rectangles share (zero width or height when none).
-inline PixelRectangle IntersectPixels(const PixelRectangle& a, const PixelRectangle& b)
-{
-  const int x0 = std::max(a[0], b[0]), y0 = std::max(a[1], b[1]);
-  const int x1 = std::min(a[0] + a[2], b[0] + b[2]), y1 = std::min(a[1] + a[3], b[1] + b[3]);
-  return { x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0) };
-}
 
 } // namespace uv
 

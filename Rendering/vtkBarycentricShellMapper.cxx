@@ -878,3 +878,9 @@ bool vtkBarycentricShellMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vt
   target.GetFramebuffer()->ActivateDrawBuffers(1);
   return drawn;
 }
+
+void vtkBarycentricShellMapper::GetDrawnBounds(double bounds[6])
+{
+  if (!this->Impl->Mesh.DrawnBounds(bounds))
+    this->Superclass::GetDrawnBounds(bounds);
+}

@@ -707,3 +707,12 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   }
   return drawn;
 }
+
+void vtkHexahedralRayCastMapper::GetDrawnBounds(double bounds[6])
+{
+  const double* drawn = this->Impl->Mesh.Points.Bounds;
+  if (drawn[0] <= drawn[1])
+    std::copy(drawn, drawn + 6, bounds);
+  else
+    this->Superclass::GetDrawnBounds(bounds);
+}

@@ -802,3 +802,9 @@ bool vtkPreIntegratedTetrahedraMapper::DrawByRayCasting(
   impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Visible.Drawn.size());
   return true;
 }
+
+void vtkPreIntegratedTetrahedraMapper::GetDrawnBounds(double bounds[6])
+{
+  if (!this->Impl->Mesh.DrawnBounds(bounds))
+    this->Superclass::GetDrawnBounds(bounds);
+}

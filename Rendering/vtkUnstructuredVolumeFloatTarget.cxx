@@ -38,6 +38,7 @@ void vtkUnstructuredVolumeFloatTarget::Resize(
   this->Color->SetWrapS(vtkTextureObject::ClampToEdge);
   this->Color->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
+  this->ColorIsNew = true;
   if (this->Reduced())
   {
     this->TileDepth->SetContext(window);
@@ -126,9 +127,17 @@ void vtkUnstructuredVolumeFloatTarget::Bind()
   this->Context->GetState()->vtkglViewport(0, 0, this->Width, this->Height);
 }
 
-void vtkUnstructuredVolumeFloatTarget::Clear()
+void vtkUnstructuredVolumeFloatTarget::Clear(const uv::PixelRectangle& drawn)
 {
+  const uv::PixelRectangle cleared =
+    this->ColorIsNew ? uv::PixelRectangle{ 0, 0, this->Width, this->Height } : uv::UnitePixels(drawn, this->LastDrawn);
+  this->ColorIsNew = false;
+  this->LastDrawn = drawn;
   vtkOpenGLState* state = this->Context->GetState();
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBoxSaver(state);
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglScissor(cleared[0], cleared[1], cleared[2], cleared[3]);
   state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
@@ -143,8 +152,16 @@ void vtkUnstructuredVolumeFloatTarget::Unbind()
   this->Framebuffer->RestorePreviousBindingsAndBuffers();
 }
 
-bool vtkUnstructuredVolumeFloatTarget::Composite(int originX, int originY)
+bool vtkUnstructuredVolumeFloatTarget::Composite(int originX, int originY, const uv::PixelRectangle& drawn)
 {
+  const uv::PixelRectangle tile = this->Reduced()
+    ? uv::StretchedPixels(drawn, this->Width, this->Height, this->TileWidth, this->TileHeight)
+    : drawn;
+  vtkOpenGLState* state = this->Context->GetState();
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorBoxSaver(state);
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglScissor(originX + tile[0], originY + tile[1], tile[2], tile[3]);
   return uvgl::CompositeIntoScene(
     this->Context, this->Color, this->NoAttributes, originX, originY, this->TileWidth, this->TileHeight);
 }
@@ -183,5 +200,6 @@ void vtkUnstructuredVolumeFloatTarget::Release()
   this->Context = nullptr;
   this->AttachedDepth = nullptr;
   this->SceneDepthIsFar = false;
+  this->ColorIsNew = true;
   this->Width = this->Height = this->TileWidth = this->TileHeight = 0;
 }

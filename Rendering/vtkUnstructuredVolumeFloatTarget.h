@@ -7,11 +7,14 @@
  * the opaque geometry VTK drew so far, so volumes end there; ClearSceneDepth where VTK drew none),
  * Bind / Unbind around the mapper's
  * passes, ReadBack (KeepFloatImage) and Composite (ONE, ONE_MINUS_SRC_ALPHA over the viewport).
+ * Clear and Composite take the pixels the volume can cover this frame and touch only those: the
+ * image holds nothing elsewhere, as each clear also takes back what the frame before drew.
  * A mapper that masks finished pixels may attach its own depth texture. (OpenGL layer; not wrapped.)
  */
 #ifndef vtkUnstructuredVolumeFloatTarget_h
 #define vtkUnstructuredVolumeFloatTarget_h
 
+#include "uvScreenRectangle.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
@@ -46,15 +49,18 @@ public:
 
   /// Saves VTK's framebuffer bindings, binds the target (one draw buffer) and sets the viewport.
   void Bind();
-  /// Clears the colour image to transparent black (the target must be bound).
-  void Clear();
+  /// Clears the colour image to transparent black where this frame may draw (`drawn`, image pixels)
+  /// and where the last frame may have drawn (everything after an allocation), so that the whole
+  /// image is transparent but for what this frame draws inside `drawn`. The target must be bound.
+  void Clear(const uv::PixelRectangle& drawn);
   /// The colour image into `image` (made when null); the target must be bound.
   void ReadBack(vtkSmartPointer<vtkImageData>& image);
   /// Restores the bindings Bind saved.
   void Unbind();
-  /// Blends the colour image over VTK's scene, over the tile at (originX, originY); false when the
-  /// composite shaders do not compile.
-  bool Composite(int originX, int originY);
+  /// Blends the colour image over VTK's scene, over the tile at (originX, originY), only where the
+  /// image's pixels `drawn` land (the rest is transparent); false when the composite shaders do not
+  /// compile.
+  bool Composite(int originX, int originY, const uv::PixelRectangle& drawn);
 
   vtkTextureObject* GetColor();
   vtkTextureObject* GetSceneDepth();
@@ -79,6 +85,8 @@ private:
   vtkOpenGLRenderWindow* Context = nullptr;
   vtkTextureObject* AttachedDepth = nullptr;
   bool SceneDepthIsFar = false; // SceneDepth holds the far plane everywhere (ClearSceneDepth)
+  bool ColorIsNew = true;        // Color was allocated since the last Clear: it holds anything
+  uv::PixelRectangle LastDrawn{ 0, 0, 0, 0 }; // the pixels the last Clear left to be drawn
   int Width = 0, Height = 0, TileWidth = 0, TileHeight = 0;
 };
 

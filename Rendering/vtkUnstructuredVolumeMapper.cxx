@@ -203,6 +203,11 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   this->DrawAndComposite(frame);
 }
 
+void vtkUnstructuredVolumeMapper::GetDrawnBounds(double bounds[6])
+{
+  this->GetBounds(bounds);
+}
+
 void vtkUnstructuredVolumeMapper::KeepTransparentImage(const vtkUnstructuredVolumeFrame& frame)
 {
   if (!this->KeepFloatImage)
@@ -244,7 +249,13 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
   state->vtkglDisable(GL_CULL_FACE);
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  target.Clear();
+  // Only the pixels the drawn bounds can cover are cleared and composited: the image is transparent
+  // everywhere else (the clear also takes back the last frame's pixels).
+  double bounds[6];
+  this->GetDrawnBounds(bounds);
+  const uv::PixelRectangle volumePixels =
+    uv::BoundsPixels(bounds, frame.EyeToClip * frame.WorldToEye * frame.VolumeToWorld, frame.Width, frame.Height);
+  target.Clear(volumePixels);
   if (!frame.OpaqueDepth)
   {
     target.ClearSceneDepth(); // nothing drawn before the volumes: no copy to pay for
@@ -265,7 +276,7 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
   // The composite blends over the whole viewport: no scissor or depth test left from the passes.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  if (!target.Composite(frame.OriginX, frame.OriginY))
+  if (!target.Composite(frame.OriginX, frame.OriginY, volumePixels))
   {
     vtkErrorMacro("the composite shaders failed to compile or link");
     return false;

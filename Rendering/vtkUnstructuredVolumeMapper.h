@@ -247,6 +247,10 @@ protected:
   virtual bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) = 0;
   /// Releases the mapper's own GPU resources (the base releases the float target).
   virtual void ReleaseMapperGraphics() = 0;
+  /// The model-space bounds of what the mapper draws, after Prepare: by default the input's; a
+  /// mapper that draws a subdivision of curved cells gives its points' (they can reach beyond the
+  /// nodes'). The float target's clear and composite cover only the pixels these can project to.
+  virtual void GetDrawnBounds(double bounds[6]);
 
   /// The scalar the mapper is set to render on `data`: a point or cell array by scalar mode, array
   /// access, id or name; magnitude or a component by `property`'s colour function (VTK's vector

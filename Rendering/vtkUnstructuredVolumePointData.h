@@ -25,6 +25,7 @@ struct RecentredPoints
   std::vector<float> Values;     // 4 per point: position - Center, normalised point scalar (0 for cell data)
   std::vector<float> CellValues; // for a cell scalar: its normalised value per input cell, else empty
   glm::dvec3 Center{ 0.0 };
+  double Bounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 }; // of the points, model space
   uv::ScalarNormalisation Normalisation;
 
   /// From `data`'s points (through vtkDataSet::GetPoint, so image data and rectilinear grids need no
@@ -48,7 +49,7 @@ struct RecentredPoints
           this->CellValues[c] = static_cast<float>(normalisation(scalar(c)));
       });
     }
-    double bounds[6];
+    double* bounds = this->Bounds;
     data->GetBounds(bounds);
     this->Center = glm::dvec3(bounds[0] + bounds[1], bounds[2] + bounds[3], bounds[4] + bounds[5]) * 0.5;
     this->Values.assign(4 * pointCount, 0.0f);

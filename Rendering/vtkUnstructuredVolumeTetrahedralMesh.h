@@ -87,6 +87,15 @@ public:
   std::uint64_t PositionsVersion = 0; // PointData's positions: builds and refreshes that moved points
 
   std::size_t Size() const { return this->TetrahedronPoints.size() / 4; }
+  /// The bounds of the drawn tetrahedra's points (a curved cell's subdivision can reach beyond the
+  /// input's nodes); false before the first build.
+  bool DrawnBounds(double bounds[6]) const
+  {
+    if (!this->Tetrahedra)
+      return false;
+    this->Tetrahedra->GetBounds(bounds);
+    return true;
+  }
   /// Host bytes of the copies above (not the input or its split).
   std::size_t GetBytes() const
   {

@@ -182,6 +182,57 @@ class RenderWindowTests(SceneTestCase):
                 self.assert_valid(back, 48, 48, scene.events)
                 self.assertLessEqual(largest_error(back, first), SAME_SCENE)
 
+    def test_a_volume_panned_across_the_window_leaves_nothing_behind(self):
+        # Each mapper clears and composites only the pixels its mesh's bounds can cover, and each
+        # clear takes back the pixels the last frame drew: a volume turned from one side of the
+        # window to the other, half out of it and back draws at each view what a new mapper draws,
+        # and the window shows its image whole, at the full image and at ImageSampleDistance 2.
+        # (Wholly out of the view, VTK's culler does not call the mapper.)
+        size = 48
+        turns = (7.0, -7.0, 16.0, 7.0)  # yaw from the centred view: left, right, half out, left again
+        for name, factory, settings, make_mesh in MAPPERS:
+            mesh = make_mesh()
+            prop = ramp_property(mesh)
+            cameras = []
+            for turn in turns:
+                camera = camera_for(mesh, distance=5.0)
+                camera.Yaw(turn)
+                cameras.append(camera)
+            full = [self.fresh_frame(factory, settings, mesh, prop, camera, size) for camera in cameras]
+            for image, _ in full:
+                self.assertGreater(image.GetPointData().GetScalars().GetRange(3)[1], 0.1)
+            self.assertGreater(largest_error(full[0][0], full[1][0]), 0.1)
+            for distance in (1.0, 2.0):
+                with self.subTest(mapper=name, image_sample_distance=distance):
+                    chosen = dict(settings, ImageSampleDistance=distance)
+                    alone = full if distance == 1.0 else [
+                        self.fresh_frame(factory, chosen, mesh, prop, camera, size) for camera in cameras]
+                    bare_shared_window()
+                    scene = Scene(mesh, prop, cameras[0], size, mapper=new_mapper(factory, chosen, mesh))
+                    for k, camera in enumerate(cameras):
+                        scene.renderer.SetActiveCamera(camera)
+                        image = copy_image(scene.render())
+                        image_size = size if distance == 1.0 else size // 2
+                        self.assert_valid(image, image_size, image_size, scene.events, scene.window_events)
+                        self.assertLessEqual(largest_error(image, alone[k][0]), SAME_SCENE, f"view {k}")
+                        pixels = window_pixels(scene.window, 0, 0, size, size)
+                        self.assertLessEqual(largest_error(pixels, alone[k][1]), WINDOW_PIXELS, f"view {k}'s pixels")
+                        # Over a transparent black background the window holds the full image.
+                        if distance == 1.0:
+                            self.assertLessEqual(largest_error(pixels, full[k][0]), WINDOW_PIXELS, f"view {k}")
+                        else:
+                            self.assertLessEqual(rmse(pixels, full[k][0])[0], STRETCHED_IMAGE_RMSE, f"view {k}")
+
+    def fresh_frame(self, factory, settings, mesh, prop, camera, size):
+        """(float image, window pixels) of a new mapper's first frame of the scene, alone in the window."""
+        bare_shared_window()
+        scene = Scene(mesh, prop, camera, size, mapper=new_mapper(factory, settings, mesh))
+        image = copy_image(scene.render())
+        self.assertIsNotNone(image)
+        for events in (scene.events, scene.window_events):
+            self.assertEqual(events.errors, 0, "VTK or GL errors")
+        return image, window_pixels(scene.window, 0, 0, size, size)
+
     def alone(self, factory, settings, mesh, prop, camera, size, props=()):
         """(float image, window pixels) of the scene rendered alone in the shared window."""
         bare_shared_window()
