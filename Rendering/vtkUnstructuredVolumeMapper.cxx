@@ -273,9 +273,8 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
     this->KeepTransparentImage(frame);
     return false;
   }
-  // The composite blends over the whole viewport: no scissor or depth test left from the passes.
+  // The composite blends over the volume's pixels (its own scissor): no depth test left from the passes.
   state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
   if (!target.Composite(frame.OriginX, frame.OriginY, volumePixels))
   {
     vtkErrorMacro("the composite shaders failed to compile or link");
