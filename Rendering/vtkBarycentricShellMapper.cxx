@@ -196,7 +196,7 @@ public:
   void SetCellUniforms(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& frame, bool opaqueGeometry);
   void SetIntegrationUniforms(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& frame, int isosurfaces);
   void UnbindMesh(bool opaqueGeometry);
-  void ScissorToVolume(const vtkUnstructuredVolumeFrame& frame);
+  void ScissorToVolume(const vtkUnstructuredVolumeFrame& frame, const vtkUnstructuredVolumeFloatTarget& target);
   bool DrawCellProjection(
     const vtkUnstructuredVolumeFrame& frame, const vtkBarycentricShellPrograms& programs, bool opaqueGeometry);
   struct ShellPrograms
@@ -577,12 +577,12 @@ void vtkBarycentricShellMapper::Internals::UnbindMesh(bool opaqueGeometry)
   this->Isosurfaces.Unbind();
 }
 
-/// Every later pass touches only the pixels the volume's bounds can cover (the full-screen ones too).
-void vtkBarycentricShellMapper::Internals::ScissorToVolume(const vtkUnstructuredVolumeFrame& frame)
+/// Every later pass touches only the pixels the drawn bounds can cover (the full-screen ones too):
+/// those the base cleared the target for.
+void vtkBarycentricShellMapper::Internals::ScissorToVolume(
+  const vtkUnstructuredVolumeFrame& frame, const vtkUnstructuredVolumeFloatTarget& target)
 {
-  double bounds[6];
-  frame.Volume->GetBounds(bounds);
-  this->VolumeRectangle = uv::BoundsPixels(bounds, frame.EyeToClip * frame.WorldToEye, frame.Width, frame.Height);
+  this->VolumeRectangle = target.GetDrawnPixels();
   const uv::PixelRectangle& r = this->VolumeRectangle;
   vtkOpenGLState* state = frame.Window->GetState();
   state->vtkglScissor(r[0], r[1], r[2], r[3]);
@@ -865,7 +865,7 @@ bool vtkBarycentricShellMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vt
   else
   {
     const vtkBarycentricShellPrograms programs(frame.Window, impl.Defines(opaqueGeometry), impl.Now.Pulling);
-    impl.ScissorToVolume(frame);
+    impl.ScissorToVolume(frame, target);
     drawn = impl.Now.CellProjection ? impl.DrawCellProjection(frame, programs, opaqueGeometry)
                                     : impl.DrawShells(this, frame, target, programs, opaqueGeometry);
     impl.UnbindMesh(opaqueGeometry);

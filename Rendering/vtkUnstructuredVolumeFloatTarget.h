@@ -62,6 +62,9 @@ public:
   /// compile.
   bool Composite(int originX, int originY, const uv::PixelRectangle& drawn);
 
+  /// The pixels this frame may draw, as the last Clear took them.
+  const uv::PixelRectangle& GetDrawnPixels() const { return this->LastDrawn; }
+
   vtkTextureObject* GetColor();
   vtkTextureObject* GetSceneDepth();
   vtkOpenGLFramebufferObject* GetFramebuffer();
