@@ -198,21 +198,21 @@ class RenderWindowTests(SceneTestCase):
                 camera = camera_for(mesh, distance=5.0)
                 camera.Yaw(turn)
                 cameras.append(camera)
-            full = [self.fresh_frame(factory, settings, mesh, prop, camera, size) for camera in cameras]
+            full = [self.alone(factory, settings, mesh, prop, camera, size) for camera in cameras]
             for image, _ in full:
                 self.assertGreater(image.GetPointData().GetScalars().GetRange(3)[1], 0.1)
             self.assertGreater(largest_error(full[0][0], full[1][0]), 0.1)
             for distance in (1.0, 2.0):
                 with self.subTest(mapper=name, image_sample_distance=distance):
                     chosen = dict(settings, ImageSampleDistance=distance)
-                    alone = full if distance == 1.0 else [
-                        self.fresh_frame(factory, chosen, mesh, prop, camera, size) for camera in cameras]
+                    image_size = size if distance == 1.0 else size // 2
+                    alone = full if distance == 1.0 else [self.alone(factory, chosen, mesh, prop, camera, size,
+                                                                     image_size=image_size) for camera in cameras]
                     bare_shared_window()
                     scene = Scene(mesh, prop, cameras[0], size, mapper=new_mapper(factory, chosen, mesh))
                     for k, camera in enumerate(cameras):
                         scene.renderer.SetActiveCamera(camera)
                         image = copy_image(scene.render())
-                        image_size = size if distance == 1.0 else size // 2
                         self.assert_valid(image, image_size, image_size, scene.events, scene.window_events)
                         self.assertLessEqual(largest_error(image, alone[k][0]), SAME_SCENE, f"view {k}")
                         pixels = window_pixels(scene.window, 0, 0, size, size)
@@ -223,22 +223,14 @@ class RenderWindowTests(SceneTestCase):
                         else:
                             self.assertLessEqual(rmse(pixels, full[k][0])[0], STRETCHED_IMAGE_RMSE, f"view {k}")
 
-    def fresh_frame(self, factory, settings, mesh, prop, camera, size):
-        """(float image, window pixels) of a new mapper's first frame of the scene, alone in the window."""
-        bare_shared_window()
-        scene = Scene(mesh, prop, camera, size, mapper=new_mapper(factory, settings, mesh))
-        image = copy_image(scene.render())
-        self.assertIsNotNone(image)
-        for events in (scene.events, scene.window_events):
-            self.assertEqual(events.errors, 0, "VTK or GL errors")
-        return image, window_pixels(scene.window, 0, 0, size, size)
-
-    def alone(self, factory, settings, mesh, prop, camera, size, props=()):
-        """(float image, window pixels) of the scene rendered alone in the shared window."""
+    def alone(self, factory, settings, mesh, prop, camera, size, props=(), image_size=None):
+        """(float image, window pixels) of the scene rendered alone in the shared window; the float
+        image is image_size pixels wide and high (the window's size unless given)."""
         bare_shared_window()
         scene = Scene(mesh, prop, camera, size, props, mapper=new_mapper(factory, settings, mesh))
         image = copy_image(scene.render())
-        self.assert_valid(image, size, size, scene.events, scene.window_events)
+        image_size = image_size or size
+        self.assert_valid(image, image_size, image_size, scene.events, scene.window_events)
         return image, window_pixels(scene.window, 0, 0, size, size)
 
     def viewports(self, window, cameras, volumes):
