@@ -3,6 +3,7 @@
 #include "uvLinearCellSplit.h"
 #include "uvPolyhedronSplit.h"
 #include "vtkHigherOrderSubdivision.h"
+#include "vtkUnstructuredVolumeCompatibility.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -389,23 +390,26 @@ PolyhedraSplits SplitPolyhedra(vtkDataSet* input, std::vector<vtkIdType> cells)
   result.Cells = std::move(cells);
   result.Splits.resize(result.Cells.size());
   auto grid = vtkUnstructuredGrid::SafeDownCast(input);
-  vtkIdTypeArray* faces = grid ? grid->GetFaces() : nullptr;
-  vtkIdTypeArray* locations = grid ? grid->GetFaceLocations() : nullptr;
   vtkPoints* points = grid ? grid->GetPoints() : nullptr;
   const vtkIdType numPoints = input->GetNumberOfPoints();
+  // The face streams first, one after another (VTK's face storage differs between versions; see the
+  // compatibility header), then the splits in parallel.
+  std::vector<std::vector<vtkIdType>> streams(result.Cells.size());
+  vtkNew<vtkIdList> stream;
+  for (std::size_t i = 0; grid && i < result.Cells.size(); ++i)
+  {
+    uvcompat::GetPolyhedronFaceStream(grid, result.Cells[i], stream);
+    streams[i].assign(stream->begin(), stream->end());
+  }
   vtkSMPTools::For(0, static_cast<vtkIdType>(result.Cells.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
-      const vtkIdType cell = result.Cells[i];
-      const vtkIdType location =
-        locations && cell < locations->GetNumberOfValues() ? locations->GetValue(cell) : -1;
-      if (!faces || !points || location < 0 || location >= faces->GetNumberOfValues())
+      if (!points || streams[i].empty())
       {
         result.Splits[i].Error = "it has no face stream";
         continue;
       }
-      const std::size_t length = static_cast<std::size_t>(faces->GetNumberOfValues() - location);
-      result.Splits[i] = uv::SplitPolyhedron(faces->GetPointer(location), length, numPoints,
+      result.Splits[i] = uv::SplitPolyhedron(streams[i].data(), streams[i].size(), numPoints,
         [points](vtkIdType id) {
           std::array<double, 3> p;
           points->GetPoint(id, p.data());
@@ -591,7 +595,7 @@ bool CountUnstructuredTets(vtkDataSet* input, int splitMode, std::vector<vtkIdTy
   if (!unsupported.empty())
   {
     error = std::string("Input has 3D cells that cannot be split (first type: ") +
-      vtkCellTypes::GetClassNameFromTypeId(unsupported.front()) +
+      uvcompat::CellTypeName(unsupported.front()) +
       "). Linear tetrahedra, hexahedra, voxels, wedges, pyramids, pentagonal and hexagonal prisms "
       "and polyhedra are split, and the higher-order cells vtkHigherOrderSubdivision takes are subdivided "
       "first; Lagrange and Bezier pyramids are neither.";

@@ -1,4 +1,5 @@
 #include "vtkHigherOrderSubdivision.h"
+#include "vtkUnstructuredVolumeCompatibility.h"
 
 #include "uvIsoparametricLattice.h"
 
@@ -447,7 +448,7 @@ public:
     const int type = this->Input->GetCellType(cell);
     if (type == VTK_POLYHEDRON && grid)
     {
-      grid->GetFaceStream(cell, this->Ids);
+      uvcompat::GetPolyhedronFaceStream(grid, cell, this->Ids);
     }
     else
     {
@@ -629,7 +630,7 @@ int vtkHigherOrderSubdivision::RequestData(
   if (census.Unsupported >= 0)
   {
     vtkErrorMacro("Input has 3D cells that cannot be subdivided (first type: "
-      << vtkCellTypes::GetClassNameFromTypeId(census.Unsupported)
+      << uvcompat::CellTypeName(census.Unsupported)
       << "): VTK 9.1 interpolates no Lagrange or Bezier pyramid.");
     return 0;
   }

@@ -20,7 +20,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
+#include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
 #include <cstdint>
 #include <vector>

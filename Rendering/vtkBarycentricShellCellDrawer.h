@@ -18,7 +18,7 @@
 
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
+#include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
 #include <algorithm>
 #include <cstdint>

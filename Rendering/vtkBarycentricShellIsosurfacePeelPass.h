@@ -22,7 +22,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkType.h"
-#include "vtk_glew.h"
+#include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
 #include <cstdint>
 #include <utility>

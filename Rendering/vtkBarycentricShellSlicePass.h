@@ -21,7 +21,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
 #include <array>
 #include <cstdint>

@@ -1,4 +1,5 @@
 #include "vtkLocatorRayMarcher.h"
+#include "vtkUnstructuredVolumeCompatibility.h"
 
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -816,7 +817,7 @@ void vtkLocatorRayMarcher::UpdateLocator()
   {
     double* bounds = this->CellBounds.data() + 6 * i;
     this->Input->GetCellBounds(i, bounds);
-    if (vtkCellTypes::IsLinear(static_cast<unsigned char>(this->Input->GetCellType(i))))
+    if (uvcompat::IsLinearCellType(this->Input->GetCellType(i)))
     {
       continue; // by type: no cell built for the common case
     }

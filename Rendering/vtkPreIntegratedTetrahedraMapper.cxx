@@ -30,7 +30,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
-#include "vtk_glew.h"
+#include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -8,7 +8,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
 vtkUnstructuredVolumeFloatTarget::vtkUnstructuredVolumeFloatTarget() = default;
 

@@ -10,7 +10,7 @@
 
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
-#include "vtk_glew.h"
+#include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
 #include <cstdint>
 #include <vector>

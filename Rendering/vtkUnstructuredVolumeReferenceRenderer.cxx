@@ -1,4 +1,5 @@
 #include "vtkUnstructuredVolumeReferenceRenderer.h"
+#include "vtkUnstructuredVolumeCompatibility.h"
 
 #include "uvChebyshevSeries.h"
 #include "uvCurvedCell.h"
@@ -305,7 +306,7 @@ vtkSmartPointer<vtkDataSet> PolygonalCellsAsTetrahedra(vtkDataSet* input)
       continue;
     }
     if (grid->GetCellType(c) == VTK_POLYHEDRON)
-      grid->GetFaceStream(c, ids);
+      uvcompat::GetPolyhedronFaceStream(grid, c, ids);
     else
       grid->GetCellPoints(c, ids);
     polygonal->GetCellData()->CopyData(
@@ -961,7 +962,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     vtkErrorMacro("The reference renderer takes linear tetrahedra, hexahedra, voxels, wedges, pyramids, "
                   "pentagonal and hexagonal prisms, polyhedra, quadratic and triquadratic cells, and Lagrange "
                   "and non-rational Bezier tetrahedra, hexahedra and wedges up to order 3; a cell is a "
-      << vtkCellTypes::GetClassNameFromTypeId(input->GetCellType(mesh.Unsupported)) << ".");
+      << uvcompat::CellTypeName(input->GetCellType(mesh.Unsupported)) << ".");
     return false;
   }
   if (mesh.NotThreeDimensional > 0)

@@ -20,6 +20,7 @@
 #include "vtkRectilinearGrid.h"
 #include "vtkStructuredGrid.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredVolumeCompatibility.h"
 #include "vtkUnstructuredGridReader.h"
 #include "vtkXMLStructuredGridReader.h"
 #include "vtkXMLUnstructuredGridReader.h"
@@ -728,10 +729,11 @@ TEST(HexahedraToTetrahedra, BadPolyhedraAreSkippedWithOneError)
   vtkSmartPointer<vtkUnstructuredGrid> cube = AsPolyhedra(hexes, [](vtkIdType) { return true; });
   // Cell 0: the good cube. Cell 1: the cube with a face missing. Cell 2: a face with a repeated
   // point. Cell 3: a face of two points.
-  vtkIdType numFaces;
-  const vtkIdType* faces;
-  cube->GetFaceStream(0, numFaces, faces);
-  std::vector<vtkIdType> good(faces, faces + 5 * numFaces);
+  vtkNew<vtkIdList> cubeStream;
+  uvcompat::GetPolyhedronFaceStream(cube, 0, cubeStream);
+  const vtkIdType numFaces = cubeStream->GetId(0);
+  std::vector<vtkIdType> good(cubeStream->begin() + 1, cubeStream->end());
+  ASSERT_EQ(good.size(), static_cast<std::size_t>(5 * numFaces));
   auto insert = [&](std::vector<vtkIdType> faceStream, vtkIdType count) {
     faceStream.insert(faceStream.begin(), count);
     vtkNew<vtkIdList> stream;
