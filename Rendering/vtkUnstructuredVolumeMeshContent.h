@@ -7,12 +7,14 @@
 
 #include "uvContentFingerprint.h"
 #include "vtkUnstructuredVolumeScalar.h"
+#include "vtkUnstructuredVolumeCompatibility.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkPoints.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -54,12 +56,22 @@ private:
       (static_cast<std::uint64_t>(array->GetNumberOfTuples()) << 24));
   }
 
-  /// The fingerprint of a contiguous array's values; arrays with another memory layout get a value
-  /// no other array gets, so they always count as changed.
+  /// The fingerprint of an array's values. An array of another memory layout (VTK 9.6 gives a grid of
+  /// one cell type a constant implicit array of types, which a deep copy turns into a plain one) is
+  /// fingerprinted through a contiguous copy, so equal values give equal fingerprints either way.
   std::uint64_t FingerprintOf(vtkDataArray* array)
   {
-    if (!array || !array->HasStandardMemoryLayout())
+    if (!array)
       return ++this->Unique;
+    if (!array->HasStandardMemoryLayout())
+    {
+      vtkSmartPointer<vtkDataArray> contiguous =
+        vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(array->GetDataType()));
+      contiguous->DeepCopy(array);
+      if (!contiguous->HasStandardMemoryLayout())
+        return ++this->Unique;
+      return this->FingerprintOf(contiguous);
+    }
     const std::size_t bytes = static_cast<std::size_t>(array->GetDataSize()) * array->GetDataTypeSize();
     return uv::Fingerprint(array->GetVoidPointer(0), bytes, [](std::size_t count, const auto& run) {
       vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1, [&](vtkIdType begin, vtkIdType end) {
@@ -92,12 +104,12 @@ public:
   {
     MeshChanges changed;
     auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
-    if (grid && grid->GetCells() && grid->GetCellTypesArray() && grid->GetPoints())
+    if (grid && grid->GetCells() && uvcompat::CellTypesArray(grid) && grid->GetPoints())
     {
       // Every array is looked at (no short cut), so that each is remembered.
       changed.Cells |= this->Connectivity.Update(grid->GetCells()->GetConnectivityArray());
       changed.Cells |= this->Offsets.Update(grid->GetCells()->GetOffsetsArray());
-      changed.Cells |= this->Types.Update(grid->GetCellTypesArray());
+      changed.Cells |= this->Types.Update(uvcompat::CellTypesArray(grid));
       changed.Points = this->Points.Update(grid->GetPoints()->GetData());
     }
     else
