@@ -150,8 +150,11 @@ def choose_entry(cell_types):
 
 
 def cell_type_names(cell_types):
-    from vtkmodules.vtkCommonDataModel import vtkCellTypes
-    return ", ".join(sorted(vtkCellTypes.GetClassNameFromTypeId(t).replace("vtk", "") for t in cell_types))
+    try:  # VTK 9.6 moves the query to vtkCellTypeUtilities and deprecates vtkCellTypes'
+        from vtkmodules.vtkCommonDataModel import vtkCellTypeUtilities as names
+    except ImportError:
+        from vtkmodules.vtkCommonDataModel import vtkCellTypes as names
+    return ", ".join(sorted(names.GetClassNameFromTypeId(t).replace("vtk", "") for t in cell_types))
 
 
 def array_range(information, name):
