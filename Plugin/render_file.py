@@ -55,7 +55,7 @@ def parse_arguments(argv):
                         help="where --array lives (default: points if it is a point array, else cells)")
     parser.add_argument("--representation", choices=sorted(ENTRIES),
                         help="the plugin's entry to use (default: chosen from the cell types)")
-    parser.add_argument("--preset", help="ParaView colour-map preset, e.g. \"Viridis (matplotlib)\" "
+    parser.add_argument("--preset", help="ParaView colour-map preset, e.g. \"Viridis (matplotlib)\" (\"Viridis\" from 6.0) "
                                          "(default: ParaView's default map)")
     parser.add_argument("--opacity", type=float, default=1.0,
                         help="scales the opacity ramp (default 1: 0 at the array's minimum to %g at its maximum)"
@@ -285,16 +285,30 @@ def frame_times(arguments, reader):
     return [(first, 360.0 * i / arguments.views) for i in range(arguments.views)]
 
 
+def preset_name(presets, name):
+    """The name of the preset `name` asks for in this ParaView. ParaView 6 dropped the parenthesised
+    origin from some names ("Viridis (matplotlib)" is "Viridis"), so a name that differs only by it
+    is taken too, either way round."""
+    if presets.HasPreset(name):
+        return name
+    def bare(text):
+        return text.split(" (")[0].strip().lower()
+    for index in range(presets.GetNumberOfPresets()):
+        candidate = presets.GetPresetName(index)
+        if bare(candidate) == bare(name):
+            return candidate
+    # (ApplyPreset reports success even for an unknown name.)
+    raise UserError(f"no colour-map preset named '{name}'")
+
+
 def render(arguments):
     from paraview import servermanager
     from paraview import simple
 
     if not os.path.exists(arguments.plugin):
         raise UserError(f"no plugin at {arguments.plugin} (build it, or pass --plugin)")
-    presets = servermanager.vtkSMTransferFunctionPresets.GetInstance()
-    if arguments.preset and not presets.HasPreset(arguments.preset):
-        # (ApplyPreset reports success even for an unknown name.)
-        raise UserError(f"no colour-map preset named '{arguments.preset}'")
+    if arguments.preset:
+        arguments.preset = preset_name(servermanager.vtkSMTransferFunctionPresets.GetInstance(), arguments.preset)
     simple.LoadPlugin(arguments.plugin, remote=False, ns={})
     reader, source = open_file(simple, arguments)
     frames = frame_times(arguments, reader)

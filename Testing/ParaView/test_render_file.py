@@ -171,6 +171,8 @@ check_error("bad_array", [meshes["hexahedra"], "--array", "no_such_array"],
             "render_file: error: no array named 'no_such_array'")
 check_error("missing_file", [os.path.join(output, "no_such_file.vtu")], "render_file: error: no such file")
 check_error("surface", [meshes["surface"]], "has no 3D cells")
+check_error("bad_preset", [meshes["tetrahedra"], "--preset", "No Such Map (nowhere)"],
+            "render_file: error: no colour-map preset named 'No Such Map (nowhere)'")
 
 try:
     cavity = shared_data.path("openfoam_cavity", "cavity", "case.foam")
