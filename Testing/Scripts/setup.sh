@@ -24,10 +24,12 @@ packages=(
   x11-apps imagemagick  # xwd and convert: the ParaView GUI test's screenshot
 )
 installed() { [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == *"install ok installed"* ]]; }
+lists_updated=0
+update_lists() { # once per run: the choices below read the package lists, the install needs them
+  [ "$lists_updated" -eq 1 ] || { as_root apt-get update -q; lists_updated=1; }
+}
 # ParaView's CMake package looks for the Qt it was built with: Qt 5 up to Debian 12's 5.11, Qt 6 since.
-if ! installed paraview; then
-  as_root apt-get update -q
-fi
+installed paraview || update_lists
 paraview_depends="$(apt-cache depends paraview 2>/dev/null || true)" # not piped into grep -q: pipefail
 if [[ "$paraview_depends" == *libqt6* ]]; then
   packages+=(qt6-base-dev qt6-tools-dev qt6-svg-dev qt6-5compat-dev xsltproc) # xsltproc: Qt 6 has no xmlpatterns
@@ -51,7 +53,7 @@ for package in "${packages[@]}"; do
 done
 if [ "${#missing[@]}" -gt 0 ]; then
   say "Installing ${missing[*]}"
-  as_root apt-get update -q
+  update_lists
   as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
 else
   say "Debian packages already installed"
