@@ -28,8 +28,7 @@ RAY_CAST_CELLS = {VTK_TETRA, VTK_VOXEL, VTK_HEXAHEDRON, VTK_WEDGE, VTK_PYRAMID}
 # Grids whose cells are all one type, known from their extent without fetching the data.
 GRID_CELL_TYPES = {"vtkImageData": VTK_VOXEL, "vtkUniformGrid": VTK_VOXEL, "vtkRectilinearGrid": VTK_VOXEL,
                    "vtkStructuredGrid": VTK_HEXAHEDRON}
-DEFAULT_PLUGIN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "paraview", "lib",
-                              "paraview-plugins", "UnstructuredVolume", "UnstructuredVolume.so")
+PLUGIN_NAME = "UnstructuredVolume"
 BACKGROUND = [0.1, 0.1, 0.12]
 # The opacity ramp's top at --opacity 1, reached over a tenth of the data's diagonal: a moderate
 # haze through which the far side of the mesh stays visible. A thin slab (a 2D case extruded one
@@ -69,8 +68,9 @@ def parse_arguments(argv):
                         help="ParaView's own Volume representation beside the plugin's (PNG twice as wide)")
     parser.add_argument("--output", default="render", metavar="PREFIX",
                         help="writes PREFIX_0000.png, ... (default: render)")
-    parser.add_argument("--plugin", default=DEFAULT_PLUGIN, help="the plugin's .so (default: this "
-                                                                 "repository's build/paraview build)")
+    parser.add_argument("--plugin", default=PLUGIN_NAME,
+                        help="the plugin's .so, or the name of an installed plugin (default: "
+                             f"{PLUGIN_NAME}, as `cmake --install` registers it with ParaView)")
     arguments = parser.parse_args(argv)
     if arguments.views < 1:
         parser.error("--views must be at least 1")
@@ -301,15 +301,27 @@ def preset_name(presets, name):
     raise UserError(f"no colour-map preset named '{name}'")
 
 
+def load_plugin(simple, plugin):
+    """A path loads that .so; a name loads the plugin ParaView lists under it (installed)."""
+    if os.sep not in plugin:
+        try:
+            simple.LoadDistributedPlugin(plugin, remote=False, ns={})
+        except RuntimeError:
+            raise UserError(f"ParaView lists no plugin named {plugin} (run `cmake --install` of the "
+                            "plugin build, or pass --plugin with the path of its .so)") from None
+        return
+    if not os.path.exists(plugin):
+        raise UserError(f"no plugin at {plugin} (build it, or pass --plugin)")
+    simple.LoadPlugin(plugin, remote=False, ns={})
+
+
 def render(arguments):
     from paraview import servermanager
     from paraview import simple
 
-    if not os.path.exists(arguments.plugin):
-        raise UserError(f"no plugin at {arguments.plugin} (build it, or pass --plugin)")
     if arguments.preset:
         arguments.preset = preset_name(servermanager.vtkSMTransferFunctionPresets.GetInstance(), arguments.preset)
-    simple.LoadPlugin(arguments.plugin, remote=False, ns={})
+    load_plugin(simple, arguments.plugin)
     reader, source = open_file(simple, arguments)
     frames = frame_times(arguments, reader)
     if frames[0][0] is not None:

@@ -1,13 +1,18 @@
 """Run inside the ParaView GUI (paraview --script=...) by test_gui.sh: loads the plugin, shows a
 generated hexahedral mesh with "Volume (Hexahedral Ray Cast)" and writes what the GUI lists to
-$UV_GUI_OUTPUT/gui_entries.txt once the view has rendered."""
+$UV_GUI_OUTPUT/gui_entries.txt once the view has rendered. $UV_PLUGIN is the plugin's .so, or the
+name of an installed plugin, which ParaView then finds in its own plugin list."""
 import os
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
 
 out = os.environ["UV_GUI_OUTPUT"]
-LoadPlugin(os.environ["UV_PLUGIN"], remote=False, ns=globals())
+plugin = os.environ["UV_PLUGIN"]
+if os.sep in plugin:
+    LoadPlugin(plugin, remote=False, ns=globals())  # noqa: F405
+else:
+    LoadDistributedPlugin(plugin, remote=False, ns=globals())  # noqa: F405
 mesh = AnalyticMesh(Resolution=[10, 10, 10], Distortion="Twist")  # noqa: F405
 SetActiveSource(mesh)  # noqa: F405
 display = Show(mesh)  # noqa: F405

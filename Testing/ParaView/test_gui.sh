@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Starts the real ParaView GUI under Xvfb with the plugin, lets gui_script.py select the new
 # representation, waits until it has rendered, screenshots the whole screen and checks the GUI
-# listed the new entries. Usage: test_gui.sh <plugin.so> <output dir> <paraview python path>
+# listed the new entries. Usage: test_gui.sh <plugin.so, or the name of an installed plugin> <output dir>
+# <paraview python path, or "" for none> [paraview executable (default: paraview)]
 set -uo pipefail
-plugin="$1"; output="$2"; pythonpath="$3"
+plugin="$1"; output="$2"; pythonpath="$3"; executable="${4:-paraview}"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 mkdir -p "$output"
 rm -f "$output/gui_entries.txt" "$output/paraview_gui.png"
-export UV_PLUGIN="$plugin" UV_GUI_OUTPUT="$output"
+export UV_PLUGIN="$plugin" UV_GUI_OUTPUT="$output" UV_PARAVIEW="$executable"
 # Runs inside xvfb-run: DISPLAY is the virtual screen.
 inner='
-  PYTHONPATH="$0" paraview --script="$1/gui_script.py" > "$UV_GUI_OUTPUT/paraview_gui.log" 2>&1 &
+  if [ -n "$0" ]; then export PYTHONPATH="$0"; else unset PYTHONPATH; fi
+  "$UV_PARAVIEW" --script="$1/gui_script.py" > "$UV_GUI_OUTPUT/paraview_gui.log" 2>&1 &
   gui=$!
   for i in $(seq 1 120); do
     [ -s "$UV_GUI_OUTPUT/gui_entries.txt" ] && break

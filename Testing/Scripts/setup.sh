@@ -76,6 +76,15 @@ if [ -n "$UV_PARAVIEW_PYTHON_PREFIX" ] && [ ! -f "$UV_PARAVIEW_PYTHONPATH/paravi
   as_root dpkg -x "$download_dir"/python3-paraview_*.deb "$UV_PARAVIEW_PYTHON_PREFIX"
   rm -rf "$download_dir"
 fi
+# pvpython in the private copy puts the dist-packages beside its executable first, so it runs without
+# PYTHONPATH; copies of pvbatch and the GUI placed beside it do the same (tested with the installed
+# plugin). ParaView reads paraview.conf beside its executable up to 5.11: linked after the install.
+if [ -n "$UV_PARAVIEW_PYTHON_PREFIX" ]; then
+  for executable in pvbatch paraview; do
+    cmp -s "$(command -v $executable)" "$UV_PARAVIEW_PYTHON_PREFIX/usr/bin/$executable" ||
+      as_root cp -L "$(command -v $executable)" "$UV_PARAVIEW_PYTHON_PREFIX/usr/bin/$executable"
+  done
+fi
 # ParaView's CMake package, of whichever version the distribution has.
 paraview_cmake="$(ls -d /usr/lib/*/cmake/paraview-* 2>/dev/null | sort -V | tail -1)"
 link_missing() { # relative paths under /usr, on standard input
@@ -122,5 +131,18 @@ else
   say "ParaView not found: skipping the plugin build"
 fi
 
+# Installed as a user would: the Python package where VTK's Python finds it, the plugin in ParaView's
+# plugin folder and listed in its paraview.conf (CMakeLists.txt, Plugin/RegisterPlugin.cmake).
+say "Installing both builds (cmake --install)"
+as_root cmake --install "$UV_BUILD/vtk" >"$UV_BUILD/vtk-install.log"
+if [ -n "$paraview_cmake" ]; then
+  as_root cmake --install "$UV_BUILD/paraview" >"$UV_BUILD/paraview-install.log"
+  if [ -n "$UV_PARAVIEW_PYTHON_PREFIX" ] && [ -f /usr/bin/paraview.conf ]; then
+    as_root ln -sf /usr/bin/paraview.conf "$UV_PARAVIEW_PYTHON_PREFIX/usr/bin/paraview.conf"
+  fi
+fi
+
 export UV_PYTHONPATH="$UV_BUILD/vtk/lib/python3/dist-packages"
-export UV_PLUGIN="$UV_BUILD/paraview/lib/paraview-plugins/UnstructuredVolume/UnstructuredVolume.so"
+UV_PLUGIN="$(ls "$UV_BUILD"/paraview/lib/*/paraview-*/plugins/UnstructuredVolume/UnstructuredVolume.so \
+  "$UV_BUILD"/paraview/lib/paraview-*/plugins/UnstructuredVolume/UnstructuredVolume.so 2>/dev/null | head -1 || true)"
+export UV_PLUGIN
