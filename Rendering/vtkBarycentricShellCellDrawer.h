@@ -15,6 +15,7 @@
 
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeIndexBuffer.h"
+#include "vtkUnstructuredVolumeOpenGL.h"
 
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
@@ -44,8 +45,7 @@ public:
     list.Bind(program, "cellList");
     if (!this->Pulling)
     {
-      program->SetUniformi("listOffset", static_cast<int>(first));
-      glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+      uvgl::DrawItemsInChunks(program, "listOffset", GL_POINTS, count, 1, first);
     }
     else
     {

@@ -301,7 +301,11 @@ public:
       program->SetUniformi("firstPeel", firstPeel ? 1 : 0);
       SetMatrix(program, "modelToClip", pass.ModelToClip);
       pass.SetRayUniforms(program);
-      entered = DrawCountingSamples(pass.NoAttributes, boundaryCount) > 0;
+      pass.NoAttributes->Bind();
+      entered = uvgl::SamplesPassed([&] {
+        uvgl::DrawItemsInChunks(program, "faceOffset", GL_TRIANGLES, boundaryCount, 6);
+      }) > 0;
+      pass.NoAttributes->Release();
       images.Exit->Deactivate();
       gpu.BoundaryFaces.Unbind();
       gpu.CellPoints.Unbind();
@@ -315,21 +319,6 @@ public:
 
 private:
   const uvgl::ProgramSources Sources = vtkHexahedralRayCastPrograms::Entry();
-
-  /// Draws the faces' triangles; returns the samples that passed (zero: no ray enters again).
-  static GLuint DrawCountingSamples(vtkOpenGLVertexArrayObject* noAttributes, std::size_t boundaryCount)
-  {
-    GLuint query = 0, samples = 0;
-    glGenQueries(1, &query);
-    noAttributes->Bind();
-    glBeginQuery(GL_SAMPLES_PASSED, query);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * boundaryCount));
-    glEndQuery(GL_SAMPLES_PASSED);
-    noAttributes->Release();
-    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
-    glDeleteQueries(1, &query);
-    return samples;
-  }
 };
 
 /// The mapper's settings the traversal reads, and where its rays start.

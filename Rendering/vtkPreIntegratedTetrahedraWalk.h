@@ -134,7 +134,7 @@ public:
       program->SetUniform4f("eyeInModel", glm::value_ptr(eye));
       target.GetNoAttributes()->Bind();
       const std::size_t faces = firstPeel ? this->Boundary.size() : this->Reentry;
-      samples = uvgl::SamplesPassed([&] { glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * faces)); });
+      samples = uvgl::SamplesPassed([&] { uvgl::DrawItemsInChunks(program, "faceOffset", GL_TRIANGLES, faces, 3); });
       target.GetNoAttributes()->Release();
       this->Exit->Deactivate();
       this->BoundaryTexture.Unbind();

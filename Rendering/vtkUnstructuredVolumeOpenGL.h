@@ -31,6 +31,8 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+#include <cstddef>
 #include <initializer_list>
 #include <string>
 #include <type_traits>
@@ -102,6 +104,23 @@ GLuint SamplesPassed(const Draw& draw)
   glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
   glDeleteQueries(1, &query);
   return samples;
+}
+
+/// Draws `items` items of `verticesPerItem` vertices each without indices (glDrawArrays, no vertex
+/// attributes: the shaders pull their data), in draws of a few thousand vertices each, setting the
+/// uniform `offsetName` to each draw's first item (counted from `firstItem`): the vertex shader's item
+/// is offset + gl_VertexID / verticesPerItem. Mesa's softpipe cuts longer non-indexed draws into
+/// pieces of 4096 vertices and starts gl_VertexID again from `first` in each.
+inline void DrawItemsInChunks(vtkShaderProgram* program, const char* offsetName, GLenum mode, std::size_t items,
+  int verticesPerItem, std::size_t firstItem = 0)
+{
+  const std::size_t perDraw = std::max<std::size_t>(1, 3072 / static_cast<std::size_t>(verticesPerItem));
+  for (std::size_t first = 0; first < items; first += perDraw)
+  {
+    const std::size_t count = std::min(perDraw, items - first);
+    program->SetUniformi(offsetName, static_cast<int>(firstItem + first));
+    glDrawArrays(mode, 0, static_cast<GLsizei>(count * verticesPerItem));
+  }
 }
 
 /// Reads the float RGBA colour attachment `attachment` of the bound framebuffer into `image` (made when

@@ -31,7 +31,7 @@ uniform vec3 volumeTextureSize;   // its points along each axis
 float ImageScalarAt(vec4 b)
 {
   vec3 coordinates = (cellTextureCoordinates * b).xyz;
-  return texture(volumeTexture, (coordinates * (volumeTextureSize - 1.0) + 0.5) / volumeTextureSize).r;
+  return textureLod(volumeTexture, (coordinates * (volumeTextureSize - 1.0) + 0.5) / volumeTextureSize, 0.0).r;
 }
 #endif
 
@@ -90,36 +90,36 @@ float FaceDepth()
 #else
 struct BarycentricRay
 {
-  vec4 face;    // coordinates at the fragment's point on the face
-  vec4 perUnit; // their change per unit of distance
-  float length; // that point's distance
+  vec4 face;      // coordinates at the fragment's point on the face
+  vec4 perUnit;   // their change per unit of distance
+  float distance; // that point's distance
 };
 
 BarycentricRay FragmentRay()
 {
   BarycentricRay ray;
   ray.face = faceCoordinates;
-  ray.length = parallelProjection == 1 ? -eyePosition.z : length(eyePosition);
-  ray.perUnit = parallelProjection == 1 ? rayDirection : rayDirection / ray.length;
+  ray.distance = parallelProjection == 1 ? -eyePosition.z : length(eyePosition);
+  ray.perUnit = parallelProjection == 1 ? rayDirection : rayDirection / ray.distance;
   return ray;
 }
 
 vec4 CoordinatesAt(BarycentricRay ray, float z)
 {
-  return ray.face + (z - ray.length) * ray.perUnit;
+  return ray.face + (z - ray.distance) * ray.perUnit;
 }
 
 /// The distances at which each coordinate reaches 0 along the ray (infinite or NaN where it does
 /// not change; the callers mask those out).
 vec4 ZeroCrossings(BarycentricRay ray)
 {
-  return ray.length - ray.face / ray.perUnit;
+  return ray.distance - ray.face / ray.perUnit;
 }
 
 /// The distance along this fragment's ray of the near clipping plane.
 float NearDistance(BarycentricRay ray)
 {
-  return parallelProjection == 1 ? nearDepth : nearDepth * ray.length / max(-eyePosition.z, 1e-30);
+  return parallelProjection == 1 ? nearDepth : nearDepth * ray.distance / max(-eyePosition.z, 1e-30);
 }
 
 /// Where the ray enters the tetrahedron: the last distance at which a coordinate growing along the

@@ -53,8 +53,15 @@ uniform float segmentTableSize;
 vec4 WholeSegment(float front, float back)
 {
 #ifdef UV_SEGMENT_TABLE
-  vec2 scalars = clamp(vec2(front, back), 0.0, 1.0);
-  return texture(segmentTable, (scalars * (segmentTableSize - 1.0) + 0.5) / segmentTableSize);
+  // Bilinear with float weights from four fetches: a texture unit's own filter may round its
+  // weights (GL leaves their precision to the implementation).
+  vec2 x = clamp(vec2(front, back), 0.0, 1.0) * (segmentTableSize - 1.0);
+  vec2 below = floor(x), f = x - below;
+  int last = int(segmentTableSize) - 1;
+  ivec2 i0 = min(ivec2(below), ivec2(last)), i1 = min(i0 + 1, ivec2(last));
+  vec4 near = mix(texelFetch(segmentTable, i0, 0), texelFetch(segmentTable, ivec2(i1.x, i0.y), 0), f.x);
+  vec4 far = mix(texelFetch(segmentTable, ivec2(i0.x, i1.y), 0), texelFetch(segmentTable, i1, 0), f.x);
+  return mix(near, far, f.y);
 #else
   return IntegrateSegment(front, back, vec3(0.0), vec3(0.0), sampleDistance, vec3(0.0, 0.0, 1.0));
 #endif
@@ -98,6 +105,16 @@ void Add(vec4 piece)
   transmittance *= 1.0 - piece.a;
 }
 
+/// Isosurface layer `layer`'s distance along the ray (3e38: none) and premultiplied, lit colour.
+float HitDistance(ivec2 pixel, int layer)
+{
+  return texelFetch(isosurfaceDistance, ivec3(pixel, layer), 0).r;
+}
+vec4 HitColour(ivec2 pixel, int layer)
+{
+  return texelFetch(isosurfaceColor, ivec3(pixel, layer), 0);
+}
+
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -132,21 +149,16 @@ void main()
   {
     discard;
   }
-  float hits[UV_MAX_LAYERS];
-  vec4 surfaces[UV_MAX_LAYERS];
-  int hitCount = 0;
+  // The layers come nearest first (depth peeling) and end in 3e38: this shell's hits are the layers
+  // from the first at or beyond its start to the last that holds one, read in place (no array is
+  // written at a per-pixel index: see uvHexahedralTraverseFS.glsl's cuts).
+  int hit = 0, hitCount = 0; // the next hit, in distance order, and the end of the hits
   for (int layer = 0; layer < isosurfaceLayers; ++layer)
   {
     float distance = texelFetch(isosurfaceDistance, ivec3(pixel, layer), 0).r;
-    // Hits before this shell were composited by an earlier one.
-    if (distance >= shellStart && distance < 1e37)
-    {
-      hits[hitCount] = distance;
-      surfaces[hitCount] = texelFetch(isosurfaceColor, ivec3(pixel, layer), 0);
-      ++hitCount;
-    }
+    hit += distance < shellStart ? 1 : 0; // composited by an earlier shell
+    hitCount += distance < 1e37 ? 1 : 0;
   }
-  int hit = 0; // the next hit, in distance order
   const vec3 zero = vec3(0.0), toEye = vec3(0.0, 0.0, 1.0); // the volume is not lit here
   float previous = slice[0].x;
   for (int k = 0; k + 1 < UV_SLICES; ++k)
@@ -158,11 +170,11 @@ void main()
     {
       // The scalar linear between the samples; cut at each hit inside the segment.
       float a = previous - 1.0, b = next - 1.0, from = 0.0;
-      for (; hit < hitCount && hits[hit] < far; ++hit)
+      for (; hit < hitCount && HitDistance(pixel, hit) < far; ++hit)
       {
-        float to = clamp((hits[hit] - near) / sampleDistance, from, 1.0);
+        float to = clamp((HitDistance(pixel, hit) - near) / sampleDistance, from, 1.0);
         Add(IntegrateSegment(mix(a, b, from), mix(a, b, to), zero, zero, (to - from) * sampleDistance, toEye));
-        Add(surfaces[hit]);
+        Add(HitColour(pixel, hit));
         from = to;
       }
       if (from == 0.0)
@@ -178,8 +190,8 @@ void main()
       float inside = previousInside ? previous - 1.0 : next - 1.0;
       if (previousInside)
         Add(PartialSegment(inside, clamp(InsideFraction(next, false), 0.0, 1.0)));
-      for (; hit < hitCount && hits[hit] < far; ++hit)
-        Add(surfaces[hit]);
+      for (; hit < hitCount && HitDistance(pixel, hit) < far; ++hit)
+        Add(HitColour(pixel, hit));
       if (nextInside)
         Add(PartialSegment(inside, clamp(InsideFraction(previous, true), 0.0, 1.0)));
     }

@@ -48,7 +48,7 @@ void main()
   for (int i = 0; i < isosurfaceCount; ++i)
   {
     float value = texelFetch(isosurfaces, ivec2(i, 1), 0).r;
-    float z = ray.length + (value - at) / slope;
+    float z = ray.distance + (value - at) / slope;
     if (z >= NearDistance(ray) && z > after && z < nearest && z <= limit &&
       SmallestCoordinate(CoordinatesAt(ray, z)) >= -insideTolerance)
     {

@@ -50,7 +50,7 @@ void main()
     }
     values[t] = mix(codes, scalars, inside);
 #else
-    values[t] = mix(codes, atFace + (z - ray.length) * slope, inside);
+    values[t] = mix(codes, atFace + (z - ray.distance) * slope, inside);
 #endif
   }
   gl_FragData[0] = values[0];

@@ -5,6 +5,7 @@
 // patch, found by the fragment shader.
 uniform isamplerBuffer boundaryFaces; // (cell, local face) per boundary face
 uniform mat4 modelToClip;
+uniform int faceOffset; // the first face of this draw (uvgl::DrawItemsInChunks)
 
 out vec3 modelPosition;
 flat out int boundaryFace;
@@ -14,7 +15,7 @@ flat out vec3 outwardNormal;
 
 void main()
 {
-  int face = gl_VertexID / 6;
+  int face = faceOffset + gl_VertexID / 6;
   int corner = gl_VertexID % 6;
   ivec4 cellFace = texelFetch(boundaryFaces, face);
   int local = cellFace.y;

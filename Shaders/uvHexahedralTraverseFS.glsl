@@ -54,7 +54,6 @@ const float gaussNodes[6] = float[6](-0.9324695142, -0.6612093865, -0.2386191861
   0.9324695142);
 const float gaussWeights[6] = float[6](0.1713244924, 0.3607615730, 0.4679139346, 0.4679139346, 0.3607615730,
   0.1713244924);
-const int maximumCuts = 32;
 const float noExit = 3.0e38; // a ray parameter beyond every other
 
 vec3 colour = vec3(0.0);
@@ -494,22 +493,23 @@ void IntegratePieceAccurate(vec4 c, float len, float u0, float u1)
     Composite(vec3(0.0), totalDepth - CubicIntegral(tau, w1));
 }
 
-// The segment's split points, ascending, and the isosurface each is on (or -1).
-float cuts[maximumCuts];
-int surfaceAt[maximumCuts];
-int cutCount = 0;
-
-void AddCut(float u, int surface)
-{
-  surfaceAt[cutCount] = surface;
-  cuts[cutCount++] = u;
-}
+// ---- The segment's cuts, one at a time along the ray
+// The segment is cut at the ends of the cubic's monotonic intervals, where it crosses an isovalue,
+// and (ACCURATE and FAST) where it crosses a transfer-function node. Inside a monotonic interval the
+// crossings come in the order of their values, so they are produced one by one from the sorted nodes
+// and the isovalues, with nothing stored: no array is written at a per-pixel index. A GPU keeps such
+// an array in slow memory, and softpipe's interpreter writes it at the index of the first pixel of
+// each 2x2 quad for all four pixels.
+vec4 cutCubic;          // c(u), u in [0, 1]
+bool cutAtNodes;        // nodes cut the segment too
+vec4 cutBounds;         // 0, the cubic's extrema inside (0, 1), 1 (cutBoundCount of them), ascending
+int cutBoundCount;
+int cutInterval;        // the monotonic interval [cutBounds[i], cutBounds[i + 1]] being walked
+float cutValue;         // the scalar at the last cut
 
 /// 0, the cubic's extrema inside (0, 1), and 1: the ends of its monotonic intervals, ascending.
-int MonotonicBounds(vec4 c, out float bounds[4])
+int MonotonicBounds(vec4 c, out vec4 bounds)
 {
-  int boundCount = 0;
-  bounds[boundCount++] = 0.0;
   float qa = 3.0 * c.w, qb = 2.0 * c.z, qc = c.y;
   float scale = abs(qa) + abs(qb) + abs(qc);
   float e0 = -1.0, e1 = -1.0;
@@ -531,94 +531,141 @@ int MonotonicBounds(vec4 c, out float bounds[4])
     }
   }
   float low = min(e0, e1), high = max(e0, e1);
-  if (low > 0.0 && low < 1.0)
-    bounds[boundCount++] = low;
-  if (high > 0.0 && high < 1.0 && high != low)
-    bounds[boundCount++] = high;
-  bounds[boundCount++] = 1.0;
-  return boundCount;
+  bool hasLow = low > 0.0 && low < 1.0;
+  bool hasHigh = high > 0.0 && high < 1.0 && high != low;
+  bounds = vec4(0.0, hasLow ? low : (hasHigh ? high : 1.0), hasLow && hasHigh ? high : 1.0, 1.0);
+  return 2 + int(hasLow) + int(hasHigh);
 }
 
-/// Cuts where the cubic, monotonic on [a, b], crosses an isovalue (one equal to the interval's far
-/// end counts there, at its near end not: once per ray) and, when `nodes`, a transfer-function node.
-void AddCrossings(vec4 c, float a, float b, bool nodes)
+/// Starts the cuts of the cubic c(u) on [0, 1] at u = 0.
+void StartCuts(vec4 c, bool nodes)
 {
-  float fa = CubicValue(c, a), fb = CubicValue(c, b);
-  float lo = min(fa, fb), hi = max(fa, fb);
-  for (int k = 0; k < isosurfaceCount && cutCount < maximumCuts; ++k)
+  cutCubic = c;
+  cutAtNodes = nodes;
+  cutBoundCount = MonotonicBounds(c, cutBounds);
+  cutInterval = 0;
+  cutValue = c.x;
+}
+
+/// Whether `v` lies beyond the last cut inside the current interval, which runs toward `to`: an
+/// isovalue equal to the interval's far end counts there (and not again at the next one's start).
+bool IsovalueAhead(float v, float to, bool rising)
+{
+  return rising ? v > cutValue && v <= to : v < cutValue && v >= to;
+}
+
+/// The next cut: its u, and whether isovalues lie there (all those equal to the returned scalar).
+/// False once the cut at u = 1 has been returned.
+bool NextCut(out float u, out float value, out bool surfaces)
+{
+  float a = cutBounds[cutInterval], b = cutBounds[cutInterval + 1];
+  float to = CubicValue(cutCubic, b);
+  bool rising = to > cutValue;
+  bool found = false;
+  value = to;
+  for (int k = 0; k < isosurfaceCount; ++k)
   {
     float v = IsoValue(k);
-    if ((v > lo && v < hi) || (v == fb && v != fa))
-      AddCut(RootInBracket(c, v, a, b), k);
-  }
-  if (!nodes)
-    return;
-  for (int k = NodesAtOrBelow(lo); k < nodeCount && NodeScalar(k) < hi && cutCount < maximumCuts; ++k)
-  {
-    if (NodeScalar(k) > lo)
-      AddCut(RootInBracket(c, NodeScalar(k), a, b), -1);
-  }
-}
-
-/// Insertion sort of the cuts: a handful of values.
-void SortCuts()
-{
-  for (int i = 1; i < cutCount; ++i)
-  {
-    float v = cuts[i];
-    int kind = surfaceAt[i];
-    int j = i - 1;
-    while (j >= 0 && cuts[j] > v)
+    if (IsovalueAhead(v, to, rising) && (!found || (rising ? v < value : v > value)))
     {
-      cuts[j + 1] = cuts[j];
-      surfaceAt[j + 1] = surfaceAt[j];
-      --j;
+      value = v;
+      found = true;
     }
-    cuts[j + 1] = v;
-    surfaceAt[j + 1] = kind;
   }
+  if (cutAtNodes)
+  {
+    // The first node beyond the last cut, strictly inside the interval.
+    int k = rising ? NodesAtOrBelow(cutValue) : NodesBelow(cutValue) - 1;
+    if (k >= 0 && k < nodeCount)
+    {
+      float v = NodeScalar(k);
+      bool inside = rising ? v < to : v > to;
+      if (inside && (!found || (rising ? v < value : v > value)))
+      {
+        value = v;
+        found = true;
+      }
+    }
+  }
+  surfaces = false;
+  for (int k = 0; k < isosurfaceCount; ++k)
+    surfaces = surfaces || (found && IsoValue(k) == value);
+  if (found)
+  {
+    u = RootInBracket(cutCubic, value, a, b);
+    cutValue = value;
+    return true;
+  }
+  // No cut is left inside the interval: its end, then the next interval.
+  u = b;
+  value = to;
+  cutValue = to;
+  ++cutInterval;
+  return cutInterval + 1 < cutBoundCount;
 }
 
-/// The split points of the cubic c(u) on [0, 1]: 0, its extrema, 1, then per monotonic interval the
-/// isovalue and (when `nodes`) node crossings.
-void FindCuts(vec4 c, bool nodes)
+/// More than the cuts a segment can have (each is a node, an isovalue or one of at most three interval
+/// ends): bounds the loops over them.
+int CutBound()
 {
-  float bounds[4];
-  int boundCount = MonotonicBounds(c, bounds);
-  cutCount = 0;
-  for (int i = 0; i < boundCount; ++i)
-    AddCut(bounds[i], -1);
-  for (int i = 0; i + 1 < boundCount; ++i)
-    AddCrossings(c, bounds[i], bounds[i + 1], nodes);
-  SortCuts();
+  return 3 * (nodeCount + isosurfaceCount + 1) + 1;
+}
+
+/// Composites, in order, the isosurfaces whose isovalue is `value`, at the segment's parameter u.
+void CompositeSurfacesAt(float value, float u)
+{
+  for (int k = 0; k < isosurfaceCount; ++k)
+    if (IsoValue(k) == value)
+      CompositeSurface(k, u);
 }
 
 /// FIXED_STEPS: constant steps over the cell (the paper's Hexa_CONST); a surface goes in before the
 /// first step whose midpoint lies beyond it.
 void IntegrateFixedSteps(vec4 c, float len)
 {
+  StartCuts(c, false);
+  float u, value;
+  bool surfaces;
+  bool more = NextCut(u, value, surfaces), pending = true;
+  int most = CutBound();
   float h = len / float(fixedSteps);
-  int next = 0;
   for (int i = 0; i < fixedSteps; ++i)
   {
     float middle = (float(i) + 0.5) / float(fixedSteps);
-    for (; next < cutCount && cuts[next] <= middle; ++next)
-      if (surfaceAt[next] >= 0)
-        CompositeSurface(surfaceAt[next], cuts[next]);
+    for (int n = 0; n < most && pending && u <= middle; ++n)
+    {
+      if (surfaces)
+        CompositeSurfacesAt(value, u);
+      pending = more;
+      if (more)
+        more = NextCut(u, value, surfaces);
+    }
     vec4 n = Evaluate(CubicValue(c, middle));
     Composite((1.0 - exp(-n.a * h)) * n.rgb, n.a * h);
   }
-  for (; next < cutCount; ++next)
-    if (surfaceAt[next] >= 0)
-      CompositeSurface(surfaceAt[next], cuts[next]);
+  for (int n = 0; n < most && pending; ++n)
+  {
+    if (surfaces)
+      CompositeSurfacesAt(value, u);
+    pending = more;
+    if (more)
+      more = NextCut(u, value, surfaces);
+  }
 }
 
-/// ACCURATE and FAST: each piece between consecutive cuts, then the surface at its far end.
+/// ACCURATE and FAST: each piece between consecutive cuts, then the surfaces at its far end.
 void IntegratePieces(vec4 c, float len)
 {
-  for (int i = 0; i + 1 < cutCount; ++i)
+  StartCuts(c, true);
+  float u0 = 0.0;
+  bool more = true;
+  int most = CutBound();
+  for (int n = 0; n < most && more; ++n)
   {
-    float u0 = cuts[i], u1 = cuts[i + 1];
+    float u1, value;
+    bool surfaces;
+    more = NextCut(u1, value, surfaces);
+    u1 = max(u1, u0);
     if (u1 > u0)
     {
       if (integrationMode == 1)
@@ -626,8 +673,9 @@ void IntegratePieces(vec4 c, float len)
       else
         IntegratePieceAccurate(c, len, u0, u1);
     }
-    if (surfaceAt[i + 1] >= 0)
-      CompositeSurface(surfaceAt[i + 1], u1);
+    if (surfaces)
+      CompositeSurfacesAt(value, u1);
+    u0 = u1;
   }
 }
 
@@ -636,9 +684,7 @@ void IntegrateCubicSegment(vec4 c, float len)
 {
   if (!(len > 0.0))
     return;
-  bool constantSteps = integrationMode == 2;
-  FindCuts(c, !constantSteps);
-  if (constantSteps)
+  if (integrationMode == 2)
     IntegrateFixedSteps(c, len);
   else
     IntegratePieces(c, len);

@@ -1,6 +1,7 @@
 //VTK::System::Dec
 // vtkPreIntegratedTetrahedraMapper, ray-casting route, entry pass: the mesh's boundary faces (3
-// vertices each, pulled from the buffer textures: gl_VertexID / 3 is the face), each widened on
+// vertices each, pulled from the buffer textures: faceOffset + gl_VertexID / 3 is the face, drawn in
+// chunks (uvgl::DrawItemsInChunks)), each widened on
 // screen by half a pixel so that every pixel whose ray may cross the face tests it exactly:
 // rasterising the face as it is would round thin faces away. Faces that turn their back on every
 // ray are culled here (for a flat face the side the eye is on is the same at every pixel). The near
@@ -11,6 +12,7 @@ uniform samplerBuffer pointData;
 uniform mat4 modelToClip;
 uniform vec2 viewportSize;
 uniform vec4 eyeInModel; // (eye, 1) in perspective, (direction of view, 0) in parallel projection
+uniform int faceOffset;  // the first face of this draw
 
 flat out int boundaryFace;
 flat out vec3 faceCorners[3];
@@ -30,7 +32,8 @@ vec2 Widened(vec2 previous, vec2 p, vec2 next, float margin)
 
 void main()
 {
-  int face = gl_VertexID / 3, vertex = gl_VertexID - 3 * face;
+  int local = gl_VertexID / 3, vertex = gl_VertexID - 3 * local;
+  int face = faceOffset + local;
   int record = texelFetch(boundaryFaces, face).r;
   int corner = record & 3;
   uvec4 ids = texelFetch(tetrahedronPoints, record >> 2);

@@ -101,9 +101,10 @@ vec4 Normalised(vec4 weights)
 }
 
 /// The face the ray leaves by, not the one it entered by: the one whose least weight (oriented) is
-/// largest, so rounding at an edge still picks a face and the walk goes on. The orientation comes
-/// from the entry face's weights (of the sign opposite to leaving), not from the volume, whose sign
-/// rounding can flip on a sliver: the walk then keeps to the signs its neighbours saw.
+/// largest, so rounding at an edge still picks a face and the walk goes on (-1 when no weight
+/// compares). The orientation comes from the entry face's weights (of the sign opposite to leaving),
+/// not from the volume, whose sign rounding can flip on a sliver: the walk then keeps to the signs
+/// its neighbours saw.
 int ExitCorner(WalkedTetrahedron t, int entered, out vec4 weights)
 {
   float orientation = dot(FaceWeights(t, entered), vec4(1.0)) > 0.0 ? -1.0 : 1.0;
@@ -122,7 +123,8 @@ int ExitCorner(WalkedTetrahedron t, int entered, out vec4 weights)
       best = k;
     }
   }
-  weights = Normalised(FaceWeights(t, best));
+  // No face at all: every weight is NaN (non-finite corners). -1, and the walk ends there.
+  weights = best >= 0 ? Normalised(FaceWeights(t, best)) : vec4(1.0 / 3.0);
   return best;
 }
 
@@ -185,6 +187,12 @@ void main()
   for (int walked = 0; walked < maximumSteps; ++walked)
   {
     int exitCorner = ExitCorner(t, enteredBy, weights);
+    if (exitCorner < 0)
+    {
+      leftAt = base + frontAt;
+      leaves = 1.0; // lost here: the next peel may pick the ray up beyond
+      break;
+    }
     float backAt = dot(weights, t.along), backScalar = dot(weights, t.scalars);
 #ifdef UV_GRADIENTS
     backGradient = GradientAt(t, weights);

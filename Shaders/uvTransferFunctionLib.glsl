@@ -48,6 +48,21 @@ int NodesAtOrBelow(float s)
   return low;
 }
 
+/// Number of nodes with scalar < s (binary search).
+int NodesBelow(float s)
+{
+  int low = 0, high = nodeCount; // the answer is in [low, high]
+  while (low < high)
+  {
+    int middle = (low + high) / 2;
+    if (NodeScalar(middle) < s)
+      low = middle + 1;
+    else
+      high = middle;
+  }
+  return low;
+}
+
 /// (r, g, b, extinction) at s, given `below` = the number of nodes <= s.
 vec4 EvaluateBetween(float s, int below)
 {
@@ -70,5 +85,13 @@ float Psi(float a, float b)
   }
   vec2 root = sqrt(vec2(a, b));
   vec2 gamma = root / (1.0 + root);
-  return texture(psiTable, (gamma * (psiTableSize - 1.0) + 0.5) / psiTableSize).r;
+  // Bilinear with float weights from four fetches: a texture unit's own filter may round its
+  // weights (GL leaves their precision to the implementation).
+  vec2 x = gamma * (psiTableSize - 1.0);
+  vec2 below = floor(x), f = x - below;
+  int last = int(psiTableSize) - 1;
+  ivec2 i0 = min(ivec2(below), ivec2(last)), i1 = min(i0 + 1, ivec2(last));
+  float near = mix(texelFetch(psiTable, i0, 0).r, texelFetch(psiTable, ivec2(i1.x, i0.y), 0).r, f.x);
+  float far = mix(texelFetch(psiTable, ivec2(i0.x, i1.y), 0).r, texelFetch(psiTable, i1, 0).r, f.x);
+  return mix(near, far, f.y);
 }
