@@ -3,6 +3,7 @@
 #include "uvIsosurfaceList.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
+#include "vtkUnstructuredVolumeOpenGL.h"
 #include "vtkUnstructuredVolumeScalar.h"
 #include "vtkUnstructuredVolumeVertexGradients.h"
 
@@ -21,6 +22,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -59,10 +61,10 @@ bool vtkUnstructuredVolumeMapper::GetGLErrorChecks()
 
 bool vtkUnstructuredVolumeMapper::ReportGLErrors(const char* pass)
 {
-  const std::string errors = TakeGLErrors();
-  if (errors.empty())
+  const std::string errors = TakeGLErrors(), messages = uvgl::TakeDriverMessages();
+  if (errors.empty() && messages.empty())
     return true;
-  vtkErrorMacro("GL error after " << pass << ": " << errors);
+  vtkErrorMacro("GL error after " << pass << ": " << (errors.empty() ? "none from glGetError" : errors) << messages);
   return false;
 }
 
@@ -192,7 +194,10 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   }
   this->UseContext(window);
   if (GLErrorChecks)
+  {
     TakeGLErrors(); // what VTK left before the volume is not this mapper's
+    uvgl::TakeDriverMessages();
+  }
   const bool uploaded = this->Upload(frame);
   this->CheckGLErrors("the upload");
   if (!uploaded)

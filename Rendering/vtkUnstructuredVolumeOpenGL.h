@@ -33,7 +33,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <initializer_list>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -104,6 +106,59 @@ GLuint SamplesPassed(const Draw& draw)
   glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
   glDeleteQueries(1, &query);
   return samples;
+}
+
+/// Whether the current context offers KHR_debug (core since OpenGL 4.3; an extension before).
+inline bool HasDriverDebugOutput()
+{
+  if (!glGetDebugMessageLog)
+    return false;
+  GLint major = 0, minor = 0, extensions = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (major > 4 || (major == 4 && minor >= 3))
+    return true;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);
+  for (GLint k = 0; k < extensions; ++k)
+  {
+    const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(k)));
+    if (name && std::strcmp(name, "GL_KHR_debug") == 0)
+      return true;
+  }
+  return false;
+}
+
+/// The driver's own messages (KHR_debug) since the last read that report a problem: errors,
+/// undefined behaviour, deprecated behaviour and portability, one per line; "" when there are none or
+/// the context lacks KHR_debug. Debug output is switched on in the context at the first read (a
+/// driver may stay silent in a context not made for debugging; Mesa does not).
+inline std::string TakeDriverMessages()
+{
+  if (!HasDriverDebugOutput())
+    return std::string();
+  if (!glIsEnabled(GL_DEBUG_OUTPUT))
+    glEnable(GL_DEBUG_OUTPUT);
+  std::ostringstream problems;
+  for (int batch = 0; batch < 64; ++batch)
+  {
+    constexpr GLsizei count = 16, size = 16 * 1024;
+    GLenum sources[count], types[count], severities[count];
+    GLuint ids[count];
+    GLsizei lengths[count];
+    std::vector<GLchar> text(size);
+    const GLuint read = glGetDebugMessageLog(count, size, sources, types, ids, severities, lengths, text.data());
+    const GLchar* message = text.data();
+    for (GLuint k = 0; k < read; message += lengths[k], ++k)
+    {
+      const GLenum type = types[k];
+      if (type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR ||
+        type == GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR || type == GL_DEBUG_TYPE_PORTABILITY)
+        problems << "\n  driver: " << message;
+    }
+    if (read < static_cast<GLuint>(count))
+      break;
+  }
+  return problems.str();
 }
 
 /// Draws `items` items of `verticesPerItem` vertices each without indices (glDrawArrays, no vertex

@@ -1,6 +1,8 @@
 // The GLSL embedded from Shaders/ compiles in VTK's OpenGL context and does what the mappers need of
-// it: every program a mapper can use links, with every define combination its options allow, and
-// the composite pass copies a premultiplied float image exactly and leaves no GL error.
+// it: every program a mapper can use links, with every define combination its options allow, each of
+// its stages as VTK composed it (version, defines, outputs) passes the Khronos reference compiler
+// (glslangValidator) for the version and profile it declares, and the composite pass copies a
+// premultiplied float image exactly and leaves no GL error.
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvBarycentricCellProjectionFS.h"
@@ -19,6 +21,7 @@
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkShader.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
@@ -26,7 +29,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -53,17 +60,71 @@ protected:
     }
   }
 
-  /// Compiles and links `sources`; the failure message names the variant.
+  /// Compiles and links `sources`, and passes its stages to the reference compiler; the failure
+  /// message names the variant.
   void ExpectLinks(const uvgl::ProgramSources& sources, const std::string& variant)
   {
     vtkShaderProgram* program = uvgl::ReadyProgram(this->Context, sources);
     EXPECT_NE(program, nullptr) << variant << " does not compile or link";
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << variant;
+    this->ExpectReferenceCompilerAccepts(program, variant);
+  }
+
+  /// Each stage of `program`, as VTK composed it, is written out for glslangValidator, which TearDown
+  /// runs once over all of a test's stages: the GLSL specification, not one driver's reading of it.
+  /// Drivers accept what the specification does not allow, and reject some of what it does; only
+  /// the first is caught here.
+  void ExpectReferenceCompilerAccepts(vtkShaderProgram* program, const std::string& variant)
+  {
+    if (!program)
+      return;
+    const std::pair<vtkShader*, const char*> stages[] = { { program->GetVertexShader(), "vert" },
+      { program->GetGeometryShader(), "geom" }, { program->GetFragmentShader(), "frag" } };
+    for (const auto& [shader, stage] : stages)
+    {
+      const std::string source = shader ? shader->GetSource() : std::string();
+      if (source.empty())
+        continue;
+      const std::filesystem::path file = this->Folder / (std::to_string(this->Stages.size()) + "." + stage);
+      std::ofstream(file) << source;
+      this->Stages.emplace_back(file.string(), variant + ", " + stage + " stage");
+    }
+  }
+
+  void TearDown() override
+  {
+    if (this->Stages.empty())
+      return;
+    std::string command = std::string(UV_GLSLANG_VALIDATOR);
+    for (const auto& stage : this->Stages)
+      command += " '" + stage.first + "'";
+    const std::filesystem::path log = this->Folder / "glslangValidator.log";
+    const int status = std::system((command + " > '" + log.string() + "' 2>&1").c_str());
+    std::stringstream output;
+    output << std::ifstream(log).rdbuf();
+    std::string failed;
+    for (const auto& stage : this->Stages)
+    {
+      const std::size_t at = output.str().find(stage.first + "\nERROR");
+      if (at != std::string::npos)
+        failed += "\n  " + stage.second + " (" + stage.first + ")";
+    }
+    EXPECT_EQ(status, 0) << "glslangValidator rejects" << failed << "\n" << output.str();
+    EXPECT_EQ(failed, "");
   }
 
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
   vtkOpenGLRenderWindow* Context = nullptr;
+  // Where each composed stage is written for the reference compiler (kept for reading after a run),
+  // one folder per test: ctest runs them side by side.
+  const std::filesystem::path Folder = [] {
+    const std::filesystem::path folder = std::filesystem::path(UV_TEST_OUTPUT) / "composed_glsl" /
+      ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::filesystem::create_directories(folder);
+    return folder;
+  }();
+  std::vector<std::pair<std::string, std::string>> Stages; // (file, variant) for the reference compiler
 };
 }
 
@@ -104,12 +165,24 @@ TEST_F(EmbeddedShaders, EveryBarycentricShellProgramLinks)
       const std::string variant = std::string("shell programs, ") +
         (pulling ? "vertex pulling" : "geometry shader") + ", options #" + std::to_string(k);
       for (const char* fragment : { uvBarycentricCellProjectionFS, uvBarycentricShellSliceFS })
-        EXPECT_NE(programs.OverCells(fragment), nullptr) << variant;
+      {
+        vtkShaderProgram* program = programs.OverCells(fragment);
+        EXPECT_NE(program, nullptr) << variant;
+        this->ExpectReferenceCompilerAccepts(program, variant);
+      }
       // Isosurfaces are always lit, by one of the two gradients.
       if (all[k].VertexGradients || all[k].CellGradients)
-        EXPECT_NE(programs.OverCells(uvBarycentricShellIsosurfaceFS), nullptr) << variant;
+      {
+        vtkShaderProgram* program = programs.OverCells(uvBarycentricShellIsosurfaceFS);
+        EXPECT_NE(program, nullptr) << variant;
+        this->ExpectReferenceCompilerAccepts(program, variant + ", isosurfaces");
+      }
       for (const char* fragment : { uvBarycentricShellBlendFS, uvOpacityMaskFS })
-        EXPECT_NE(programs.FullScreen(fragment), nullptr) << variant;
+      {
+        vtkShaderProgram* program = programs.FullScreen(fragment);
+        EXPECT_NE(program, nullptr) << variant;
+        this->ExpectReferenceCompilerAccepts(program, variant);
+      }
       EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << variant;
     }
 }
@@ -134,6 +207,7 @@ TEST_F(EmbeddedShaders, CompositePassCopiesAFloatImage)
   vtkShaderProgram* program =
     context->GetShaderCache()->ReadyShaderProgram(uvFullScreenTriangleVS, uvCompositePremultipliedFS, "");
   ASSERT_NE(program, nullptr) << "embedded shaders failed to compile or link";
+  this->ExpectReferenceCompilerAccepts(program, "composite pass");
 
   // A 2x2 premultiplied image; each quadrant of the viewport must show its texel.
   const std::vector<float> texels = { 0.25f, 0.5f, 0.125f, 0.5f, 1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 0, 0 };
@@ -167,4 +241,23 @@ TEST_F(EmbeddedShaders, CompositePassCopiesAFloatImage)
   EXPECT_EQ(pixel(1, 6, 1), 255); // upper-left texel: green
   EXPECT_EQ(pixel(6, 6, 0) + pixel(6, 6, 1) + pixel(6, 6, 2), 0);
   image->ReleaseGraphicsResources(context);
+}
+
+TEST_F(EmbeddedShaders, DriverMessagesReportProblemsOnly)
+{
+  // The GL-check mode's second source: the driver's debug output, where the context offers it.
+  if (!uvgl::HasDriverDebugOutput())
+    GTEST_SKIP() << "this context has no KHR_debug";
+  uvgl::TakeDriverMessages(); // switches debug output on, drains what came before
+  glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_PERFORMANCE, 1, GL_DEBUG_SEVERITY_LOW, -1,
+    "uv: a performance note");
+  EXPECT_EQ(uvgl::TakeDriverMessages(), "");
+  glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR, 2, GL_DEBUG_SEVERITY_HIGH, -1,
+    "uv: undefined behaviour");
+  EXPECT_NE(uvgl::TakeDriverMessages().find("uv: undefined behaviour"), std::string::npos);
+  EXPECT_EQ(uvgl::TakeDriverMessages(), "") << "a message is reported once";
+  // A real API error reaches the log as well as glGetError.
+  glBindTexture(0x1234, 0);
+  EXPECT_NE(uvgl::TakeDriverMessages(), "");
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
 }

@@ -20,6 +20,7 @@ packages=(
   libvtk9-dev python3-vtk9 python3-dev
   paraview paraview-dev mpi-default-bin
   libglm-dev googletest libgtest-dev
+  glslang-tools  # glslangValidator: the composed GLSL against the specification
   xvfb xauth
   x11-apps imagemagick  # xwd and convert: the ParaView GUI test's screenshot
 )
