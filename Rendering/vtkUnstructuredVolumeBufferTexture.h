@@ -26,7 +26,7 @@ class vtkUnstructuredVolumeBufferTexture
 {
 public:
   /// Uploads `values` (32-bit; `components` per texel) unless this version is already held. True
-  /// when it uploaded.
+  /// when it uploaded, or tried to: over the driver's limit it holds nothing (uvgl::Refusals()).
   template <typename T>
   bool Sync(vtkOpenGLRenderWindow* window, const std::vector<T>& values, int components, std::uint64_t version)
   {
@@ -34,7 +34,11 @@ public:
     {
       return false;
     }
-    uvgl::UploadBufferTexture(window, this->Buffer, this->Texture, values, components);
+    if (!uvgl::UploadBufferTexture(window, this->Buffer, this->Texture, values, components))
+    {
+      this->Release(); // over the driver's limit: noted in uvgl::Refusals(), held as nothing
+      return true;
+    }
     this->Context = window;
     this->Version = version;
     this->Bytes = sizeof(T) * values.size();

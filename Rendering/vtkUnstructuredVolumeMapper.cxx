@@ -198,8 +198,14 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     TakeGLErrors(); // what VTK left before the volume is not this mapper's
     uvgl::TakeDriverMessages();
   }
-  const bool uploaded = this->Upload(frame);
+  const int refusedBefore = uvgl::Refusals().Count;
+  bool uploaded = this->Upload(frame);
   this->CheckGLErrors("the upload");
+  if (uvgl::Refusals().Count != refusedBefore)
+  {
+    vtkErrorMacro("Cannot draw: " << uvgl::Refusals().Last << "; nothing is drawn.");
+    uploaded = false;
+  }
   if (!uploaded)
   {
     this->KeepTransparentImage(frame);

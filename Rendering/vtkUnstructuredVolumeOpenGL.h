@@ -54,11 +54,39 @@ inline glm::dmat4 ToGlm(vtkMatrix4x4* m)
   return result;
 }
 
-/// Uploads `values` (float, int or unsigned int; `components` per texel) as a buffer texture.
+/// The buffer textures this process refused to make since it started, because they held more texels
+/// than their context allows, and what the last refusal was: a mapper compares the count before and
+/// after its upload, and fails the frame with that message.
+struct BufferTextureRefusals
+{
+  int Count = 0;
+  std::string Last;
+};
+inline BufferTextureRefusals& Refusals()
+{
+  static BufferTextureRefusals refusals;
+  return refusals;
+}
+
+/// Uploads `values` (float, int or unsigned int; `components` per texel) as a buffer texture. False
+/// (and nothing made, a refusal noted) when it holds more texels than GL_MAX_TEXTURE_BUFFER_SIZE:
+/// OpenGL 3.3 promises 65536, and reads beyond a driver's limit are undefined.
 template <typename T>
-void UploadBufferTexture(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* buffer, vtkTextureObject* texture,
+bool UploadBufferTexture(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* buffer, vtkTextureObject* texture,
   const std::vector<T>& values, int components)
 {
+  GLint limit = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
+  const std::size_t texels = values.size() / static_cast<std::size_t>(components);
+  if (texels > static_cast<std::size_t>(limit))
+  {
+    std::ostringstream message;
+    message << "the mesh needs a buffer texture of " << texels << " texels, and this OpenGL driver allows "
+            << limit << " (GL_MAX_TEXTURE_BUFFER_SIZE)";
+    Refusals().Last = message.str();
+    ++Refusals().Count;
+    return false;
+  }
   static_assert(sizeof(T) == 4, "32-bit texels");
   constexpr int vtkType =
     std::is_same<T, float>::value ? VTK_FLOAT : (std::is_signed<T>::value ? VTK_INT : VTK_UNSIGNED_INT);
@@ -68,7 +96,8 @@ void UploadBufferTexture(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* b
   buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
   texture->SetContext(window);
   texture->SetInternalFormat(formats[kind][components - 1]);
-  texture->CreateTextureBuffer(static_cast<unsigned int>(values.size() / components), components, vtkType, buffer);
+  texture->CreateTextureBuffer(static_cast<unsigned int>(texels), components, vtkType, buffer);
+  return true;
 }
 
 /// Sets the matrix uniform `name` of the bound `program` (in float, as GLSL reads it).

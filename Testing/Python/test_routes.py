@@ -121,5 +121,24 @@ class ShellRoutes(RouteTestCase):
                        analytic(12), 2e-5)
 
 
+class BufferTextureLimit(SceneTestCase):
+    """A mesh that needs more buffer-texture texels than the driver allows (GL_MAX_TEXTURE_BUFFER_SIZE:
+    softpipe's is 65536, OpenGL 3.3's least) gets one clear error per frame and a transparent image."""
+
+    @unittest.skipUnless(DRIVER == "softpipe", "llvmpipe holds 2^27 texels: the mesh would take gigabytes")
+    def test_each_mapper_refuses_a_mesh_over_the_limit(self):
+        prop = uvrender.volume_property((0.0, 1.0))
+        tetrahedra, hexahedra = analytic(24), analytic_hexahedra(33)  # 82944 tetrahedra; 35937 cells of 2 texels
+        for name, scene in (("tetrahedra", Scene(tetrahedra, prop, camera_for(tetrahedra), 32)),
+                            ("shells", Scene(tetrahedra, prop, camera_for(tetrahedra), 32,
+                                             mapper_class=vtkBarycentricShellMapper)),
+                            ("hexahedral", HexScene(hexahedra, prop, camera_for(hexahedra), 32))):
+            with self.subTest(name):
+                image = scene.render()
+                self.assertEqual(scene.events.errors, 1)
+                self.assertEqual(image.GetPointData().GetScalars().GetRange(3), (0.0, 0.0))
+                self.assertEqual(scene.window_events.errors, 0)
+
+
 if __name__ == "__main__":
     unittest.main()
