@@ -251,11 +251,27 @@ inline bool NodesNeedTexture(const std::vector<uv::TransferFunction::Node>& node
 
 /// The defines uvTransferFunctionLib.glsl needs: its uniform capacity and, when the nodes do not
 /// fit in it, UV_NODE_TEXTURE.
+/// Whether the current context's texture units interpolate float textures with float weights, so
+/// that the tables may be read with one filtered fetch. GL leaves the precision of the filter's
+/// weights to the implementation: GPUs keep a few bits, and so does softpipe's 3D filter, enough to
+/// cost the tables most of their accuracy. llvmpipe computes them in float (its filtered reads equal
+/// the shaders' own interpolation: python.routes on both drivers); elsewhere the shaders interpolate
+/// texelFetch reads with float weights (UV_TEXTURE_UNIT_FILTER undefined).
+inline bool ExactTextureFilter()
+{
+  if (!glGetString) // no OpenGL loaded yet
+    return false;
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer && std::strstr(renderer, "llvmpipe");
+}
+
 inline std::string TransferFunctionDefines(bool nodeTexture)
 {
   std::string defines = "#define UV_MAX_UNIFORM_NODES " + std::to_string(MaximumUniformNodes) + "\n";
   if (nodeTexture)
     defines += "#define UV_NODE_TEXTURE\n";
+  if (ExactTextureFilter())
+    defines += "#define UV_TEXTURE_UNIT_FILTER\n";
   return defines;
 }
 

@@ -52,9 +52,12 @@ uniform float segmentTableSize;
 /// A whole segment between two samples: the table's bilinear read, or the exact walk.
 vec4 WholeSegment(float front, float back)
 {
-#ifdef UV_SEGMENT_TABLE
+#if defined(UV_SEGMENT_TABLE) && defined(UV_TEXTURE_UNIT_FILTER)
+  vec2 scalars = clamp(vec2(front, back), 0.0, 1.0);
+  return textureLod(segmentTable, (scalars * (segmentTableSize - 1.0) + 0.5) / segmentTableSize, 0.0);
+#elif defined(UV_SEGMENT_TABLE)
   // Bilinear with float weights from four fetches: a texture unit's own filter may round its
-  // weights (GL leaves their precision to the implementation).
+  // weights (GL leaves their precision to the implementation; uvgl::ExactTextureFilter).
   vec2 x = clamp(vec2(front, back), 0.0, 1.0) * (segmentTableSize - 1.0);
   vec2 below = floor(x), f = x - below;
   int last = int(segmentTableSize) - 1;

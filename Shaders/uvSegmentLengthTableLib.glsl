@@ -10,9 +10,13 @@ uniform vec3 lengthToTexture;
 
 /// The table trilinearly interpolated at `coordinates` (texel centres at (i + 0.5) / size, clamped to
 /// the edge), with float weights from eight texel fetches: a texture unit's own filter may round its
-/// weights (GL leaves their precision to the implementation; GPUs and softpipe keep a few bits).
+/// weights (GL leaves their precision to the implementation; GPUs and softpipe keep a few bits),
+/// unless the driver is known to filter exactly (UV_TEXTURE_UNIT_FILTER).
 vec4 TrilinearTable(vec3 coordinates)
 {
+#ifdef UV_TEXTURE_UNIT_FILTER
+  return textureLod(segmentLengthTable, coordinates, 0.0); // exact on this driver (uvgl::ExactTextureFilter)
+#else
   ivec3 size = textureSize(segmentLengthTable, 0);
   vec3 x = coordinates * vec3(size) - 0.5;
   vec3 below = floor(x), f = x - below;
@@ -24,6 +28,7 @@ vec4 TrilinearTable(vec3 coordinates)
     texelFetch(segmentLengthTable, ivec3(i1.x, i0.y, i1.z), 0), f.x);
   vec4 c11 = mix(texelFetch(segmentLengthTable, ivec3(i0.x, i1.yz), 0), texelFetch(segmentLengthTable, i1, 0), f.x);
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+#endif
 }
 
 vec4 TableSegment(float frontScalar, float backScalar, float segmentLength)

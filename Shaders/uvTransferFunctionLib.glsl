@@ -85,8 +85,11 @@ float Psi(float a, float b)
   }
   vec2 root = sqrt(vec2(a, b));
   vec2 gamma = root / (1.0 + root);
+#ifdef UV_TEXTURE_UNIT_FILTER
+  return textureLod(psiTable, (gamma * (psiTableSize - 1.0) + 0.5) / psiTableSize, 0.0).r;
+#else
   // Bilinear with float weights from four fetches: a texture unit's own filter may round its
-  // weights (GL leaves their precision to the implementation).
+  // weights (GL leaves their precision to the implementation; uvgl::ExactTextureFilter).
   vec2 x = gamma * (psiTableSize - 1.0);
   vec2 below = floor(x), f = x - below;
   int last = int(psiTableSize) - 1;
@@ -94,4 +97,5 @@ float Psi(float a, float b)
   float near = mix(texelFetch(psiTable, i0, 0).r, texelFetch(psiTable, ivec2(i1.x, i0.y), 0).r, f.x);
   float far = mix(texelFetch(psiTable, ivec2(i0.x, i1.y), 0).r, texelFetch(psiTable, i1, 0).r, f.x);
   return mix(near, far, f.y);
+#endif
 }

@@ -29,6 +29,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -58,6 +59,11 @@ protected:
     while (glGetError() != GL_NO_ERROR)
     {
     }
+    // Mesa falls back to another driver without a word where the one asked for is missing.
+    const char* driver = std::getenv("GALLIUM_DRIVER");
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    ASSERT_TRUE(!driver || (renderer && std::strstr(renderer, driver))) << "asked for " << driver << ", got "
+                                                                       << (renderer ? renderer : "none");
   }
 
   /// Compiles and links `sources`, and passes its stages to the reference compiler; the failure
@@ -119,8 +125,9 @@ protected:
   // Where each composed stage is written for the reference compiler (kept for reading after a run),
   // one folder per test: ctest runs them side by side.
   const std::filesystem::path Folder = [] {
+    const char* driver = std::getenv("GALLIUM_DRIVER"); // the programs differ by driver
     const std::filesystem::path folder = std::filesystem::path(UV_TEST_OUTPUT) / "composed_glsl" /
-      ::testing::UnitTest::GetInstance()->current_test_info()->name();
+      (driver ? driver : "default") / ::testing::UnitTest::GetInstance()->current_test_info()->name();
     std::filesystem::create_directories(folder);
     return folder;
   }();
