@@ -25,6 +25,13 @@ assert package == os.path.join(site_folder, "unstructuredvolume"), f"imported {p
 assert os.path.dirname(os.path.dirname(os.path.realpath(vtkmodules.__file__))) == site_folder, "VTK's Python is elsewhere"
 print("imported:", package)
 
+# Every header installed goes to our own include folder: a header at the top (the Python wrapping's
+# generated Python.h once did) shadows a system one for whatever is built next.
+with open(os.path.join(build_folder, "install_manifest.txt")) as manifest:
+    headers = [line.strip() for line in manifest if "/include/" in line]
+stray = [path for path in headers if "/include/unstructuredvolume/" not in path]
+assert headers and not stray, f"headers installed outside include/unstructuredvolume: {stray}"
+
 source = vtkAnalyticMeshSource()
 source.SetResolution(6, 6, 6)
 split = vtkHexahedraToTetrahedra()
