@@ -37,9 +37,7 @@ int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out 
   float qa = C2 * D1 - C1 * D2;
   float qb = A2 * D1 + C2 * B1 - A1 * D2 - C1 * B2;
   float qc = A2 * B1 - A1 * B2;
-  // Two scalars, not an array: no element is written at a per-pixel index (see
-  // uvHexahedralTraverseFS.glsl's cuts).
-  float root0 = 0.0, root1 = 0.0;
+  float roots[2];
   int rootCount = 0;
   float scale = abs(qa) + abs(qb) + abs(qc);
   if (!(scale > 0.0))
@@ -52,10 +50,7 @@ int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out 
   if (abs(qa) <= 1e-6)
   {
     if (qb != 0.0)
-    {
-      root0 = -qc / qb;
-      rootCount = 1;
-    }
+      roots[rootCount++] = -qc / qb;
   }
   else
   {
@@ -63,9 +58,9 @@ int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out 
     if (discriminant >= 0.0)
     {
       float q = -0.5 * (qb + (qb >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
-      root0 = q / qa;
-      root1 = q != 0.0 ? qc / q : 0.0;
-      rootCount = q != 0.0 ? 2 : 1;
+      roots[rootCount++] = q / qa;
+      if (q != 0.0)
+        roots[rootCount++] = qc / q;
     }
   }
   const float slack = 1e-5;
@@ -76,7 +71,7 @@ int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out 
   uv1 = vec2(0.0);
   for (int i = 0; i < rootCount; ++i)
   {
-    float v = i == 0 ? root0 : root1;
+    float v = roots[i];
     if (v < -slack || v > 1.0 + slack)
       continue;
     float denominator1 = B1 + v * D1, denominator2 = B2 + v * D2;
@@ -120,8 +115,7 @@ vec3 PatchNormalAt(vec3 a, vec3 b, vec3 c, vec3 d, vec2 uv)
 /// Returns how many distinct corners it has: under 3 it is collapsed, no face.
 int CanonicalFace(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, out vec3 d)
 {
-  // The first three distinct corners, in scalars (no array written at a per-pixel index).
-  int first = 0, second = 0, third = 0;
+  int distinct[4];
   int count = 0;
   for (int i = 0; i < 4; ++i)
   {
@@ -129,12 +123,7 @@ int CanonicalFace(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, ou
     for (int j = 0; j < i; ++j)
       repeated = repeated || ids[j] == ids[i];
     if (!repeated)
-    {
-      first = count == 0 ? i : first;
-      second = count == 1 ? i : second;
-      third = count == 2 ? i : third;
-      ++count;
-    }
+      distinct[count++] = i;
   }
   if (count == 4)
   {
@@ -147,7 +136,7 @@ int CanonicalFace(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, ou
   d = p[0];
   if (count < 3)
     return count;
-  int i0 = first, i1 = second, i2 = third, swap;
+  int i0 = distinct[0], i1 = distinct[1], i2 = distinct[2], swap;
   if (ids[i1] < ids[i0]) { swap = i0; i0 = i1; i1 = swap; }
   if (ids[i2] < ids[i1]) { swap = i1; i1 = i2; i2 = swap; }
   if (ids[i1] < ids[i0]) { swap = i0; i0 = i1; i1 = swap; }
