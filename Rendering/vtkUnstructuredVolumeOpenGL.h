@@ -157,13 +157,22 @@ inline bool HasDriverDebugOutput()
   return false;
 }
 
+/// Whether the driver's debug messages go to a callback rather than to its log (VTK 9.6 installs
+/// one and logs them itself): the log then stays empty.
+inline bool DriverMessagesGoToACallback()
+{
+  GLvoid* callback = nullptr;
+  glGetPointerv(GL_DEBUG_CALLBACK_FUNCTION, &callback);
+  return callback != nullptr;
+}
+
 /// The driver's own messages (KHR_debug) since the last read that report a problem: errors,
 /// undefined behaviour, deprecated behaviour and portability, one per line; "" when there are none or
 /// the context lacks KHR_debug. Debug output is switched on in the context at the first read (a
 /// driver may stay silent in a context not made for debugging; Mesa does not).
 inline std::string TakeDriverMessages()
 {
-  if (!HasDriverDebugOutput())
+  if (!HasDriverDebugOutput() || DriverMessagesGoToACallback())
     return std::string();
   if (!glIsEnabled(GL_DEBUG_OUTPUT))
     glEnable(GL_DEBUG_OUTPUT);
