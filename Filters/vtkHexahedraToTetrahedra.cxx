@@ -4,6 +4,7 @@
 #include "uvPolyhedronSplit.h"
 #include "vtkHigherOrderSubdivision.h"
 #include "vtkUnstructuredVolumeCompatibility.h"
+#include "vtkUnstructuredVolumeMeshIntegrity.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -722,6 +723,15 @@ int vtkHexahedraToTetrahedra::RequestData(
     return 0;
   }
   output->Initialize();
+  if (auto* cells = vtkUnstructuredGridBase::SafeDownCast(input))
+  {
+    const std::string broken = uvvtk::FindBrokenCellsError(cells, "The output is empty.");
+    if (!broken.empty())
+    {
+      vtkErrorMacro(<< broken);
+      return 0;
+    }
+  }
   return HasHigherOrderCells(input) ? this->SubdivideAndSplit(input, output) : this->SplitLinear(input, output);
 }
 

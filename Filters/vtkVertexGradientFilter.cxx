@@ -3,6 +3,7 @@
 #include "uvCellGradient.h"
 #include "uvLinearCellSplit.h"
 #include "uvVertexCellLinks.h"
+#include "vtkUnstructuredVolumeMeshIntegrity.h"
 
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -264,6 +265,16 @@ int vtkVertexGradientFilter::RequestData(
   if (numPoints == 0)
   {
     return 1; // empty in, empty out
+  }
+  if (auto* cells = vtkUnstructuredGridBase::SafeDownCast(input))
+  {
+    const std::string broken = uvvtk::FindBrokenCellsError(cells, "The output is empty.");
+    if (!broken.empty())
+    {
+      vtkErrorMacro(<< broken);
+      output->Initialize();
+      return 0;
+    }
   }
 
   int association = -1;

@@ -11,6 +11,7 @@
 #include "uvLinearCellSplit.h"
 #include "uvScalarNormalisation.h"
 #include "vtkUnstructuredVolumeMeshContent.h"
+#include "vtkUnstructuredVolumeMeshIntegrity.h"
 #include "vtkUnstructuredVolumePointData.h"
 #include "vtkUnstructuredVolumeTetrahedralMesh.h"
 
@@ -70,6 +71,14 @@ public:
     if (!changed.Any())
     {
       return std::string();
+    }
+    auto* cells = vtkUnstructuredGridBase::SafeDownCast(input);
+    std::string broken = cells && (changed.Cells || changed.Points) ? FindMeshIntegrityError(cells, changed.Cells, changed.Points) : std::string();
+    if (!broken.empty())
+    {
+      this->Valid = false;
+      this->Seen.Forget();
+      return broken;
     }
     if (this->Valid && !changed.Cells && !this->Subdivided && this->Refresh(input, scalar, changed))
     {

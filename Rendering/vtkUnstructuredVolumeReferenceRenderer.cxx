@@ -9,6 +9,7 @@
 #include "uvRayCellGeometry.h"
 #include "uvScalarNormalisation.h"
 #include "uvLatticeBasis.h"
+#include "vtkUnstructuredVolumeMeshIntegrity.h"
 #include "vtkUnstructuredVolumeScalar.h"
 #include "vtkUnstructuredVolumeTransferFunction.h"
 
@@ -920,6 +921,15 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   if (!this->Input || this->Input->GetNumberOfCells() == 0)
   {
     return true; // nothing to render: a transparent image
+  }
+  if (auto* cells = vtkUnstructuredGridBase::SafeDownCast(this->Input))
+  {
+    const std::string broken = uvvtk::FindMeshIntegrityError(cells);
+    if (!broken.empty())
+    {
+      vtkErrorMacro(<< broken);
+      return false;
+    }
   }
 
   // Prisms and polyhedra as the project's conforming split defines their field (every mapper draws

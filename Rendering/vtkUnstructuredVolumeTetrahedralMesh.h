@@ -13,6 +13,7 @@
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
 #include "vtkUnstructuredVolumeMeshContent.h"
+#include "vtkUnstructuredVolumeMeshIntegrity.h"
 #include "vtkUnstructuredVolumePointData.h"
 #include "vtkUnstructuredVolumeScalar.h"
 #include "vtkUnstructuredVolumeVertexGradients.h"
@@ -144,6 +145,15 @@ public:
     if (!changed.Any())
     {
       return std::string();
+    }
+    if (changed.Cells || changed.Points)
+    {
+      std::string broken = FindMeshIntegrityError(input, changed.Cells, changed.Points);
+      if (!broken.empty())
+      {
+        this->Invalidate();
+        return broken;
+      }
     }
     auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
     if (this->Built && !changed.Cells && grid && this->KeepsInputPoints)
