@@ -780,6 +780,14 @@ vtkIdType vtkBarycentricShellMapper::GetMeshMemoryInBytes()
     impl.Peel.GetBytes() + impl.Projection.GetBytes());
 }
 
+void vtkBarycentricShellMapper::ForgetMesh()
+{
+  // Prepare builds many products of the mesh, each keyed on what it was built from; one cut short
+  // by running out of memory may hold its key and not its content. All are made anew (the base has
+  // released the GPU objects first).
+  this->Impl.reset(new Internals(this));
+}
+
 void vtkBarycentricShellMapper::ReleaseMapperGraphics()
 {
   this->Impl->Release();

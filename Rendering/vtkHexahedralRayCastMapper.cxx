@@ -554,6 +554,11 @@ int vtkHexahedralRayCastMapper::FillInputPortInformation(int, vtkInformation* in
   return 1;
 }
 
+void vtkHexahedralRayCastMapper::ForgetMesh()
+{
+  this->Impl->Mesh.Invalidate();
+}
+
 void vtkHexahedralRayCastMapper::ReleaseMapperGraphics()
 {
   this->Impl->Gpu.Release();

@@ -147,6 +147,7 @@ protected:
   bool Upload(const vtkUnstructuredVolumeFrame& frame) override;
   bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) override;
   void ReleaseMapperGraphics() override;
+  void ForgetMesh() override;
   void GetDrawnBounds(double bounds[6]) override;
 
   int IntegrationMode = ACCURATE;

@@ -368,6 +368,11 @@ vtkIdType vtkPreIntegratedTetrahedraMapper::GetHostMemoryInBytes()
     bytes(surfaces.High));
 }
 
+void vtkPreIntegratedTetrahedraMapper::ForgetMesh()
+{
+  this->Impl->Mesh.Invalidate();
+}
+
 void vtkPreIntegratedTetrahedraMapper::ReleaseMapperGraphics()
 {
   this->Impl->Release();

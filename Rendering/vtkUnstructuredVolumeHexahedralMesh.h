@@ -97,6 +97,13 @@ public:
     return error;
   }
 
+  /// Forgets the build: the next Update rebuilds.
+  void Invalidate()
+  {
+    this->Valid = false;
+    this->Seen.Forget();
+  }
+
 private:
   MeshContent Seen;
   bool Valid = false; // built from what Seen holds

@@ -21,6 +21,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <new>
+#include <stdexcept>
 #include <sstream>
 #include <vector>
 
@@ -44,6 +46,20 @@ std::string TakeGLErrors()
     names << (k ? ", " : "") << vtkOpenGLStrError(code) << " (0x" << std::hex << code << std::dec << ")";
   }
   return names.str();
+}
+
+/// Whether GL_OUT_OF_MEMORY is among the pending errors (taking them all).
+bool GLOutOfMemory()
+{
+  bool outOfMemory = false;
+  for (int k = 0; k < 16; ++k)
+  {
+    const GLenum code = glGetError();
+    if (code == GL_NO_ERROR)
+      break;
+    outOfMemory |= code == GL_OUT_OF_MEMORY;
+  }
+  return outOfMemory;
 }
 }
 
@@ -187,7 +203,7 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkUnstructuredVolumeFrame frame = vtkUnstructuredVolumeFrame::Make(renderer, volume, window);
   frame.ReduceImage(this->ImageSampleDistance);
-  if (frame.IsEmpty() || !this->Prepare(frame))
+  if (frame.IsEmpty() || !this->WithinMemory("preparing the mesh", [&] { return this->Prepare(frame); }))
   {
     this->KeepTransparentImage(frame);
     return;
@@ -199,7 +215,13 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     uvgl::TakeDriverMessages();
   }
   const int refusedBefore = uvgl::Refusals().Count;
-  bool uploaded = this->Upload(frame);
+  bool uploaded = this->WithinMemory("uploading the mesh", [&] { return this->Upload(frame); });
+  if (!GLErrorChecks && uploaded && GLOutOfMemory())
+  {
+    vtkErrorMacro("Cannot draw: the OpenGL driver ran out of memory uploading the mesh; nothing is drawn.");
+    this->ReleaseMapperGraphics();
+    uploaded = false;
+  }
   this->CheckGLErrors("the upload");
   if (uvgl::Refusals().Count != refusedBefore)
   {
@@ -212,6 +234,28 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     return;
   }
   this->DrawAndComposite(frame);
+}
+
+bool vtkUnstructuredVolumeMapper::WithinMemory(const char* step, const std::function<bool()>& run)
+{
+  try
+  {
+    return run();
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Cannot draw: host memory ran out " << step << " (" << this->GetDataSetInput()->GetNumberOfCells()
+                                                      << " cells); nothing is drawn.");
+  }
+  catch (const std::length_error&)
+  {
+    vtkErrorMacro("Cannot draw: the mesh is too large for this mapper's arrays " << step << " ("
+                                                      << this->GetDataSetInput()->GetNumberOfCells()
+                                                      << " cells); nothing is drawn.");
+  }
+  this->ReleaseMapperGraphics();
+  this->ForgetMesh();
+  return false;
 }
 
 void vtkUnstructuredVolumeMapper::GetDrawnBounds(double bounds[6])

@@ -30,8 +30,9 @@
 #include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
-#include <cstdint> // for std::uint64_t
-#include <memory>  // for std::unique_ptr
+#include <cstdint>    // for std::uint64_t
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
 
 class vtkDataArray;
 class vtkDataSet;
@@ -247,10 +248,19 @@ protected:
   virtual bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) = 0;
   /// Releases the mapper's own GPU resources (the base releases the float target).
   virtual void ReleaseMapperGraphics() = 0;
+  /// Forgets the mesh the mapper built, so that the next frame builds it again: after memory ran
+  /// out half-way through Prepare or Upload, what it holds is incomplete. Called after
+  /// ReleaseMapperGraphics.
+  virtual void ForgetMesh() = 0;
   /// The model-space bounds of what the mapper draws, after Prepare: by default the input's; a
   /// mapper that draws a subdivision of curved cells gives its points' (they can reach beyond the
   /// nodes'). The float target's clear and composite cover only the pixels these can project to.
   virtual void GetDrawnBounds(double bounds[6]);
+
+  /// Runs a step of the frame. Host memory running out in it (std::bad_alloc, or a size no array can
+  /// hold) is one error and a frame drawn as nothing, never a crash: the half-built mesh and GPU
+  /// objects are forgotten, so that a later frame, with memory to spare, builds them again.
+  bool WithinMemory(const char* step, const std::function<bool()>& run);
 
   /// The scalar the mapper is set to render on `data`: a point or cell array by scalar mode, array
   /// access, id or name; magnitude or a component by `property`'s colour function (VTK's vector
