@@ -120,6 +120,35 @@ inline uv::BrokenCells FindBrokenCells(vtkUnstructuredGridBase* input)
   return found;
 }
 
+/// The polyhedra whose face streams cannot be read (uv::FaceStreamSound), each counted as a broken
+/// cell: VTK's own polyhedron functions read a stream as far as it promises.
+inline uv::BrokenCells FindBrokenPolyhedra(vtkUnstructuredGridBase* input)
+{
+  uv::BrokenCells found;
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  if (!grid)
+    return found;
+  const std::int64_t points = input->GetNumberOfPoints();
+  vtkNew<vtkIdList> stream;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    if (grid->GetCellType(c) != VTK_POLYHEDRON)
+      continue;
+    uvcompat::GetPolyhedronFaceStream(grid, c, stream);
+    const vtkIdType* ids = stream->GetPointer(0);
+    if (uv::FaceStreamSound([ids](std::int64_t k) { return static_cast<std::int64_t>(ids[k]); },
+          stream->GetNumberOfIds(), points))
+      continue;
+    uv::BrokenCells cell;
+    cell.Count = 1;
+    cell.FirstCell = c;
+    cell.FirstFault = uv::BrokenCells::Fault::FaceStream;
+    cell.FirstIdCount = stream->GetNumberOfIds();
+    found.Merge(cell);
+  }
+  return found;
+}
+
 inline uv::NonFinitePoints FindNonFinitePoints(vtkPoints* points)
 {
   vtkDataArray* data = points ? points->GetData() : nullptr;
@@ -144,6 +173,9 @@ inline const char* Describe(uv::BrokenCells::Fault fault)
       return "it has the wrong number of point ids for its type";
     case uv::BrokenCells::Fault::IdOutOfRange:
       return "it names a point that does not exist";
+    case uv::BrokenCells::Fault::FaceStream:
+      return "its face stream holds fewer faces than it promises, a face of under three points, or a "
+             "point that does not exist";
     default:
       return "";
   }
@@ -155,14 +187,17 @@ inline const char* Describe(uv::BrokenCells::Fault fault)
 /// empty where there are none.
 inline std::string FindBrokenCellsError(vtkUnstructuredGridBase* input, const char* consequence)
 {
-  const uv::BrokenCells broken = integrity::FindBrokenCells(input);
+  uv::BrokenCells broken = integrity::FindBrokenCells(input);
+  if (!broken)
+    broken = integrity::FindBrokenPolyhedra(input); // their ids are sound: their streams can be read
   if (!broken)
     return std::string();
   std::ostringstream error;
   error << "the input mesh is broken: " << broken.Count << " of " << input->GetNumberOfCells()
         << " cells cannot be read. The first, cell " << broken.FirstCell << " ("
         << uvcompat::CellTypeName(input->GetCellType(broken.FirstCell)) << ", " << broken.FirstIdCount
-        << " point ids): " << integrity::Describe(broken.FirstFault);
+        << (broken.FirstFault == uv::BrokenCells::Fault::FaceStream ? " face stream entries): " : " point ids): ")
+        << integrity::Describe(broken.FirstFault);
   if (broken.FirstFault == uv::BrokenCells::Fault::PointCount)
     error << " (" << broken.FirstExpected << ")";
   if (broken.FirstFault == uv::BrokenCells::Fault::IdOutOfRange)

@@ -133,3 +133,19 @@ TEST(MeshIntegrity, NonFinitePoints)
   std::vector<float> large(3 * 2, std::numeric_limits<float>::max()); // large is finite
   EXPECT_FALSE(uv::FindNonFinitePoints(large.data(), 2, Serial));
 }
+
+TEST(MeshIntegrity, PolyhedronFaceStreams)
+{
+  const auto sound = [](std::vector<std::int64_t> stream, std::int64_t points) {
+    return uv::FaceStreamSound([&stream](std::int64_t k) { return stream[k]; },
+      static_cast<std::int64_t>(stream.size()), points);
+  };
+  const std::vector<std::int64_t> tetrahedron{ 4, 3, 0, 1, 2, 3, 0, 1, 3, 3, 1, 2, 3, 3, 0, 2, 3 };
+  EXPECT_TRUE(sound(tetrahedron, 4));
+  EXPECT_FALSE(sound(tetrahedron, 3)); // names point 3 of three
+  EXPECT_FALSE(sound({ 5, 4, 0, 1, 2, 3, 4, 4, 5, 6, 7 }, 8)); // promises five faces, holds two
+  EXPECT_FALSE(sound({ 1, 2, 0, 1 }, 8));                       // a face of two points
+  EXPECT_FALSE(sound({ 1, 4, 0, 1, 2 }, 8));                    // a face cut short
+  EXPECT_FALSE(sound({}, 8));
+  EXPECT_FALSE(sound({ 0 }, 8));
+}
