@@ -23,6 +23,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <new>
 #include <sstream>
 #include <string>
 
@@ -65,6 +66,8 @@ inline vtkSmartPointer<vtkTypeInt64Array> AsInt64(vtkDataArray* array)
     return plain;
   auto copy = vtkSmartPointer<vtkTypeInt64Array>::New();
   copy->DeepCopy(array);
+  if (copy->GetNumberOfValues() != array->GetNumberOfValues())
+    throw std::bad_alloc(); // VTK reports a failed allocation and leaves the array empty
   return copy;
 }
 
@@ -75,6 +78,8 @@ inline vtkSmartPointer<vtkUnsignedCharArray> AsBytes(vtkDataArray* array)
     return plain;
   auto copy = vtkSmartPointer<vtkUnsignedCharArray>::New();
   copy->DeepCopy(array);
+  if (copy->GetNumberOfValues() != array->GetNumberOfValues())
+    throw std::bad_alloc();
   return copy;
 }
 
@@ -187,7 +192,15 @@ inline const char* Describe(uv::BrokenCells::Fault fault)
 /// empty where there are none.
 inline std::string FindBrokenCellsError(vtkUnstructuredGridBase* input, const char* consequence)
 {
-  uv::BrokenCells broken = integrity::FindBrokenCells(input);
+  uv::BrokenCells broken;
+  try
+  {
+    broken = integrity::FindBrokenCells(input);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return std::string("host memory ran out checking the input mesh's cells. ") + consequence;
+  }
   if (!broken)
     broken = integrity::FindBrokenPolyhedra(input); // their ids are sound: their streams can be read
   if (!broken)

@@ -20,7 +20,31 @@ void CanonicalQuad(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, o
   d = forward ? p[previous] : p[next];
 }
 
-/// HitPatch, with the hits' patch coordinates (u, v).
+/// The ray's point on the patch at root v of HitPatchAt's quadratic: false where it lies off the
+/// patch (beyond the slack), else its ray parameter and patch coordinates.
+bool PatchPointAt(float v, vec3 origin, vec3 direction, vec3 a, vec3 e1, vec3 e2, vec3 e3, vec4 plane1,
+  vec4 plane2, out float t, out vec2 uv)
+{
+  const float slack = 1e-5;
+  t = -3.0e38;
+  uv = vec2(0.0);
+  if (v < -slack || v > 1.0 + slack)
+    return false;
+  // plane = (A, B, C, D): A + u B + v C + u v D = 0 on each plane through the ray.
+  float denominator1 = plane1.y + v * plane1.w, denominator2 = plane2.y + v * plane2.w;
+  float u = abs(denominator1) > abs(denominator2) ? -(plane1.x + v * plane1.z) / denominator1
+                                                  : -(plane2.x + v * plane2.z) / denominator2;
+  if (!(u >= -slack && u <= 1.0 + slack))
+    return false;
+  vec3 hit = a + u * e1 + v * e2 + u * v * e3;
+  t = dot(hit - origin, direction);
+  uv = vec2(u, v);
+  return true;
+}
+
+/// HitPatch, with the hits' patch coordinates (u, v). The quadratic's roots are scalars, and each is
+/// taken by its own call, not through an array: softpipe writes an array element at the index of the
+/// first pixel of a 2x2 quad for all four, even for pixels whose branch does not run.
 int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out float t0, out float t1,
   out vec2 uv0, out vec2 uv1)
 {
@@ -31,14 +55,16 @@ int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out 
   n1 = normalize(n1);
   vec3 n2 = cross(direction, n1);
   vec3 ao = a - origin;
-  float A1 = dot(n1, ao), B1 = dot(n1, e1), C1 = dot(n1, e2), D1 = dot(n1, e3);
-  float A2 = dot(n2, ao), B2 = dot(n2, e1), C2 = dot(n2, e2), D2 = dot(n2, e3);
+  vec4 plane1 = vec4(dot(n1, ao), dot(n1, e1), dot(n1, e2), dot(n1, e3));
+  vec4 plane2 = vec4(dot(n2, ao), dot(n2, e1), dot(n2, e2), dot(n2, e3));
   // Eliminating u leaves qa v^2 + qb v + qc = 0.
-  float qa = C2 * D1 - C1 * D2;
-  float qb = A2 * D1 + C2 * B1 - A1 * D2 - C1 * B2;
-  float qc = A2 * B1 - A1 * B2;
-  float roots[2];
-  int rootCount = 0;
+  float qa = plane2.z * plane1.w - plane1.z * plane2.w;
+  float qb = plane2.x * plane1.w + plane2.z * plane1.y - plane1.x * plane2.w - plane1.z * plane2.y;
+  float qc = plane2.x * plane1.y - plane1.x * plane2.y;
+  t0 = -3.0e38;
+  t1 = -3.0e38;
+  uv0 = vec2(0.0);
+  uv1 = vec2(0.0);
   float scale = abs(qa) + abs(qb) + abs(qc);
   if (!(scale > 0.0))
     return 0;
@@ -47,10 +73,12 @@ int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out 
   qa /= scale;
   qb /= scale;
   qc /= scale;
+  float root0 = 0.0, root1 = 0.0;
+  bool has0 = false, has1 = false;
   if (abs(qa) <= 1e-6)
   {
-    if (qb != 0.0)
-      roots[rootCount++] = -qc / qb;
+    has0 = qb != 0.0;
+    root0 = has0 ? -qc / qb : 0.0;
   }
   else
   {
@@ -58,41 +86,32 @@ int HitPatchAt(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, out 
     if (discriminant >= 0.0)
     {
       float q = -0.5 * (qb + (qb >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
-      roots[rootCount++] = q / qa;
-      if (q != 0.0)
-        roots[rootCount++] = qc / q;
+      has0 = true;
+      root0 = q / qa;
+      has1 = q != 0.0;
+      root1 = has1 ? qc / q : 0.0;
     }
   }
-  const float slack = 1e-5;
-  int hits = 0;
-  t0 = -3.0e38;
-  t1 = -3.0e38;
-  uv0 = vec2(0.0);
-  uv1 = vec2(0.0);
-  for (int i = 0; i < rootCount; ++i)
+  float tA, tB;
+  vec2 uvA, uvB;
+  bool hitA = has0 && PatchPointAt(root0, origin, direction, a, e1, e2, e3, plane1, plane2, tA, uvA);
+  bool hitB = has1 && PatchPointAt(root1, origin, direction, a, e1, e2, e3, plane1, plane2, tB, uvB);
+  if (hitA)
   {
-    float v = roots[i];
-    if (v < -slack || v > 1.0 + slack)
-      continue;
-    float denominator1 = B1 + v * D1, denominator2 = B2 + v * D2;
-    float u = abs(denominator1) > abs(denominator2) ? -(A1 + v * C1) / denominator1 : -(A2 + v * C2) / denominator2;
-    if (!(u >= -slack && u <= 1.0 + slack))
-      continue;
-    vec3 hit = a + u * e1 + v * e2 + u * v * e3;
-    float t = dot(hit - origin, direction);
-    if (hits == 0)
-    {
-      t0 = t;
-      uv0 = vec2(u, v);
-    }
-    else
-    {
-      t1 = t;
-      uv1 = vec2(u, v);
-    }
-    ++hits;
+    t0 = tA;
+    uv0 = uvA;
   }
-  return hits;
+  if (hitB && hitA)
+  {
+    t1 = tB;
+    uv1 = uvB;
+  }
+  else if (hitB)
+  {
+    t0 = tB;
+    uv0 = uvB;
+  }
+  return (hitA ? 1 : 0) + (hitB ? 1 : 0);
 }
 
 /// Ray parameters where origin + t direction meets the patch a + u(b-a) + v(d-a) + uv(a-b+c-d),
@@ -115,16 +134,14 @@ vec3 PatchNormalAt(vec3 a, vec3 b, vec3 c, vec3 d, vec2 uv)
 /// Returns how many distinct corners it has: under 3 it is collapsed, no face.
 int CanonicalFace(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, out vec3 d)
 {
-  int distinct[4];
-  int count = 0;
-  for (int i = 0; i < 4; ++i)
-  {
-    bool repeated = false;
-    for (int j = 0; j < i; ++j)
-      repeated = repeated || ids[j] == ids[i];
-    if (!repeated)
-      distinct[count++] = i;
-  }
+  // Which corners repeat an earlier one, and the first three distinct ones, without writing an
+  // array at a per-pixel index (see HitPatchAt).
+  bool repeated1 = ids[1] == ids[0];
+  bool repeated2 = ids[2] == ids[0] || ids[2] == ids[1];
+  bool repeated3 = ids[3] == ids[0] || ids[3] == ids[1] || ids[3] == ids[2];
+  int count = 1 + (repeated1 ? 0 : 1) + (repeated2 ? 0 : 1) + (repeated3 ? 0 : 1);
+  int second = !repeated1 ? 1 : (!repeated2 ? 2 : 3);
+  int third = (second < 2 && !repeated2) ? 2 : 3;
   if (count == 4)
   {
     CanonicalQuad(p, ids, a, b, c, d);
@@ -136,7 +153,7 @@ int CanonicalFace(vec3 p[4], uint ids[4], out vec3 a, out vec3 b, out vec3 c, ou
   d = p[0];
   if (count < 3)
     return count;
-  int i0 = distinct[0], i1 = distinct[1], i2 = distinct[2], swap;
+  int i0 = 0, i1 = second, i2 = third, swap;
   if (ids[i1] < ids[i0]) { swap = i0; i0 = i1; i1 = swap; }
   if (ids[i2] < ids[i1]) { swap = i1; i1 = i2; i2 = swap; }
   if (ids[i1] < ids[i0]) { swap = i0; i0 = i1; i1 = swap; }

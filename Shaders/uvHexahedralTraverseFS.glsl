@@ -822,6 +822,37 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
   return exitFace;
 }
 
+/// The neighbour (as `across` gives it) across a face of the loaded cell, other than `enterFace`,
+/// where the ray leaves within rounding of exitT, or -1. Where the ray leaves through an edge or a
+/// vertex, the faces there tie, and FindExit's may be a boundary face (a hole's): the walk goes on
+/// through the face with a neighbour instead of stopping at the hole's edge, where the next peel's
+/// rasterised entry faces fold and may leave that very pixel out.
+int NeighbourAcrossTiedFace(vec3 origin, vec3 direction, float exitT, int enterFace, int across[6])
+{
+  vec3 cellCentre = CellCentre(points);
+  float tolerance = 1e-6 * (abs(exitT) + 2.0 * length(points[0] - cellCentre));
+  for (int f = 0; f < 6; ++f)
+  {
+    if (f == enterFace || across[f] < 0)
+      continue;
+    vec3 a, b, c, d;
+    int corners = LoadedCellFace(f, a, b, c, d);
+    if (corners < 3)
+      continue;
+    float h0, h1;
+    vec3 n0, n1;
+    int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
+    vec3 q[4];
+    CyclicFace(f, q);
+    vec3 outward = OutwardFaceNormal(q, cellCentre);
+    if (hits > 0 && abs(h0 - exitT) <= tolerance && Leaves(n0, outward, direction))
+      return across[f];
+    if (hits > 1 && abs(h1 - exitT) <= tolerance && Leaves(n1, outward, direction))
+      return across[f];
+  }
+  return -1;
+}
+
 /// How far `target` lies beyond the plane of the loaded cell's face f, per cell size (-1 for a
 /// collapsed face).
 float BeyondFace(int f, vec3 target)
@@ -990,6 +1021,8 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
     int across[6];
     CellNeighbours(cell, across);
     int next = across[exitFace];
+    if (next < 0)
+      next = NeighbourAcrossTiedFace(origin, direction, exitT, enterFace, across);
     if (next < 0)
     {
       exitParameter = exitT; // left the mesh: the next peel looks beyond here

@@ -1,7 +1,7 @@
 """Host memory running out while a mapper prepares a mesh: the mapper gives one error and draws
 nothing, with no crash, and draws the mesh once memory is there again. The failure is forced: each
 mapper renders a small mesh, then, in a process whose address space is capped a little above what it
-uses (RLIMIT_AS), a mesh of 384,000 tetrahedra, then the same mesh with the cap lifted. Each mapper
+uses (RLIMIT_AS), a mesh of 1.3 million tetrahedra, then the same mesh with the cap lifted. Each mapper
 runs in a child process of its own, so that a crash is reported as one."""
 import json
 import os
@@ -25,7 +25,7 @@ def child(name):
     import unstructuredvolume as uv
     mapper = {"tetrahedra": uv.vtkPreIntegratedTetrahedraMapper, "shells": uv.vtkBarycentricShellMapper,
               "hexahedral": uv.vtkHexahedralRayCastMapper}[name]()
-    small, large = analytic(3), analytic(40)
+    small, large = analytic(3), analytic(60)
     prop = property_from_nodes(((0, 0.0), (1, 0.5)), ((0, (1, 0, 0)), (1, (0, 0, 1))), 0.5)
     scene = Scene(small, prop, camera_for(small), 64, mapper=mapper)
     frames = [scene.render().GetPointData().GetScalars().GetRange(3)]
