@@ -82,6 +82,10 @@ void main()
   float wall = exit.g > 0.5 ? 1e-5 * (abs(exit.r) + length(c - a)) : 0.0;
   float after = firstPeel == 1 ? -3.0e38 : exit.r - wall;
   float t = EntryParameter(origin, direction, a, b, c, d, corners, after);
+  // Not back into the cell the walk left the mesh from, where it left it (exit.a, -1: none).
+  if (firstPeel == 0 && exit.g > 0.5 && exit.g < 1.5 && texelFetch(boundaryFaces, boundaryFace).x == int(exit.a) &&
+    t <= exit.r + wall)
+    discard;
   if (!(t < 3.0e38))
   {
     discard; // the ray leaves the mesh here, or this face was traversed already

@@ -63,6 +63,10 @@ float transmittance = 1.0;
 const float STOPPED = 0.0, LEFT_THROUGH_BOUNDARY = 1.0, LOST = 2.0;
 const int nearPlaneSteps = 256; // cells a ray walks from startCell to its near-plane point
 float stopKind = STOPPED;
+// The cell the walk left the mesh from (LEFT_THROUGH_BOUNDARY), -1 otherwise: the next peel does not
+// enter that cell again where it was left (a flat cell's faces coincide: entering by another of
+// them, the walk would leave it there again, peel after peel).
+int leftCell = -1;
 
 //UV::TransferFunction
 
@@ -1027,6 +1031,7 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
     {
       exitParameter = exitT; // left the mesh: the next peel looks beyond here
       stopKind = LEFT_THROUGH_BOUNDARY;
+      leftCell = cell;
       break;
     }
 #ifdef UV_CELL_SCALARS
@@ -1083,5 +1088,7 @@ void main()
   if ((start.g >= 0.0 || fromStartCell) && transmittance > 1.0 - opacityThreshold)
     exitParameter = CastRay(pixel, start, fromStartCell);
   gl_FragData[0] = vec4(colour, 1.0 - transmittance);
-  gl_FragData[1] = vec4(exitParameter, stopKind, fromStartCell ? -1.0 : start.g, 1.0);
+  // The cell as a float: exact up to 2^24 cells; beyond, a neighbouring number may match, which only
+  // skips a face of that cell at the very parameter the walk stopped at.
+  gl_FragData[1] = vec4(exitParameter, stopKind, fromStartCell ? -1.0 : start.g, float(leftCell));
 }

@@ -829,6 +829,16 @@ class StressTests(SceneTestCase):
         mesh = stress.apply_scalars(stress.build_mesh(case), case)
         self.assertMatchesReference(mesh, stress.make_property(mesh, case), stress.make_camera(mesh, case), 17)
 
+    def test_a_flat_sliver_on_a_hole_does_not_end_the_ray(self):
+        # Stress case 1098 of seed 2026 (with NaN instead of Inf): a ray touches a flat Delaunay
+        # sliver on the boundary and leaves it at once into a hole. The next peel entered the sliver
+        # again by another of its faces, which coincide, at the same parameter, and looped there
+        # until the walk's bound ended the ray: 22 pixels drawn empty. The next peel now skips the
+        # cell the walk left the mesh from, at the parameter it left it.
+        case = {"mesh": "slivers", "scalars": "some_nan", "camera": "outside", "function": "ramp"}
+        mesh = stress.apply_scalars(stress.build_mesh(case), case)
+        self.assertMatchesReference(mesh, stress.make_property(mesh, case), stress.make_camera(mesh, case), 48)
+
     def test_delaunay_slivers_a_millionth_and_a_trillion_times_the_size(self):
         # A sliver's centre lies in its faces' planes up to rounding, and a ray can cross it within
         # the walk's tolerance: its exit faces are oriented by their corners' order, and a ray leaves
