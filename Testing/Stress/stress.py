@@ -438,16 +438,16 @@ def run_case(seed, number):
     return failures
 
 
-def run_all(seed, count, where=()):
-    """Runs `count` cases, each in its own process; with `where` ("axis=value" ...), the first `count`
-    case numbers whose choices match."""
+def run_all(seed, count, where=(), first=0):
+    """Runs `count` cases from case number `first` on, each in its own process; with `where`
+    ("axis=value" ...), the first `count` case numbers from `first` whose choices match."""
     failed = known_count = 0
     wanted = dict(condition.split("=", 1) for condition in where)
     for axis, value in wanted.items():
         choices = AXES.get(axis)
         if choices is None or value not in map(str, choices):
             sys.exit(f"--where {axis}={value}: the axes are {', '.join(AXES)}; {axis}'s values: {choices}")
-    numbers = (n for n in itertools.count()
+    numbers = (n for n in itertools.count(first)
                if all(str(choose(seed, n)[axis]) == value for axis, value in wanted.items()))
     for _, number in zip(range(count), numbers):
         case = choose(seed, number)
@@ -477,6 +477,8 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--cases", type=int, default=12, help="how many cases, each in its own process")
     parser.add_argument("--case", type=int, default=None, help="run this one case here")
+    parser.add_argument("--first", type=int, default=0,
+                        help="the first case number of the run (to split a long run over processes)")
     parser.add_argument("--where", action="append", default=[], metavar="AXIS=VALUE",
                         help="only cases with this choice (e.g. mesh=slivers); repeatable")
     args = parser.parse_args()
@@ -485,7 +487,7 @@ def main():
         for failure in failures:
             print(failure if failure.startswith("KNOWN") else "FAIL " + failure)
         sys.exit(1 if any(not failure.startswith("KNOWN") for failure in failures) else 0)
-    sys.exit(0 if run_all(args.seed, args.cases, args.where) else 1)
+    sys.exit(0 if run_all(args.seed, args.cases, args.where, args.first) else 1)
 
 
 if __name__ == "__main__":
