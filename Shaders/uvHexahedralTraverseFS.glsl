@@ -774,6 +774,32 @@ bool Leaves(vec3 normal, vec3 outward, vec3 direction)
   return dot(OrientedNormal(normal, outward), direction) > 0.0;
 }
 
+/// The ray's hits on face f of the loaded cell (none on a collapsed face), as the exact bilinear
+/// patch (or triangle) through its corners, parameterised canonically, with the face's normal at
+/// each; a hit where the ray enters the cell instead of leaving it is -3e38 (near an edge the ray can
+/// meet, within the edge slack, a face it enters through, just after the entry on the neighbouring
+/// face).
+void LeavingHits(int f, vec3 origin, vec3 direction, vec3 cellCentre, out float h0, out float h1, out vec3 n0,
+  out vec3 n1)
+{
+  h0 = -3.0e38;
+  h1 = -3.0e38;
+  n0 = vec3(0.0);
+  n1 = vec3(0.0);
+  vec3 a, b, c, d;
+  int corners = LoadedCellFace(f, a, b, c, d);
+  if (corners < 3)
+    return;
+  int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
+  vec3 q[4];
+  CyclicFace(f, q);
+  vec3 outward = OutwardFaceNormal(q, cellCentre);
+  if (!(hits > 0 && Leaves(n0, outward, direction)))
+    h0 = -3.0e38;
+  if (!(hits > 1 && Leaves(n1, outward, direction)))
+    h1 = -3.0e38;
+}
+
 /// The face of the loaded cell (other than `enterFace`) where the ray leaves it nearest beyond t, with
 /// that parameter in exitT; -1 when no face claims the ray. Where none does beyond rounding of t, the
 /// ray leaves where it entered (a flat cell, whose faces coincide): exitT is then t, no length.
@@ -793,27 +819,16 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
     {
       if (f == enterFace)
         continue;
-      // The face exactly, as the bilinear patch (or triangle) through its corners, parameterised
-      // canonically; a collapsed face is no way out.
-      vec3 a, b, c, d;
-      int corners = LoadedCellFace(f, a, b, c, d);
-      if (corners < 3)
-        continue;
       float h0, h1;
       vec3 n0, n1;
-      int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
-      // Only where the ray leaves the cell: near an edge the ray can also meet (within the edge
-      // slack) a face it enters through, just after the entry on the neighbouring face.
-      vec3 q[4];
-      CyclicFace(f, q);
-      vec3 outward = OutwardFaceNormal(q, cellCentre);
-      if (hits > 0 && h0 > after && h0 < exitT && Leaves(n0, outward, direction))
+      LeavingHits(f, origin, direction, cellCentre, h0, h1, n0, n1);
+      if (h0 > after && h0 < exitT)
       {
         exitT = h0;
         exitFace = f;
         exitNormal = n0;
       }
-      if (hits > 1 && h1 > after && h1 < exitT && Leaves(n1, outward, direction))
+      if (h1 > after && h1 < exitT)
       {
         exitT = h1;
         exitFace = f;
@@ -839,19 +854,10 @@ int NeighbourAcrossTiedFace(vec3 origin, vec3 direction, float exitT, int enterF
   {
     if (f == enterFace || across[f] < 0)
       continue;
-    vec3 a, b, c, d;
-    int corners = LoadedCellFace(f, a, b, c, d);
-    if (corners < 3)
-      continue;
     float h0, h1;
     vec3 n0, n1;
-    int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
-    vec3 q[4];
-    CyclicFace(f, q);
-    vec3 outward = OutwardFaceNormal(q, cellCentre);
-    if (hits > 0 && abs(h0 - exitT) <= tolerance && Leaves(n0, outward, direction))
-      return across[f];
-    if (hits > 1 && abs(h1 - exitT) <= tolerance && Leaves(n1, outward, direction))
+    LeavingHits(f, origin, direction, cellCentre, h0, h1, n0, n1);
+    if (abs(h0 - exitT) <= tolerance || abs(h1 - exitT) <= tolerance)
       return across[f];
   }
   return -1;
