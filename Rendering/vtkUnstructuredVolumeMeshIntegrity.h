@@ -58,28 +58,17 @@ inline uv::PointCountsByType PointCountsOfTypes()
   return counts;
 }
 
-/// `array` as a plain 64-bit integer array: itself where it is one, else a copy (32-bit ids, VTK
-/// 9.6's implicit arrays).
-inline vtkSmartPointer<vtkTypeInt64Array> AsInt64(vtkDataArray* array)
+/// `array` as a plain array of ArrayT (vtkTypeInt64Array for ids, vtkUnsignedCharArray for types):
+/// itself where it is one, else a copy (32-bit ids, VTK 9.6's implicit arrays).
+template <typename ArrayT>
+vtkSmartPointer<ArrayT> AsPlain(vtkDataArray* array)
 {
-  if (auto* plain = vtkTypeInt64Array::FastDownCast(array))
+  if (auto* plain = ArrayT::FastDownCast(array))
     return plain;
-  auto copy = vtkSmartPointer<vtkTypeInt64Array>::New();
+  auto copy = vtkSmartPointer<ArrayT>::New();
   copy->DeepCopy(array);
   if (copy->GetNumberOfValues() != array->GetNumberOfValues())
     throw std::bad_alloc(); // VTK reports a failed allocation and leaves the array empty
-  return copy;
-}
-
-/// `array` as a plain byte array (the cell types).
-inline vtkSmartPointer<vtkUnsignedCharArray> AsBytes(vtkDataArray* array)
-{
-  if (auto* plain = vtkUnsignedCharArray::FastDownCast(array))
-    return plain;
-  auto copy = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  copy->DeepCopy(array);
-  if (copy->GetNumberOfValues() != array->GetNumberOfValues())
-    throw std::bad_alloc();
   return copy;
 }
 
@@ -91,9 +80,9 @@ inline uv::BrokenCells FindBrokenCells(vtkUnstructuredGridBase* input)
   if (grid && grid->GetCells() && uvcompat::CellTypesArray(grid))
   {
     vtkCellArray* array = grid->GetCells();
-    const auto offsets = AsInt64(array->GetOffsetsArray());
-    const auto ids = AsInt64(array->GetConnectivityArray());
-    const auto types = AsBytes(uvcompat::CellTypesArray(grid));
+    const auto offsets = AsPlain<vtkTypeInt64Array>(array->GetOffsetsArray());
+    const auto ids = AsPlain<vtkTypeInt64Array>(array->GetConnectivityArray());
+    const auto types = AsPlain<vtkUnsignedCharArray>(uvcompat::CellTypesArray(grid));
     if (offsets->GetNumberOfValues() < cells + 1 || types->GetNumberOfValues() < cells)
     {
       uv::BrokenCells all;

@@ -134,6 +134,16 @@ MAPPERS = {"tetrahedra": vtkPreIntegratedTetrahedraMapper, "shells": vtkBarycent
 
 
 class BrokenInputTests(SceneTestCase):
+    def assert_refused_by_the_reference(self, mesh):
+        reference = vtkUnstructuredVolumeReferenceRenderer()
+        events = Events(reference)
+        reference.SetInputData(mesh)
+        reference.SetVolumeProperty(PROPERTY)
+        reference.SetCamera(camera())
+        reference.SetImageSize(24, 24)
+        self.assertFalse(reference.Render())
+        self.assertEqual(events.errors, 1)
+
     def assert_refused_everywhere(self, mesh, label):
         """Every mapper (two frames), the reference and both filters: an error, nothing drawn."""
         for name, mapper_class in MAPPERS.items():
@@ -145,14 +155,7 @@ class BrokenInputTests(SceneTestCase):
                 self.assertEqual(scene.events.errors, 2)  # one a frame: the mesh stays broken
                 self.assertEqual(scene.window_events.errors, 0)
         with self.subTest(label, mapper="reference"):
-            reference = vtkUnstructuredVolumeReferenceRenderer()
-            events = Events(reference)
-            reference.SetInputData(mesh)
-            reference.SetVolumeProperty(PROPERTY)
-            reference.SetCamera(camera())
-            reference.SetImageSize(24, 24)
-            self.assertFalse(reference.Render())
-            self.assertEqual(events.errors, 1)
+            self.assert_refused_by_the_reference(mesh)
         for filter_class in (vtkHexahedraToTetrahedra, vtkVertexGradientFilter):
             with self.subTest(label, filter=filter_class.__name__):
                 algorithm = filter_class()
@@ -185,14 +188,7 @@ class BrokenInputTests(SceneTestCase):
                         self.assertEqual(alpha, (0.0, 0.0))
                         self.assertEqual(scene.events.errors, 1)
                 with self.subTest(label, mapper="reference"):
-                    reference = vtkUnstructuredVolumeReferenceRenderer()
-                    events = Events(reference)
-                    reference.SetInputData(mesh)
-                    reference.SetVolumeProperty(PROPERTY)
-                    reference.SetCamera(camera())
-                    reference.SetImageSize(24, 24)
-                    self.assertFalse(reference.Render())
-                    self.assertEqual(events.errors, 1)
+                    self.assert_refused_by_the_reference(mesh)
 
     def test_a_repaired_mesh_draws_again(self):
         # The check runs whenever cells or points change, and an error is not remembered as a build.
