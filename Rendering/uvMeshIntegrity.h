@@ -26,8 +26,8 @@ struct BrokenCells
     Offsets,      // its offsets fall or leave the id list: its ids cannot be read
     PointCount,   // fewer or more ids than its type has
     IdOutOfRange, // an id outside [0, number of points)
-    FaceStream,   // a polyhedron's faces: fewer than promised, a face of under 3 points, or an id
-                  // outside [0, number of points)
+    FaceStream,   // a polyhedron's faces: fewer than promised, or an id outside [0, number of
+                  // points)
   };
   std::int64_t Count = 0;
   std::int64_t FirstCell = -1;
@@ -116,11 +116,13 @@ BrokenCells FindBrokenCells(std::int64_t cellCount, std::int64_t pointCount, std
 }
 
 /// Whether a polyhedron's face stream (number of faces, then each face's point count and ids) holds
-/// the faces it promises, each of 3 points or more, every id in [0, pointCount).
+/// the faces it promises, every id in [0, pointCount): whether it can be read. A readable stream may
+/// still not bound a solid (a face of two points, faces that do not close): the split skips those
+/// polyhedra with its own error.
 template <typename Stream>
 bool FaceStreamSound(const Stream& stream, std::int64_t length, std::int64_t pointCount)
 {
-  if (length < 1 || stream(0) < 1)
+  if (length < 1 || stream(0) < 0)
     return false;
   std::int64_t at = 1;
   for (std::int64_t f = 0; f < stream(0); ++f)
@@ -128,7 +130,7 @@ bool FaceStreamSound(const Stream& stream, std::int64_t length, std::int64_t poi
     if (at >= length)
       return false;
     const std::int64_t count = stream(at++);
-    if (count < 3 || at + count > length)
+    if (count < 0 || at + count > length)
       return false;
     for (std::int64_t k = 0; k < count; ++k, ++at)
       if (stream(at) < 0 || stream(at) >= pointCount)

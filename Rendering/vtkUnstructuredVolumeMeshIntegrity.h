@@ -168,8 +168,7 @@ inline const char* Describe(uv::BrokenCells::Fault fault)
     case uv::BrokenCells::Fault::IdOutOfRange:
       return "it names a point that does not exist";
     case uv::BrokenCells::Fault::FaceStream:
-      return "its face stream holds fewer faces than it promises, a face of under three points, or a "
-             "point that does not exist";
+      return "its face stream holds fewer faces than it promises, or names a point that does not exist";
     default:
       return "";
   }
