@@ -73,11 +73,10 @@ public:
       return std::string();
     }
     auto* cells = vtkUnstructuredGridBase::SafeDownCast(input);
-    std::string broken = cells && (changed.Cells || changed.Points) ? FindMeshIntegrityError(cells, changed.Cells, changed.Points) : std::string();
+    const std::string broken = cells ? FindMeshIntegrityError(cells, changed.Cells, changed.Points) : std::string();
     if (!broken.empty())
     {
-      this->Valid = false;
-      this->Seen.Forget();
+      this->Invalidate();
       return broken;
     }
     if (this->Valid && !changed.Cells && !this->Subdivided && this->Refresh(input, scalar, changed))
@@ -87,13 +86,12 @@ public:
       return std::string();
     }
     std::string error = this->Build(input, scalar, progress);
-    this->Valid = error.empty();
-    if (!this->Valid)
+    if (!error.empty())
     {
-      this->Seen.Forget();
+      this->Invalidate();
       return error;
     }
-    built = true;
+    this->Valid = built = true;
     return error;
   }
 

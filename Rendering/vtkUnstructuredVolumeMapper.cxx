@@ -35,7 +35,8 @@ bool GLErrorChecksFromEnvironment()
 }
 
 /// Drains the GL error flags (an implementation may hold several): their names, or "" when none.
-std::string TakeGLErrors()
+/// `outOfMemory`, when given, tells whether GL_OUT_OF_MEMORY was among them.
+std::string TakeGLErrors(bool* outOfMemory = nullptr)
 {
   std::ostringstream names;
   for (int k = 0; k < 16; ++k)
@@ -44,6 +45,8 @@ std::string TakeGLErrors()
     if (code == GL_NO_ERROR)
       break;
     names << (k ? ", " : "") << vtkOpenGLStrError(code) << " (0x" << std::hex << code << std::dec << ")";
+    if (outOfMemory && code == GL_OUT_OF_MEMORY)
+      *outOfMemory = true;
   }
   return names.str();
 }
@@ -52,13 +55,7 @@ std::string TakeGLErrors()
 bool GLOutOfMemory()
 {
   bool outOfMemory = false;
-  for (int k = 0; k < 16; ++k)
-  {
-    const GLenum code = glGetError();
-    if (code == GL_NO_ERROR)
-      break;
-    outOfMemory |= code == GL_OUT_OF_MEMORY;
-  }
+  TakeGLErrors(&outOfMemory);
   return outOfMemory;
 }
 }

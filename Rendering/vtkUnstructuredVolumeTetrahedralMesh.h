@@ -146,14 +146,11 @@ public:
     {
       return std::string();
     }
-    if (changed.Cells || changed.Points)
+    const std::string broken = FindMeshIntegrityError(input, changed.Cells, changed.Points);
+    if (!broken.empty())
     {
-      std::string broken = FindMeshIntegrityError(input, changed.Cells, changed.Points);
-      if (!broken.empty())
-      {
-        this->Invalidate();
-        return broken;
-      }
+      this->Invalidate();
+      return broken;
     }
     auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
     if (this->Built && !changed.Cells && grid && this->KeepsInputPoints)

@@ -21,10 +21,11 @@ uniform int firstPeel;
 //UV::Hexahedron
 
 /// The boundary face as the exact bilinear patch or triangle, parameterised as every cell sharing it
-/// would; returns its corner count.
-int BoundaryPatch(out vec3 a, out vec3 b, out vec3 c, out vec3 d)
+/// would, and the cell it bounds; returns its corner count.
+int BoundaryPatch(out vec3 a, out vec3 b, out vec3 c, out vec3 d, out int cell)
 {
   ivec4 cellFace = texelFetch(boundaryFaces, boundaryFace);
+  cell = cellFace.x;
   uint cellIds[8];
   CellPointIds(cellFace.x, cellIds);
   vec3 q[4];
@@ -77,14 +78,14 @@ void main()
   vec3 origin, direction;
   EyeRay(PixelNdc(gl_FragCoord.xy, viewportSize), nearPlane, rayDirection, origin, direction);
   vec3 a, b, c, d;
-  int corners = BoundaryPatch(a, b, c, d);
+  int cell;
+  int corners = BoundaryPatch(a, b, c, d, cell);
   // In proportion to the ray parameter and the face, not absolute: meshes of any size and distance.
   float wall = exit.g > 0.5 ? 1e-5 * (abs(exit.r) + length(c - a)) : 0.0;
   float after = firstPeel == 1 ? -3.0e38 : exit.r - wall;
   float t = EntryParameter(origin, direction, a, b, c, d, corners, after);
   // Not back into the cell the walk left the mesh from, where it left it (exit.a, -1: none).
-  if (firstPeel == 0 && exit.g > 0.5 && exit.g < 1.5 && texelFetch(boundaryFaces, boundaryFace).x == int(exit.a) &&
-    t <= exit.r + wall)
+  if (firstPeel == 0 && exit.g > 0.5 && exit.g < 1.5 && cell == int(exit.a) && t <= exit.r + wall)
     discard;
   if (!(t < 3.0e38))
   {
