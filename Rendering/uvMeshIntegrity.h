@@ -172,6 +172,17 @@ NonFinitePoints FindNonFinitePoints(const Real* coordinates, std::int64_t pointC
   return found;
 }
 
+/// The GPU programs address points, cells and their texels with GLSL's int (texelFetch's coordinate,
+/// gl_VertexID), which is 32-bit and signed: a larger index would wrap and read another cell.
+constexpr std::int64_t LargestGPUIndex = std::numeric_limits<std::int32_t>::max();
+
+/// Whether `count` items addressed by `indicesPerItem` consecutive indices each (a tetrahedron's four
+/// corner ids, a hexahedron's eight) keep every index within LargestGPUIndex.
+constexpr bool IndicesFitGPU(std::int64_t count, std::int64_t indicesPerItem)
+{
+  return count >= 0 && indicesPerItem > 0 && count <= (LargestGPUIndex + 1) / indicesPerItem;
+}
+
 } // namespace uv
 
 #endif

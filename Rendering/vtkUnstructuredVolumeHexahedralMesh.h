@@ -145,6 +145,12 @@ private:
     {
       return "the higher-order cells cannot be subdivided (see the errors above)";
     }
+    std::string range = IndexRangeError("points", linear->GetNumberOfPoints(), 1);
+    range = range.empty() ? IndexRangeError("cells", linear->GetNumberOfCells(), 8) : range;
+    if (!range.empty())
+    {
+      return range;
+    }
     this->Points.Build(linear, drawn);
     const vtkIdType others = this->ReadCells(linear);
     if (others > 0)

@@ -232,6 +232,19 @@ inline std::string FindMeshIntegrityError(vtkUnstructuredGridBase* input, bool c
   return error.empty() && (cells || points) ? FindNonFinitePointsError(input, consequence) : error;
 }
 
+/// The error for a mesh whose `count` `what` (a mapper's points, tetrahedra or cells, each addressed
+/// by `indicesPerItem` indices) do not fit the GPU programs' 32-bit indices, or an empty string.
+inline std::string IndexRangeError(const char* what, std::int64_t count, std::int64_t indicesPerItem)
+{
+  if (uv::IndicesFitGPU(count, indicesPerItem))
+    return std::string();
+  std::ostringstream error;
+  error << "the mesh has " << count << " " << what << ", more than the " << (uv::LargestGPUIndex + 1) / indicesPerItem
+        << " the GPU programs' 32-bit indices address; render it in parts (for example on several ranks). "
+           "Nothing is drawn.";
+  return error.str();
+}
+
 } // namespace uvvtk
 
 #endif

@@ -257,6 +257,8 @@ private:
   {
     progress(0.0); // preparation (split, arrays) can take seconds on large meshes
     std::string error = this->SplitIntoTetrahedra(input, scalar, progress);
+    error = error.empty() ? IndexRangeError("points", this->Tetrahedra->GetNumberOfPoints(), 1) : error;
+    error = error.empty() ? IndexRangeError("tetrahedra", this->Tetrahedra->GetNumberOfCells(), 4) : error;
     if (!error.empty())
     {
       return error;

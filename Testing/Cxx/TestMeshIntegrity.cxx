@@ -151,3 +151,17 @@ TEST(MeshIntegrity, PolyhedronFaceStreams)
   EXPECT_TRUE(sound({ 1, 2, 0, 1 }, 8)); // a face of two points
   EXPECT_TRUE(sound({ 0 }, 8));          // no face
 }
+
+TEST(MeshIntegrity, GPUIndicesStopAtTwoToThe31)
+{
+  constexpr std::int64_t limit = std::int64_t(1) << 31;
+  EXPECT_TRUE(uv::IndicesFitGPU(limit, 1));
+  EXPECT_FALSE(uv::IndicesFitGPU(limit + 1, 1));
+  EXPECT_TRUE(uv::IndicesFitGPU(limit / 4, 4));       // the last tetrahedron's last corner is 2^31 - 1
+  EXPECT_FALSE(uv::IndicesFitGPU(limit / 4 + 1, 4));
+  EXPECT_TRUE(uv::IndicesFitGPU(limit / 8, 8));
+  EXPECT_FALSE(uv::IndicesFitGPU(limit / 8 + 1, 8));
+  EXPECT_TRUE(uv::IndicesFitGPU(0, 8));
+  EXPECT_FALSE(uv::IndicesFitGPU(-1, 8));
+  EXPECT_FALSE(uv::IndicesFitGPU(std::numeric_limits<std::int64_t>::max(), 4));
+}
