@@ -29,6 +29,13 @@
 namespace uv
 {
 
+/// Whether the tetrahedron with these 4 point ids repeats one: it has no volume, and two of its
+/// faces are one face.
+inline bool HasRepeatedCorner(const std::uint32_t* c)
+{
+  return c[0] == c[1] || c[0] == c[2] || c[0] == c[3] || c[1] == c[2] || c[1] == c[3] || c[2] == c[3];
+}
+
 /// Per tetrahedron the tetrahedron across the face opposite each corner, or -1 on the boundary.
 /// `corners` holds 4 point ids per tetrahedron; two tetrahedra are neighbours where both hold the
 /// same three ids. A face held by three or more (a non-manifold mesh) and a tetrahedron with a
@@ -40,10 +47,7 @@ template <typename ParallelFor>
 std::vector<std::int32_t> MakeTetrahedronFaceAdjacency(const std::vector<std::uint32_t>& corners, ParallelFor&& parallelFor)
 {
   const std::size_t count = corners.size() / 4;
-  const auto degenerate = [&corners](std::size_t t) {
-    const std::uint32_t* c = &corners[4 * t];
-    return c[0] == c[1] || c[0] == c[2] || c[0] == c[3] || c[1] == c[2] || c[1] == c[3] || c[2] == c[3];
-  };
+  const auto degenerate = [&corners](std::size_t t) { return HasRepeatedCorner(&corners[4 * t]); };
   std::size_t pointCount = 0;
   for (std::uint32_t id : corners)
     pointCount = std::max<std::size_t>(pointCount, std::size_t(id) + 1);

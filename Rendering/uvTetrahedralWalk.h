@@ -13,6 +13,7 @@
 #define uvTetrahedralWalk_h
 
 #include "uvBoundaryGapOrder.h"
+#include "uvFaceAdjacencyOrder.h"
 
 #include <glm/glm.hpp>
 
@@ -80,12 +81,16 @@ std::vector<std::uint32_t> CoincidentPointIds(const std::vector<float>& position
   return representative;
 }
 
-/// The boundary faces, tetrahedron * 4 + the corner opposite the face, in tetrahedron order.
-inline std::vector<std::int32_t> BoundaryFaceRecords(const std::vector<std::int32_t>& packedNeighbours)
+/// The boundary faces, tetrahedron * 4 + the corner opposite the face, in tetrahedron order. A
+/// tetrahedron with a repeated corner id (`corners`, matched as for the adjacency) bounds nothing:
+/// MakeTetrahedronFaceAdjacency gives it no neighbour, and a ray entering by one of its two
+/// coincident faces would leave at once by the other, peel after peel.
+inline std::vector<std::int32_t> BoundaryFaceRecords(
+  const std::vector<std::int32_t>& packedNeighbours, const std::vector<std::uint32_t>& corners)
 {
   std::vector<std::int32_t> faces;
   for (std::size_t i = 0; i < packedNeighbours.size(); ++i)
-    if (packedNeighbours[i] < 0)
+    if (packedNeighbours[i] < 0 && !HasRepeatedCorner(&corners[i & ~std::size_t(3)]))
       faces.push_back(static_cast<std::int32_t>(i));
   return faces;
 }

@@ -64,7 +64,7 @@ public:
       corners[i] = same[mesh.TetrahedronPoints[i]];
     const std::vector<std::int32_t> adjacency = uv::MakeTetrahedronFaceAdjacency(corners, uvvtk::ParallelFor);
     this->Neighbours = uv::PackedFaceNeighbours(adjacency, uvvtk::ParallelFor);
-    this->Boundary = uv::BoundaryFaceRecords(this->Neighbours);
+    this->Boundary = uv::BoundaryFaceRecords(this->Neighbours, corners);
     const auto position = [&mesh](std::size_t t, int k) { return glm::dvec3(mesh.Corner(t, k)); };
     this->Reentry = uv::MoveReentryFacesFirst(
       this->Boundary, corners, adjacency, position, uvvtk::ParallelFor, MaximumHullTestFaces);

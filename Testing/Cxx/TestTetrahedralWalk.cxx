@@ -31,7 +31,7 @@ struct WalkMesh
     for (const glm::dvec3& p : mesh.Points)
       this->Positions.insert(this->Positions.end(), { float(p.x), float(p.y), float(p.z) });
     this->Neighbours = uv::PackedFaceNeighbours(uv::MakeTetrahedronFaceAdjacency(mesh.Corners, Serial), Serial);
-    this->Boundary = uv::BoundaryFaceRecords(this->Neighbours);
+    this->Boundary = uv::BoundaryFaceRecords(this->Neighbours, mesh.Corners);
   }
 };
 
@@ -142,6 +142,24 @@ TEST(TetrahedralWalk, NeighboursAreMutualAndTheBoundaryIsTheSurface)
       EXPECT_EQ(walk.Neighbours[across], static_cast<std::int32_t>(i));
   }
   EXPECT_EQ(walk.Boundary.size(), 6u * 9u * 2u); // two triangles per square of the cube's surface
+}
+
+TEST(TetrahedralWalk, TetrahedraWithARepeatedCornerBoundNothing)
+{
+  // A collapsed layer, once its points are matched by position: tetrahedra on two coincident
+  // points, lying on the surface. Their faces are no boundary a ray could enter by (entering by one
+  // of the two coincident faces, it left by the other at once, peel after peel).
+  Mesh mesh = Cubes(3, [](glm::dvec3 p) { return p; });
+  const std::size_t before = WalkMesh(mesh).Boundary.size(), sound = mesh.Count();
+  const std::vector<std::uint32_t> surface(mesh.Corners.begin(), mesh.Corners.begin() + 4);
+  mesh.Corners.insert(mesh.Corners.end(), { surface[0], surface[1], surface[2], surface[2] });
+  mesh.Corners.insert(mesh.Corners.end(), { surface[3], surface[3], surface[1], surface[0] });
+  const WalkMesh walk(mesh);
+  EXPECT_EQ(walk.Boundary.size(), before);
+  for (std::int32_t record : walk.Boundary)
+    EXPECT_LT(std::size_t(record / 4), sound);
+  for (std::size_t i = 4 * sound; i < walk.Neighbours.size(); ++i)
+    EXPECT_EQ(walk.Neighbours[i], -1);
 }
 
 TEST(TetrahedralWalk, CoincidentPointsShareOneId)
