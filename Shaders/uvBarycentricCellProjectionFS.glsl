@@ -39,7 +39,7 @@ uniform samplerBuffer neighbourValues; // per tetrahedron, the value across the 
 /// colour and alpha. None when the ray starts inside (the eye is in the cell).
 vec4 EntryFaceSurfaces(BarycentricRay ray, vec3 toEye)
 {
-  vec4 entries = mix(vec4(-1.0), ZeroCrossings(ray), greaterThan(ray.perUnit, vec4(0.0)));
+  vec4 entries = mix(vec4(-1.0), ZeroCrossings(ray), greaterThan(ray.perUnit, vec4(RateFloor(ray.perUnit))));
   int corner = 0;
   for (int k = 1; k < 4; ++k)
     corner = entries[k] > entries[corner] ? k : corner;

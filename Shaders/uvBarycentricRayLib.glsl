@@ -41,6 +41,18 @@ uniform float nearDepth; // eye-space depth of the near clipping plane, where ra
 uniform sampler2D opaqueDistances; // r: the distance of the scene's opaque geometry, per pixel
 #endif
 
+/// The least rate of change along the ray that lets a coordinate set the entry or the exit. A ray
+/// lying in a face's plane changes that face's coordinate only by rounding, which may give it either
+/// sign and put its zero anywhere along the ray, dropping the segment; yet the coordinate stays
+/// within rounding of its value at the fragment's point, which the rasteriser found inside the
+/// tetrahedron, so it bounds nothing. A coordinate this much slower than the fastest changes by a
+/// negligible fraction of the tetrahedron over the whole segment.
+float RateFloor(vec4 rate)
+{
+  vec4 size = abs(rate);
+  return 1e-5 * max(max(size.x, size.y), max(size.z, size.w));
+}
+
 #ifdef UV_DEPTH_RAY
 /// A fragment's ray from its point on the face: the barycentric coordinates there and their change per
 /// unit of eye depth. Perspective: rayDirection is M^-1 applied to the eye-space point, exact under
@@ -68,14 +80,14 @@ vec4 ZeroOffsets(FaceRay ray)
 /// coordinates' rates sum to 0, so some coordinate grows and some falls.)
 float EntryOffset(FaceRay ray)
 {
-  vec4 entries = mix(vec4(-3.0e38), ZeroOffsets(ray), greaterThan(ray.rate, vec4(0.0)));
+  vec4 entries = mix(vec4(-3.0e38), ZeroOffsets(ray), greaterThan(ray.rate, vec4(RateFloor(ray.rate))));
   return max(max(entries.x, entries.y), max(entries.z, entries.w));
 }
 
 /// Where it leaves: the first offset at which a falling coordinate reaches 0 (about 0 on a back face).
 float ExitOffset(FaceRay ray)
 {
-  vec4 exits = mix(vec4(3.0e38), ZeroOffsets(ray), lessThan(ray.rate, vec4(0.0)));
+  vec4 exits = mix(vec4(3.0e38), ZeroOffsets(ray), lessThan(ray.rate, vec4(-RateFloor(ray.rate))));
   return min(min(exits.x, exits.y), min(exits.z, exits.w));
 }
 
@@ -126,7 +138,7 @@ float NearDistance(BarycentricRay ray)
 /// ray is 0, or the near plane where the tetrahedron begins in front of it.
 float EntryDistance(BarycentricRay ray)
 {
-  vec4 entries = mix(vec4(0.0), ZeroCrossings(ray), greaterThan(ray.perUnit, vec4(0.0)));
+  vec4 entries = mix(vec4(0.0), ZeroCrossings(ray), greaterThan(ray.perUnit, vec4(RateFloor(ray.perUnit))));
   return max(max(entries.x, entries.y), max(max(entries.z, entries.w), NearDistance(ray)));
 }
 
@@ -134,7 +146,7 @@ float EntryDistance(BarycentricRay ray)
 /// distance on a back face, up to rounding; computed so any face of the tetrahedron will do.
 float ExitDistance(BarycentricRay ray)
 {
-  vec4 exits = mix(vec4(3.0e38), ZeroCrossings(ray), lessThan(ray.perUnit, vec4(0.0)));
+  vec4 exits = mix(vec4(3.0e38), ZeroCrossings(ray), lessThan(ray.perUnit, vec4(-RateFloor(ray.perUnit))));
   return min(min(exits.x, exits.y), min(exits.z, exits.w));
 }
 
