@@ -46,9 +46,40 @@ import time_series  # noqa: E402
 MAPPERS = {"tets": time_series.TETRAHEDRAL_MAPPERS, "hexahedra": time_series.HEXAHEDRAL_MAPPERS}
 # Half the cells per side, R, of each mesh: five tetrahedra per cell of (2R)^3, or (2R)^3 hexahedra.
 SIZES = {"tets": (6, 14, 29, 63), "hexahedra": (11, 23, 50, 63)}
+# --limit: the 256^3 wavelet (83.9 M tetrahedra, 16.8 M hexahedra), this project's mappers only, one
+# view drawn twice (preparation, then the frame). Its rows go to a section of SCALE.md of their own.
+LIMIT_HALF = 128
+LIMIT_BEGIN, LIMIT_END = "<!-- limit run: begin -->", "<!-- limit run: end -->"
 SIZE_PX = 256
 FIT_FROM = 8e4  # slopes from about 1e5 cells up: below, fixed costs (a GL context) dominate
 README_SCALE = os.path.join(ROOT, "Testing", "Benchmark", "SCALE.md")
+
+
+def limit_section(rows, run):
+    """SCALE.md's section on the limit mesh, between its markers."""
+    machine = run["machine"]
+    return "\n".join([
+        LIMIT_BEGIN,
+        "## At the limit: the 256^3 wavelet",
+        "",
+        f"Written by `{run['command']}`" + "".join(f"; resumed by `{again}`" for again in run["resumed"]) +
+        f" on {run['started']} (load average {machine['load']}; limits: {machine['limits']}).",
+        "Each of this project's mappers on the 256^3 wavelet: 83.9 M tetrahedra (split in five) and 16.8 M",
+        "hexahedra, and a larger mesh past a limit. One view drawn twice: preparation as above, the frame is",
+        "the second. The status gives the pixels the frame drew (a mapper that cannot draw the mesh must say",
+        "so in one error and draw nothing: its error is then the status).",
+        "",
+        markdown_table(rows).rstrip("\n"),
+        LIMIT_END,
+    ])
+
+
+def with_limit_section(text, section):
+    """`text` (SCALE.md) with its limit section replaced by `section`, or `section` added at its end."""
+    if LIMIT_BEGIN in text and LIMIT_END in text:
+        head, rest = text.split(LIMIT_BEGIN, 1)
+        return head + section + rest.split(LIMIT_END, 1)[1]
+    return text.rstrip("\n") + "\n\n" + section + "\n"
 
 
 def cells_of(kind, half):
@@ -66,7 +97,10 @@ def status_megabytes(field):
 
 # ---------------------------------------------------------------------------------------------
 # One (mesh, mapper) in this process.
-def run_one(kind, half, name):
+def run_one(kind, half, name, views=4):
+    from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
+    messages = vtkStringOutputWindow()
+    vtkOutputWindow.SetInstance(messages)  # a mapper's error is the run's result, not only a log line
     factory = dict(MAPPERS[kind])[name]
     start = time.perf_counter()
     mesh = time_series.wavelet_grid(half, kind == "tets")
@@ -74,18 +108,25 @@ def run_one(kind, half, name):
     mesh_hwm, mesh_rss = status_megabytes("VmHWM"), status_megabytes("VmRSS")
     print(f"STAGE mesh {mesh.GetNumberOfCells()} cells in {build:.1f} s, {mesh_rss:.0f} MB", flush=True)
     prop, _, _ = benchmark.volume_property(mesh, "RTData", benchmark.smooth_ramp, 0.05)
-    orbit = benchmark.orbit(mesh, 4)
-    # The first view twice: the first frame less the second is the preparation; then 3 views.
+    orbit = benchmark.orbit(mesh, views)
+    # The first view twice: the first frame less the second is the preparation; then the other views.
     cameras = [orbit[0]] + orbit
     # Skipping counts are not wanted here, and counting costs the tetrahedra mapper an extra frame.
     benchmark.work_done = lambda *args: {}
-    first, frames, memory, _, (mesh_bytes, host_bytes), _ = benchmark.run_mapper(
+    first, frames, memory, images, (mesh_bytes, host_bytes), _ = benchmark.run_mapper(
         name, factory, mesh, "RTData", prop, cameras, SIZE_PX)
+    # A frame that draws nothing is no frame: the pixels the last image covers.
+    alpha = images[-1].GetPointData().GetScalars()
+    covered = sum(1 for p in range(alpha.GetNumberOfTuples()) if alpha.GetComponent(p, 3) > 0.01)
     cells = mesh.GetNumberOfCells()
+    # VTK's error text: "ERROR: In <file>, line <n>", then "<class> (<address>): <message>".
+    lines = messages.GetOutput().splitlines()
+    errors = [lines[i + 1].split("): ", 1)[-1] for i, line in enumerate(lines[:-1]) if line.startswith("ERROR")]
     return {
-        "kind": kind, "half": half, "cells": cells, "mapper": name, "status": "ok",
-        "build_s": build, "first_s": first, "preparation_s": max(first - frames[0], 0.0),
-        "frame_s": statistics.median(frames[1:]), "frames_s": frames,
+        "kind": kind, "half": half, "cells": cells, "mapper": name,
+        "status": "ok" if not errors else f"error ({len(errors)}): {errors[0][:300]}",
+        "covered_px": covered, "build_s": build, "first_s": first, "preparation_s": max(first - frames[0], 0.0),
+        "frame_s": statistics.median(frames[1:] or frames), "frames_s": frames,
         "host_bytes_per_cell": (host_bytes if host_bytes is not None else memory * 2**20) / cells,
         "host_counted": host_bytes is not None,
         "gpu_bytes_per_cell": None if mesh_bytes is None else mesh_bytes / cells,
@@ -135,8 +176,12 @@ def watch(command, log_path, limit_s, cap_mb):
     return status, seconds, seen, result
 
 
-def planned_runs(kinds, mappers_wanted):
-    """(kind, R, mapper) in the order run: smallest meshes, largest, then the rest from small up."""
+def planned_runs(kinds, mappers_wanted, limit=None):
+    """(kind, R, mapper) in the order run: smallest meshes, largest, then the rest from small up; with
+    `limit` (an R), this project's mappers on that mesh only."""
+    if limit:
+        return [(kind, limit, name) for kind in kinds for name, _ in MAPPERS[kind] if name.startswith("UV")
+                and (not mappers_wanted or any(w in name for w in mappers_wanted))]
     runs = {}
     for kind in kinds:
         for name, _ in MAPPERS[kind]:
@@ -203,14 +248,14 @@ def markdown_table(rows):
     order = [name for kind in MAPPERS for name, _ in MAPPERS[kind]]
     for r in sorted(rows, key=lambda r: (order.index(r["mapper"]), r["cells"])):
         unit = "tets" if r["kind"] == "tets" else "hex"
-        if r["status"] != "ok":
+        if not r["status"].startswith("ok"):
             seen = f"{r['watched_peak_mb']:.0f} (seen)" if r.get("watched_peak_mb") else ""
             lines.append(f"| {r['cells']:,} {unit} | {r['mapper']} | | | | | {seen} | | | {r['status']} |")
             continue
         host = f"{r['host_bytes_per_cell']:.0f}" + ("" if r["host_counted"] else " (RSS)")
         gpu = "" if r["gpu_bytes_per_cell"] is None else f"{r['gpu_bytes_per_cell']:.0f}"
         lines.append(f"| {r['cells']:,} {unit} | {r['mapper']} | {r['preparation_s']:.3f} | {r['frame_s']:.3f} | "
-                     f"{host} | {gpu} | {r['peak_rss_mb']:.0f} | {r['mapper_peak_mb']:.0f} | {r['build_s']:.1f} | ok |")
+                     f"{host} | {gpu} | {r['peak_rss_mb']:.0f} | {r['mapper_peak_mb']:.0f} | {r['build_s']:.1f} | {r['status']} |")
     return "\n".join(lines) + "\n"
 
 
@@ -348,11 +393,18 @@ def main():
     parser.add_argument("--write-readme", nargs="?", const=README_SCALE, default=None, metavar="PATH",
                         help=f"also write this run's page (default {os.path.relpath(README_SCALE, ROOT)}) "
                              "and its plot beside it")
+    parser.add_argument("--limit", nargs="?", type=int, const=LIMIT_HALF, default=None, metavar="R",
+                        help=f"this project's mappers on the (2R)^3 wavelet only (default R {LIMIT_HALF}: 256^3), "
+                             "into SCALE.md's limit section (--resume adds to it)")
     parser.add_argument("--run", nargs=3, metavar=("KIND", "R", "MAPPER"), help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.run:
-        print("RESULT " + json.dumps(run_one(args.run[0], int(args.run[1]), args.run[2])), flush=True)
+        half = int(args.run[1])
+        views = 1 if half >= LIMIT_HALF else 4
+        print("RESULT " + json.dumps(run_one(args.run[0], half, args.run[2], views)), flush=True)
         return
+    if args.limit and args.output == parser.get_default("output"):
+        args.output += "-limit"
     args.large_timeout = args.large_timeout or args.timeout
     os.makedirs(os.path.join(args.output, "logs"), exist_ok=True)
     results_path, run_path = os.path.join(args.output, "results.json"), os.path.join(args.output, "run.json")
@@ -372,14 +424,15 @@ def main():
         json.dump(run, out, indent=1)
     done = {(r["kind"], r["half"], r["mapper"]) for r in rows}
     deadline = time.monotonic() + 60 * args.budget_minutes
-    for kind, half, name in planned_runs(args.kinds.split(","), args.mappers.split(",") if args.mappers else None):
+    wanted = args.mappers.split(",") if args.mappers else None
+    for kind, half, name in planned_runs(args.kinds.split(","), wanted, args.limit):
         if (kind, half, name) in done:
             continue
         cells = cells_of(kind, half)
         failed_smaller = [r for r in rows if (r["kind"], r["mapper"]) == (kind, name) and r["status"] != "ok"
                           and r["cells"] < cells and not r["status"].startswith("not run")]
         left = deadline - time.monotonic()
-        limit = min(args.large_timeout if half == SIZES[kind][-1] else args.timeout, left)
+        limit = min(args.large_timeout if half >= SIZES[kind][-1] else args.timeout, left)
         if failed_smaller:
             status, seconds, seen, result = f"not run ({failed_smaller[0]['cells']:,} failed)", 0.0, 0.0, None
         elif left < 10:
@@ -389,11 +442,14 @@ def main():
             log = os.path.join(args.output, "logs", f"{kind}_{cells}_{name.replace(' ', '_')}.log")
             status, seconds, seen, result = watch([sys.executable, os.path.abspath(__file__), "--run", kind,
                                                    str(half), name], log, limit, 1024 * args.memory_cap_gb)
-        if result and status is None:
+        if result and status is None and not json.loads(result)["status"].startswith("error"):
             row = json.loads(result)
+            if args.limit:
+                row["status"] = f"ok, {row.get('covered_px', 0):,} of {SIZE_PX ** 2:,} px drawn"
             print(f"prep {row['preparation_s']:.3f} s, frame {row['frame_s']:.3f} s, peak {row['peak_rss_mb']:.0f} MB "
                   f"(mapper {row['mapper_peak_mb']:.0f}), {seconds:.0f} s in all", flush=True)
         else:
+            status = status or (json.loads(result)["status"] if result else None)
             row = {"kind": kind, "half": half, "cells": cells, "mapper": name, "status": status or "no result",
                    "watched_peak_mb": seen, "seconds": seconds}
             print(row["status"], flush=True)
@@ -401,6 +457,15 @@ def main():
         with open(results_path, "w") as out:
             json.dump(rows, out, indent=1)
 
+    if args.limit:
+        print("\n" + markdown_table(rows))
+        if args.write_readme:
+            with open(args.write_readme) as page:
+                text = page.read()
+            with open(args.write_readme, "w") as page:
+                page.write(with_limit_section(text, limit_section(rows, run)))
+            print(f"wrote {args.write_readme}'s limit section")
+        return
     with open(os.path.join(args.output, "results.md"), "w") as out:
         out.write(markdown_table(rows) + "\n" + "\n".join(slope_lines(rows) + [""] + largest_lines(rows)) + "\n")
     plotted = plot(rows, os.path.join(args.output, "scale.png"))
@@ -409,8 +474,13 @@ def main():
     if args.write_readme:
         if plotted:
             shutil.copyfile(plotted, os.path.join(os.path.dirname(os.path.abspath(args.write_readme)), "scale.png"))
+        previous = open(args.write_readme).read() if os.path.exists(args.write_readme) else ""
+        text = scale_text(rows, run, plotted)
+        if LIMIT_BEGIN in previous and LIMIT_END in previous:
+            text = with_limit_section(text, LIMIT_BEGIN + previous.split(LIMIT_BEGIN, 1)[1].split(LIMIT_END, 1)[0]
+                                      + LIMIT_END)
         with open(args.write_readme, "w") as out:
-            out.write(scale_text(rows, run, plotted))
+            out.write(text)
         print(f"wrote {args.write_readme}")
 
 
