@@ -235,7 +235,7 @@ def largest(rows):
     found = {}
     for r in rows:
         best = found.get((r["kind"], r["mapper"]))
-        if r["status"] == "ok" and (best is None or r["cells"] > best):
+        if r["status"].startswith("ok") and (best is None or r["cells"] > best):
             best = r["cells"]
         found[(r["kind"], r["mapper"])] = best
     return found
@@ -429,7 +429,7 @@ def main():
         if (kind, half, name) in done:
             continue
         cells = cells_of(kind, half)
-        failed_smaller = [r for r in rows if (r["kind"], r["mapper"]) == (kind, name) and r["status"] != "ok"
+        failed_smaller = [r for r in rows if (r["kind"], r["mapper"]) == (kind, name) and not r["status"].startswith("ok")
                           and r["cells"] < cells and not r["status"].startswith("not run")]
         left = deadline - time.monotonic()
         limit = min(args.large_timeout if half >= SIZES[kind][-1] else args.timeout, left)
