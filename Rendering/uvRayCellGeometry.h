@@ -371,6 +371,69 @@ inline bool InverseTrilinear(const glm::dvec3 p[8], const glm::dvec3& x, glm::dv
   return InverseIsoparametric(HexahedronShape(), p, x, xi);
 }
 
+/// Face f's corners in the order both cells sharing it use (start at the smallest id, go towards
+/// its smaller-id neighbour: the same patch arithmetic from either side); a triangle repeats its
+/// last corner.
+inline void CanonicalFaceCorners(
+  const IsoparametricShape& shape, int f, const glm::dvec3 p[8], const std::int64_t ids[8], glm::dvec3 q[4])
+{
+  const LocalFace& face = shape.Faces[f];
+  int start = 0;
+  for (int i = 1; i < face.Size; ++i)
+  {
+    start = ids[face.Vertices[i]] < ids[face.Vertices[start]] ? i : start;
+  }
+  const int size = face.Size;
+  const int next = face.Vertices[(start + 1) % size], previous = face.Vertices[(start + size - 1) % size];
+  const int step = ids[next] < ids[previous] ? 1 : size - 1;
+  for (int i = 0; i < size; ++i)
+  {
+    q[i] = p[face.Vertices[(start + step * i) % size]];
+  }
+  if (size == 3)
+  {
+    q[3] = q[2];
+  }
+}
+
+/// Whether the cell claims the part of the ray around `x`. Where the ray runs in the plane of one of
+/// its flat faces (within rounding), both cells sharing the face hold that part in their closure:
+/// only the one ClaimsRayInFacePlane picks counts it, as for tetrahedra. The face's normal is the
+/// same product of canonical corners in both cells, each turning it outward: exact opposites. Along
+/// an edge (two such faces), of the cells around it only the one claiming by both counts it.
+inline bool ClaimsPartAlongFaces(
+  const IsoparametricShape& shape, const Ray& ray, const glm::dvec3 p[8], const std::int64_t ids[8], const glm::dvec3& x)
+{
+  glm::dvec3 centre(0.0);
+  for (int k = 0; k < shape.Corners; ++k)
+  {
+    centre += p[k] / double(shape.Corners);
+  }
+  const glm::dvec3 direction = glm::normalize(ray.Direction);
+  for (int f = 0; f < shape.NumberOfFaces; ++f)
+  {
+    glm::dvec3 q[4];
+    CanonicalFaceCorners(shape, f, p, ids, q);
+    glm::dvec3 normal = glm::cross(q[2] - q[0], q[3] - q[1]);
+    const double area = glm::length(normal), size = glm::length(q[2] - q[0]) + glm::length(q[3] - q[1]);
+    if (!(area > 0.0) || std::abs(glm::dot(normal, q[1] - q[0])) > 1e-9 * area * size)
+    {
+      continue; // collapsed, or not flat: a ray does not run inside a curved patch
+    }
+    if (glm::dot(normal, centre - q[0]) > 0.0)
+    {
+      normal = -normal; // outward
+    }
+    const bool alongPlane = std::abs(glm::dot(normal, direction)) <= 1e-9 * area &&
+      std::abs(glm::dot(normal, x - q[0])) <= 1e-9 * area * size;
+    if (alongPlane && !ClaimsRayInFacePlane(normal))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// The parts of the ray inside an isoparametric cell: its quadrilateral faces are bilinear patches
 /// (a ray may enter a curved cell twice), triangles are patches with a repeated corner. `ids` give
 /// the canonical face order. Appends to `parts`.
@@ -380,26 +443,8 @@ inline void IntersectIsoparametric(const IsoparametricShape& shape, const Ray& r
   scratch.clear();
   for (int f = 0; f < shape.NumberOfFaces; ++f)
   {
-    const LocalFace& face = shape.Faces[f];
-    // Start at the smallest id, go towards its smaller-id neighbour: the same patch arithmetic
-    // from both cells sharing the face.
-    int start = 0;
-    for (int i = 1; i < face.Size; ++i)
-    {
-      start = ids[face.Vertices[i]] < ids[face.Vertices[start]] ? i : start;
-    }
-    const int size = face.Size;
-    const int next = face.Vertices[(start + 1) % size], previous = face.Vertices[(start + size - 1) % size];
-    const int step = ids[next] < ids[previous] ? 1 : size - 1;
     glm::dvec3 q[4];
-    for (int i = 0; i < size; ++i)
-    {
-      q[i] = p[face.Vertices[(start + step * i) % size]];
-    }
-    if (size == 3)
-    {
-      q[3] = q[2];
-    }
+    CanonicalFaceCorners(shape, f, p, ids, q);
     IntersectBilinearPatch(ray, q[0], q[1], q[2], q[3], scratch);
   }
   std::sort(scratch.begin(), scratch.end());
@@ -412,8 +457,9 @@ inline void IntersectIsoparametric(const IsoparametricShape& shape, const Ray& r
       continue;
     }
     glm::dvec3 xi = shape.Centre;
-    if (InverseIsoparametric(shape, p, ray.Origin + 0.5 * (a + b) * ray.Direction, xi) &&
-      shape.Contains(xi, 1e-9))
+    const glm::dvec3 middle = ray.Origin + 0.5 * (a + b) * ray.Direction;
+    if (InverseIsoparametric(shape, p, middle, xi) && shape.Contains(xi, 1e-9) &&
+      ClaimsPartAlongFaces(shape, ray, p, ids, middle))
     {
       if (!parts.empty() && parts.back().Exit == a)
       {
@@ -447,6 +493,16 @@ public:
       this->High = glm::max(this->High, other.High);
     }
   };
+
+  /// `box` grown by a billionth of its diagonal. A ray in the plane of a cell's face, its direction
+  /// off that plane by rounding, meets the exact boxes on one side of the plane only, and the cells
+  /// there may leave it to their neighbours across (ClaimsRayInFacePlane): the cells on both sides
+  /// must be offered it.
+  static Box PaddedForRounding(const Box& box)
+  {
+    const glm::dvec3 pad(1e-9 * glm::length(box.High - box.Low));
+    return { box.Low - pad, box.High + pad };
+  }
 
   explicit BoundingVolumeHierarchy(std::vector<Box> cellBoxes)
     : CellBoxes(std::move(cellBoxes))

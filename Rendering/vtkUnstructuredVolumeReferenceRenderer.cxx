@@ -434,7 +434,7 @@ struct Mesh
         continue;
       }
       this->Cells.push_back(cell);
-      this->Boxes.push_back(box);
+      this->Boxes.push_back(uv::BoundingVolumeHierarchy::PaddedForRounding(box));
       if (this->OnCells())
         this->CellScalar.push_back(this->CellValues[c]);
     }

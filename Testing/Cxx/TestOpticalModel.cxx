@@ -278,6 +278,63 @@ TEST(RayCellGeometry, RayInASharedFacePlaneBelongsToOneTet)
   }
 }
 
+TEST(RayCellGeometry, RayInASharedFacePlaneOrEdgeBelongsToOneHexahedron)
+{
+  // 6 x 1 x 2 unit cubes on shared point ids (more than a leaf of the hierarchy holds); rays along x in the plane z = 1 between the layers,
+  // and along y on the edge x = 1, z = 1 that four cells share, their directions off the plane by
+  // rounding as a camera's unprojection gives them. The padded boxes offer each ray to every cell
+  // around it; the lengths the cells claim must add up to the chord once.
+  auto id = [](int i, int j, int k) { return std::int64_t((k * 2 + j) * 7 + i); };
+  std::vector<std::array<std::int64_t, 8>> cells;
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < 6; ++i)
+      cells.push_back({ id(i, 0, k), id(i + 1, 0, k), id(i + 1, 1, k), id(i, 1, k), id(i, 0, k + 1),
+        id(i + 1, 0, k + 1), id(i + 1, 1, k + 1), id(i, 1, k + 1) });
+  auto point = [](std::int64_t n) { return glm::dvec3(double(n % 7), double((n / 7) % 2), double(n / 14)); };
+  std::vector<uv::BoundingVolumeHierarchy::Box> boxes;
+  for (const auto& cell : cells)
+  {
+    uv::BoundingVolumeHierarchy::Box box;
+    for (std::int64_t n : cell)
+      box.Add({ point(n), point(n) });
+    boxes.push_back(uv::BoundingVolumeHierarchy::PaddedForRounding(box));
+  }
+  const uv::BoundingVolumeHierarchy hierarchy(boxes);
+  struct Case
+  {
+    glm::dvec3 Origin, Direction;
+    double Chord;
+  };
+  const double below = std::nextafter(1.0, 0.0), above = std::nextafter(1.0, 2.0); // 1 within rounding
+  const Case cases[] = {
+    { { -1.0, 0.3, below }, { 1.0, 0.0, -1e-17 }, 6.0 }, // in the plane between the layers
+    { { -1.0, 0.7, above }, { 1.0, 0.0, 1e-17 }, 6.0 },
+    { { -1.0, 0.3, 1.0 }, { 1.0, 0.0, 0.0 }, 6.0 },      // exactly in it
+    { { below, -1.0, above }, { 0.0, 1.0, -1e-17 }, 1.0 }, // along the edge where four cells meet
+    { { above, -1.0, below }, { 1e-17, 1.0, 1e-17 }, 1.0 },
+    { { 0.5, 0.5, -1.0 }, { 0.0, 0.0, 1.0 }, 2.0 },      // across the plane: no tie
+  };
+  for (const Case& c : cases)
+  {
+    const uv::Ray ray{ c.Origin, glm::normalize(c.Direction) };
+    double length = 0.0;
+    int claimed = 0;
+    hierarchy.Traverse(ray, [&](std::int64_t cell) {
+      glm::dvec3 p[8];
+      for (int k = 0; k < 8; ++k)
+        p[k] = point(cells[cell][k]);
+      std::vector<uv::Interval> parts;
+      std::vector<double> scratch;
+      uv::IntersectHexahedron(ray, p, cells[cell].data(), parts, scratch);
+      for (const uv::Interval& part : parts)
+        length += part.Exit - part.Enter;
+      claimed += parts.empty() ? 0 : 1;
+    });
+    EXPECT_NEAR(length, c.Chord, 1e-9) << "origin " << c.Origin.x << " " << c.Origin.y << " " << c.Origin.z;
+    EXPECT_EQ(claimed, int(c.Chord + 0.5)) << "one cell per unit of the chord";
+  }
+}
+
 TEST(ChebyshevSeries, ResolvesSmoothFunctionsAndRejectsKinks)
 {
   uv::ChebyshevSeries series;
