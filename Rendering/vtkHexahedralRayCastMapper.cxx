@@ -171,6 +171,7 @@ struct GpuResources
 {
   vtkUnstructuredVolumeBufferTexture CellPoints, Points, Neighbours, BoundaryFaces;
   vtkUnstructuredVolumeBufferTexture CellScalars; // cell data only
+  vtkUnstructuredVolumeBufferTexture CellDensities; // only where cells coincide
   vtkUnstructuredVolumeBufferTexture VisibleCells; // skipping only
   vtkUnstructuredVolumeBufferTexture PointGradients; // vertex-gradient lighting only
   vtkUnstructuredVolumeTransferFunctionTexture TransferFunction;
@@ -179,7 +180,8 @@ struct GpuResources
   void Release()
   {
     for (vtkUnstructuredVolumeBufferTexture* texture : { &this->CellPoints, &this->Points, &this->Neighbours,
-           &this->BoundaryFaces, &this->CellScalars, &this->VisibleCells, &this->PointGradients })
+           &this->BoundaryFaces, &this->CellScalars, &this->CellDensities, &this->VisibleCells,
+           &this->PointGradients })
       texture->Release();
     this->TransferFunction.Release();
     this->Isosurfaces.Release();
@@ -331,6 +333,7 @@ struct TraversalSettings
   int StartCell = -1;   // where the first peel's rays start (RayStartCell), or -1
   int IsosurfaceCount = 0;
   bool CellScalars = false;    // the mesh's scalar is per cell (uploaded to GpuResources::CellScalars)
+  bool CellDensities = false;  // some cells stand for coincident copies (GpuResources::CellDensities)
   bool SkipInvisibleCells = false; // rays enter and leave at the visible region (GpuResources::VisibleCells)
   bool VertexGradients = false;    // isosurfaces lit by GpuResources::PointGradients
   bool LastPeel = false;           // no peel is left to pick a ray up
@@ -350,9 +353,9 @@ public:
     images.Framebuffer->AddColorAttachment(1, images.Exit);
     images.Framebuffer->ActivateDrawBuffers(2);
     const bool cellScalars = settings.CellScalars, skip = settings.SkipInvisibleCells;
-    const bool vertexGradients = settings.VertexGradients;
+    const bool vertexGradients = settings.VertexGradients, densities = settings.CellDensities;
     vtkShaderProgram* program = this->Ready(pass.Frame->Window,
-      { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip, vertexGradients });
+      { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip, vertexGradients, densities });
     if (program)
     {
       images.Entry->Activate();
@@ -367,6 +370,8 @@ public:
       gpu.Points.Bind(program, "pointData");
       if (cellScalars)
         gpu.CellScalars.Bind(program, "cellScalars");
+      if (densities)
+        gpu.CellDensities.Bind(program, "cellDensities");
       if (skip)
         gpu.VisibleCells.Bind(program, "visibleCells");
       if (vertexGradients)
@@ -384,6 +389,8 @@ public:
         texture->Unbind();
       if (cellScalars)
         gpu.CellScalars.Unbind();
+      if (densities)
+        gpu.CellDensities.Unbind();
       if (skip)
         gpu.VisibleCells.Unbind();
       if (vertexGradients)
@@ -666,6 +673,8 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
     impl.Gpu.VisibleCells.Sync(window, impl.Entries.VisibleCellBits(), 1, impl.Entries.Version);
   if (!mesh.CellScalars.empty())
     impl.Gpu.CellScalars.Sync(window, mesh.CellScalars, 1, mesh.Version);
+  if (!mesh.CellDensities.empty())
+    impl.Gpu.CellDensities.Sync(window, mesh.CellDensities, 1, mesh.CellsVersion);
   if (impl.NeedGradients)
     impl.Gpu.PointGradients.Sync(window, impl.Gradients.Values, 4, impl.Gradients.Version);
   impl.Gpu.TransferFunction.Sync(window, impl.TransferFunction.Nodes);
@@ -688,6 +697,7 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.SkipInvisibleCells = impl.Entries.Skipping();
   settings.IsosurfaceCount = static_cast<int>(impl.DrawnIsosurfaces.size());
   settings.CellScalars = !impl.Mesh.CellScalars.empty();
+  settings.CellDensities = !impl.Mesh.CellDensities.empty();
   settings.VertexGradients = impl.NeedGradients;
 
   impl.Images.Framebuffer->SaveCurrentBindingsAndBuffers();

@@ -34,11 +34,13 @@ struct vtkHexahedralRayCastPrograms
     bool CellScalars = false; // one scalar per cell (cell data), constant inside it
     bool SkipInvisibleCells = false; // rays leave the visible region to the next peel
     bool VertexGradients = false; // isosurfaces lit by interpolated vertex gradients (point scalars only)
+    bool CellDensities = false;   // some cells stand for coincident copies: their media add up
 
     bool operator==(const TraversalOptions& other) const
     {
       return this->NodeTexture == other.NodeTexture && this->CellScalars == other.CellScalars &&
-        this->SkipInvisibleCells == other.SkipInvisibleCells && this->VertexGradients == other.VertexGradients;
+        this->SkipInvisibleCells == other.SkipInvisibleCells && this->VertexGradients == other.VertexGradients &&
+        this->CellDensities == other.CellDensities;
     }
   };
 
@@ -65,6 +67,8 @@ struct vtkHexahedralRayCastPrograms
       defines += "#define UV_SKIP_INVISIBLE_CELLS\n";
     if (options.VertexGradients)
       defines += "#define UV_VERTEX_GRADIENTS\n";
+    if (options.CellDensities)
+      defines += "#define UV_CELL_DENSITIES\n";
     sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
       { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
         { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib },
@@ -79,8 +83,9 @@ struct vtkHexahedralRayCastPrograms
       for (bool cellScalars : { false, true })
         for (bool skip : { false, true })
           for (bool vertexGradients : { false, true })
-            if (!(cellScalars && vertexGradients)) // a cell scalar's surfaces are lit by their faces
-              all.push_back({ nodeTexture, cellScalars, skip, vertexGradients });
+            for (bool densities : { false, true })
+              if (!(cellScalars && vertexGradients)) // a cell scalar's surfaces are lit by their faces
+                all.push_back({ nodeTexture, cellScalars, skip, vertexGradients, densities });
     return all;
   }
 };

@@ -26,6 +26,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -43,6 +44,7 @@ class HexahedralMesh
 public:
   std::vector<std::uint32_t> CellPoints; // 8 per cell, VTK hexahedron order
   std::vector<float> CellScalars;        // per cell, normalised, for a cell scalar (else empty)
+  std::vector<float> CellDensities;      // per cell, the copies it stands for (else empty: none repeats)
   RecentredPoints Points;
   uv::HexahedralFaces Faces;
   // What CellPoints' ids index (the input, or its subdivision) and the scalar rendered on it, as of
@@ -50,6 +52,7 @@ public:
   vtkSmartPointer<vtkDataSet> Drawn;
   RenderedScalar DrawnScalar;
   vtkIdType TangledCells = 0, NaNCells = 0;
+  vtkIdType MergedCopies = 0; // cells merged into a coincident one (CellDensities)
   vtkIdType FlatCells = 0; // vertices, lines and polygons: not volumes, left out
   int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;
   std::uint64_t Version = 0;      // bumped by every change: positions, values, cells
@@ -109,6 +112,8 @@ private:
   /// New positions and values of the cells built from; false when the cells drawn would differ.
   bool Refresh(vtkDataSet* input, const RenderedScalar& scalar, const MeshChanges& changed)
   {
+    if (!this->CellDensities.empty())
+      return false; // which cells coincide may change with the points or values: built again
     std::vector<std::uint32_t> cells = std::move(this->CellPoints);
     std::vector<float> cellScalars = std::move(this->CellScalars);
     const uv::ScalarNormalisation normalisation = this->Points.Normalisation;
@@ -161,10 +166,11 @@ private:
                                       "higher-order ones): split the mesh with vtkHexahedraToTetrahedra and render "
                                       "it with vtkPreIntegratedTetrahedraMapper";
     }
-    this->TangledCells =
-      static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
     const std::vector<std::uint32_t> samePoint = uv::CoincidentPointRepresentatives(
       this->Points.Values, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
+    this->MergeCoincidentCells(samePoint);
+    this->TangledCells =
+      static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
     this->Faces = uv::MakeHexahedralFaces(
       this->CellPoints, samePoint, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
       [&progress](double fraction) { progress(0.8 * fraction); });
@@ -179,7 +185,7 @@ public:
   std::size_t Bytes() const
   {
     return sizeof(std::uint32_t) * this->CellPoints.size() + sizeof(float) * this->Points.Values.size() +
-      sizeof(float) * this->CellScalars.size() +
+      sizeof(float) * (this->CellScalars.size() + this->CellDensities.size()) +
       sizeof(std::int32_t) * (this->Faces.Neighbours.size() + this->Faces.Boundary.size());
   }
 
@@ -206,6 +212,34 @@ private:
   }
 
   vtkSmartPointer<vtkUnstructuredGrid> Subdivided; // the linear hexahedra drawn for higher-order ones
+
+  /// Cells that repeat another (uv::CoincidentCellDensities) become one cell of their count's density.
+  void MergeCoincidentCells(const std::vector<std::uint32_t>& samePoint)
+  {
+    std::vector<float> density = uv::CoincidentCellDensities(this->CellPoints, samePoint, this->Points.Values,
+      this->CellScalars, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
+    this->CellDensities.clear();
+    this->MergedCopies = 0;
+    if (density.empty())
+      return;
+    std::size_t kept = 0;
+    for (std::size_t c = 0; c < density.size(); ++c)
+    {
+      if (density[c] == 0.0f)
+      {
+        ++this->MergedCopies;
+        continue;
+      }
+      std::copy_n(this->CellPoints.begin() + 8 * c, 8, this->CellPoints.begin() + 8 * kept);
+      if (!this->CellScalars.empty())
+        this->CellScalars[kept] = this->CellScalars[c];
+      this->CellDensities.push_back(density[c]);
+      ++kept;
+    }
+    this->CellPoints.resize(8 * kept);
+    if (!this->CellScalars.empty())
+      this->CellScalars.resize(kept);
+  }
 
   /// Where a cell's points go among a hexahedron's 8 corners (uvHexahedralMesh.h's orders), or
   /// null for a cell the walk cannot take.

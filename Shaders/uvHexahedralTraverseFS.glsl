@@ -22,6 +22,9 @@ uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
 uniform sampler2D opaqueDepth;
 uniform isamplerBuffer boundaryFaces;
 uniform isamplerBuffer cellNeighbours; // per cell 6 values (2 texels): neighbour * 8 + its face, or -1
+#ifdef UV_CELL_DENSITIES
+uniform samplerBuffer cellDensities;    // per cell, the coincident copies it stands for (media add up)
+#endif
 #ifdef UV_CELL_SCALARS
 uniform samplerBuffer cellScalars;      // cell data: one normalised value per cell, constant in it
 #endif
@@ -737,8 +740,9 @@ vec4 FieldThroughExactEnds(vec3 entryPoint, vec3 exitPoint, inout vec3 xi0, inou
     TrilinearAlongSegment(scalars, xi1, xi1).x);
 }
 
-/// Integrates the loaded cell along the ray from parameter t to segmentEnd.
-void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd)
+/// Integrates the loaded cell along the ray from parameter t to segmentEnd, its medium `density`
+/// times over.
+void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd, float density)
 {
   HexahedronFrame frame = MakeHexahedronFrame(points);
   vec3 entryPoint = origin + t * direction, exitPoint = origin + segmentEnd * direction;
@@ -759,7 +763,18 @@ void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd)
   segmentXi1 = xi1;
   segmentStartPoint = entryPoint;
   segmentEndPoint = exitPoint;
-  IntegrateCubicSegment(field, segmentEnd - t);
+  // Coincident copies add their media: the same as a path `density` times as long.
+  IntegrateCubicSegment(field, (segmentEnd - t) * density);
+}
+
+/// How many coincident copies `cell` stands for (uvHexahedralMesh.h's CoincidentCellDensities).
+float CellDensity(int cell)
+{
+#ifdef UV_CELL_DENSITIES
+  return texelFetch(cellDensities, cell).r;
+#else
+  return 1.0;
+#endif
 }
 
 // ---- Traversal
@@ -1025,7 +1040,7 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
     }
     float segmentEnd = min(exitT, opaqueT);
     if (segmentEnd > t && !cellFlat && CellVisible())
-      IntegrateCell(origin, direction, t, segmentEnd);
+      IntegrateCell(origin, direction, t, segmentEnd, CellDensity(cell));
     if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
       break;
     int across[6];

@@ -198,12 +198,12 @@ TEST_F(EmbeddedShaders, EveryHexahedralRayCastProgramLinks)
 {
   this->ExpectLinks(vtkHexahedralRayCastPrograms::Entry(), "hexahedral entry program");
   const auto all = vtkHexahedralRayCastPrograms::AllTraversalOptions();
-  EXPECT_EQ(all.size(), 12u); // vertex gradients only with point scalars
+  EXPECT_EQ(all.size(), 24u); // vertex gradients only with point scalars
   for (const auto& options : all)
     this->ExpectLinks(vtkHexahedralRayCastPrograms::Traversal(options),
       std::string("hexahedral traversal program") + (options.NodeTexture ? ", node texture" : "") +
         (options.CellScalars ? ", cell scalars" : "") + (options.SkipInvisibleCells ? ", skipping" : "") +
-        (options.VertexGradients ? ", vertex gradients" : ""));
+        (options.VertexGradients ? ", vertex gradients" : "") + (options.CellDensities ? ", densities" : ""));
 }
 
 TEST_F(EmbeddedShaders, CompositePassCopiesAFloatImage)

@@ -102,6 +102,38 @@ TEST(HexahedronMesh, RepeatedPointsStillJoinTheirCells)
   EXPECT_EQ(faces.Boundary.size(), 4u * 10);
 }
 
+TEST(HexahedronMesh, CoincidentCellsMergeIntoOneOfTheirDensity)
+{
+  // Block(3) appended again: once on the same ids, once more (the middle cell only) on copies of its
+  // points, and a copy of the last cell whose field differs at one corner.
+  Block block(3);
+  const std::vector<std::uint32_t> original = block.CellPoints;
+  const auto sort = [](auto begin, auto end, auto less) { std::sort(begin, end, less); };
+  const auto same = [&] { return uv::CoincidentPointRepresentatives(block.PointData, sort); };
+  EXPECT_TRUE(uv::CoincidentCellDensities(block.CellPoints, same(), block.PointData, {}, sort).empty());
+  block.CellPoints.insert(block.CellPoints.end(), original.begin(), original.end());
+  for (int k = 8; k < 16; ++k)
+  {
+    const std::uint32_t id = original[k];
+    block.PointData.insert(block.PointData.end(), block.PointData.begin() + 4 * id, block.PointData.begin() + 4 * id + 4);
+    block.CellPoints.push_back(static_cast<std::uint32_t>(block.PointData.size() / 4 - 1));
+  }
+  for (int k = 16; k < 24; ++k)
+  {
+    const std::uint32_t id = original[k];
+    block.PointData.insert(block.PointData.end(), block.PointData.begin() + 4 * id, block.PointData.begin() + 4 * id + 4);
+    block.PointData.back() += k == 16 ? 1.0f : 0.0f; // another value at one corner: another medium
+    block.CellPoints.push_back(static_cast<std::uint32_t>(block.PointData.size() / 4 - 1));
+  }
+  const std::vector<float> density =
+    uv::CoincidentCellDensities(block.CellPoints, same(), block.PointData, {}, sort);
+  EXPECT_EQ(density, (std::vector<float>{ 2, 3, 2, 0, 0, 0, 0, 1 }));
+  // A cell scalar (the point values are not drawn then): copies with another value stay apart.
+  const std::vector<float> cellScalars = { 0.1f, 0.2f, 0.3f, 0.1f, 0.2f, 0.9f, 0.2f, 0.3f };
+  EXPECT_EQ(uv::CoincidentCellDensities(block.CellPoints, same(), block.PointData, cellScalars, sort),
+    (std::vector<float>{ 2, 3, 2, 0, 0, 1, 0, 0 }));
+}
+
 TEST(HexahedronMesh, FlatCellsAreJoinedByIdNotThroughCoincidentPoints)
 {
   // The middle cube of three flattened: its points at x = 2 moved onto those at x = 1. Its faces

@@ -848,6 +848,19 @@ class StressTests(SceneTestCase):
                 mesh = stress.place(stress.delaunay_slivers(), {"placement": "scale_" + factor})
                 self.assertMatchesReference(mesh, *self.property_and_camera(mesh), 32)
 
+    def test_coincident_cells_add_their_media(self):
+        # Every cell twice on the same points, as a mesh appended twice: the optical model adds the
+        # copies' media. Four faces of one key joined none of them, and the walk entered one copy
+        # per peel until the peels ran out (stress, "coincident cells drawn once"). The copies now
+        # merge into one cell of twice the density. Cell data too: an averaged cell value is the
+        # same for both copies.
+        for mesh_kind, scalars in (("hexahedra", "smooth"), ("hexahedra", "cell_data"), ("tetrahedra", "smooth")):
+            with self.subTest(mesh=mesh_kind, scalars=scalars):
+                base = analytic_hexahedra(4) if mesh_kind == "hexahedra" else analytic(4)
+                case = {"mesh": mesh_kind, "scalars": scalars, "camera": "outside", "function": "ramp"}
+                mesh = stress.apply_scalars(stress.every_cell_twice(base), case)
+                self.assertMatchesReference(mesh, stress.make_property(mesh, case), stress.make_camera(mesh, case), 32)
+
     def test_tangled_hexahedron_is_told_and_rendered_finite(self):
         mesh = single_hexahedron([0.1, 0.9, 0.4, 0.6, 0.8, 0.2, 1.0, 0.3])
         mesh.GetPoints().SetPoint(6, -0.2, -0.2, -1.0)  # corner 6 pushed through the opposite face
