@@ -66,18 +66,17 @@ def known_limit(case, mapper, error, missed):
         # A silhouette ray whose path through the mesh lies between two samples is not sampled, and
         # under an opaque function even that short path covers the pixel in the reference.
         return "shells: silhouette paths between two samples"
-    if mapper in ("hexahedral", "shells") and case["mesh"] == "tangled_tetrahedra":
-        # The optical model superposes coincident cells; the walk enters one of them, and a shell
-        # sample reads the one cell whose faces won the depth test.
+    if mapper == "shells" and case["mesh"] == "tangled_tetrahedra":
+        # The optical model superposes coincident cells; a shell sample reads the one cell whose
+        # faces won the depth test.
         return "coincident cells drawn once"
     if case["camera"] == "on_vertex" and case["mesh"] == "twisted_hexahedra" and mapper == "hexahedral":
         # The eye on a corner of a curved boundary: a ray leaving it outside the mesh and entering
         # further on is walked from the eye's cell, which it is not in, and lost.
         return "eye on a curved boundary: rays entering later lost"
-    if case["camera"] in ("grazing", "axis_aligned") and case["size"] % 2 and mapper in ("hexahedral", "shells",
-                                                                                        "cell projection"):
-        # The middle pixel row's or column's rays (odd sizes) run inside a plane of faces: the walk's
-        # exit face and the barycentric shells' face lookup are ambiguous for a ray exactly in a face.
+    if case["camera"] in ("grazing", "axis_aligned") and case["size"] % 2 and mapper in ("shells", "cell projection"):
+        # The middle pixel row's or column's rays (odd sizes) run inside a plane of faces: the
+        # barycentric shells' face lookup is ambiguous for a ray exactly in a face.
         return "rays lying in a face plane"
     return None
 
