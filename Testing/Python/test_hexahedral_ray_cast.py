@@ -848,6 +848,22 @@ class StressTests(SceneTestCase):
                 mesh = stress.place(stress.delaunay_slivers(), {"placement": "scale_" + factor})
                 self.assertMatchesReference(mesh, *self.property_and_camera(mesh), 32)
 
+    def test_one_sided_limits_differ_only_where_a_ray_has_no_one_value(self):
+        # stress.py takes a failing image against the nearest of the reference's one-sided limits
+        # (the camera moved by NUDGE of the mesh's size). A collapsed layer seen edge-on: the field
+        # jumps across the layer's plane, and the middle row's rays lie in it; the limits must
+        # differ there, and nowhere else, or the comparison would forgive real errors.
+        case = {"mesh": "flat_tetrahedra", "scalars": "int64", "camera": "grazing", "function": "all_opaque"}
+        mesh = stress.apply_scalars(stress.build_mesh(case), case)
+        prop, camera, size = stress.make_property(mesh, case), stress.make_camera(mesh, case), 17
+        cameras = [camera] + stress.nudged_cameras(camera, stress.NUDGE * mesh.GetLength())
+        limits = [reference(mesh, prop, moved, size).GetPointData().GetScalars() for moved in cameras]
+        ambiguous = {(p % size, p // size) for p in range(size * size)
+                     if max(abs(a.GetTuple4(p)[k] - b.GetTuple4(p)[k]) for a in limits for b in limits
+                            for k in range(4)) > 0.05}
+        self.assertTrue(ambiguous)
+        self.assertEqual({y for _, y in ambiguous}, {size // 2})
+
     def test_coincident_cells_add_their_media(self):
         # Every cell twice on the same points, as a mesh appended twice: the optical model adds the
         # copies' media. Four faces of one key joined none of them, and the walk entered one copy
