@@ -52,7 +52,6 @@ public:
   vtkSmartPointer<vtkDataSet> Drawn;
   RenderedScalar DrawnScalar;
   vtkIdType TangledCells = 0, NaNCells = 0;
-  vtkIdType MergedCopies = 0; // cells merged into a coincident one (CellDensities)
   vtkIdType FlatCells = 0; // vertices, lines and polygons: not volumes, left out
   int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;
   std::uint64_t Version = 0;      // bumped by every change: positions, values, cells
@@ -219,17 +218,13 @@ private:
     std::vector<float> density = uv::CoincidentCellDensities(this->CellPoints, samePoint, this->Points.Values,
       this->CellScalars, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
     this->CellDensities.clear();
-    this->MergedCopies = 0;
     if (density.empty())
       return;
     std::size_t kept = 0;
     for (std::size_t c = 0; c < density.size(); ++c)
     {
       if (density[c] == 0.0f)
-      {
-        ++this->MergedCopies;
-        continue;
-      }
+        continue; // merged into the first of its copies
       std::copy_n(this->CellPoints.begin() + 8 * c, 8, this->CellPoints.begin() + 8 * kept);
       if (!this->CellScalars.empty())
         this->CellScalars[kept] = this->CellScalars[c];

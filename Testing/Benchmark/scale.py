@@ -442,14 +442,15 @@ def main():
             log = os.path.join(args.output, "logs", f"{kind}_{cells}_{name.replace(' ', '_')}.log")
             status, seconds, seen, result = watch([sys.executable, os.path.abspath(__file__), "--run", kind,
                                                    str(half), name], log, limit, 1024 * args.memory_cap_gb)
-        if result and status is None and not json.loads(result)["status"].startswith("error"):
-            row = json.loads(result)
+        reported = json.loads(result) if result else None
+        if reported and status is None and not reported["status"].startswith("error"):
+            row = reported
             if args.limit:
                 row["status"] = f"ok, {row.get('covered_px', 0):,} of {SIZE_PX ** 2:,} px drawn"
             print(f"prep {row['preparation_s']:.3f} s, frame {row['frame_s']:.3f} s, peak {row['peak_rss_mb']:.0f} MB "
                   f"(mapper {row['mapper_peak_mb']:.0f}), {seconds:.0f} s in all", flush=True)
         else:
-            status = status or (json.loads(result)["status"] if result else None)
+            status = status or (reported["status"] if reported else None)
             row = {"kind": kind, "half": half, "cells": cells, "mapper": name, "status": status or "no result",
                    "watched_peak_mb": seen, "seconds": seconds}
             print(row["status"], flush=True)
