@@ -22,7 +22,7 @@ foreach (header IN ITEMS
     uvBarycentricShell uvCellVisibility uvChebyshevSeries uvCurvedCell uvLatticeBasis uvHexahedralMesh uvHexahedronRay uvVisibleRegion
     uvImageErrorMetrics
     uvIsosurfaceList uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
-    uvContentFingerprint uvMeshIntegrity uvFaceAdjacencyOrder uvScalarNormalisation uvScreenRectangle uvShellBuckets uvTetrahedronSegmentTable uvTransferFunctionSimplification uvVisibilitySort
+    uvCoincidentCells uvContentFingerprint uvMeshIntegrity uvFaceAdjacencyOrder uvScalarNormalisation uvScreenRectangle uvShellBuckets uvTetrahedronSegmentTable uvTransferFunctionSimplification uvVisibilitySort
     vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms
     vtkPreIntegratedTetrahedraWalk uvTetrahedralWalk
     vtkBarycentricShellBlendPass vtkBarycentricShellCellDrawer vtkBarycentricShellCellProjectionPass

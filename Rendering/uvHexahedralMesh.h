@@ -9,6 +9,7 @@
 
 #include "uvHexahedronRay.h"
 #include "uvLinearCellSplit.h"
+#include "uvCoincidentCells.h"
 #include "uvRayCellGeometry.h"
 
 #include <glm/glm.hpp>
@@ -233,77 +234,6 @@ TetrahedronFaceNeighbours MakeTetrahedronFaceNeighbours(const std::vector<std::u
     }
   });
   return result;
-}
-
-/// Per cell of `cellPoints` (8 ids each), how many cells it stands for: cells that repeat another,
-/// with the same corners by position (`samePoint`, CoincidentPointRepresentatives) and the same field
-/// on them (the scalar at each corner, `pointData`'s fourth float, or the same `cellScalars` value),
-/// as a mesh appended twice has, are merged into the first of them, which gets their count, and
-/// count 0 themselves. The optical model adds coincident media, where a walk enters one cell per
-/// place and a face shared by four copies joins none of them. Empty when no cell repeats another.
-/// `sort(begin, end, less)` orders (hash, cell) pairs.
-template <typename Sort>
-std::vector<float> CoincidentCellDensities(const std::vector<std::uint32_t>& cellPoints,
-  const std::vector<std::uint32_t>& samePoint, const std::vector<float>& pointData,
-  const std::vector<float>& cellScalars, Sort&& sort)
-{
-  const std::size_t cellCount = cellPoints.size() / 8;
-  // Each cell's corners as (position's representative, scalar), sorted: equal for copies.
-  const auto corners = [&](std::size_t c) {
-    std::array<std::pair<std::uint32_t, float>, 8> key;
-    for (int k = 0; k < 8; ++k)
-    {
-      const std::uint32_t id = cellPoints[8 * c + k];
-      key[k] = { samePoint[id], cellScalars.empty() ? pointData[4 * std::size_t(id) + 3] : 0.0f };
-    }
-    std::sort(key.begin(), key.end());
-    return key;
-  };
-  const auto same = [&](std::uint32_t a, std::uint32_t b) {
-    return corners(a) == corners(b) && (cellScalars.empty() || cellScalars[a] == cellScalars[b]);
-  };
-  // Sorted by a hash of that key (and the cell scalar): copies fall into one run, checked exactly.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> hashed(cellCount);
-  for (std::size_t c = 0; c < cellCount; ++c)
-  {
-    std::uint64_t hash = 1469598103934665603ull;
-    const auto mix = [&hash](std::uint32_t bits) { hash = (hash ^ bits) * 1099511628211ull; };
-    for (const auto& corner : corners(c))
-    {
-      std::uint32_t valueBits;
-      std::memcpy(&valueBits, &corner.second, sizeof valueBits);
-      mix(corner.first);
-      mix(valueBits);
-    }
-    if (!cellScalars.empty())
-    {
-      std::uint32_t valueBits;
-      std::memcpy(&valueBits, &cellScalars[c], sizeof valueBits);
-      mix(valueBits);
-    }
-    hashed[c] = { hash, static_cast<std::uint32_t>(c) };
-  }
-  sort(hashed.begin(), hashed.end(), [](const auto& a, const auto& b) { return a < b; });
-  std::vector<float> density(cellCount, 1.0f);
-  bool merged = false;
-  for (std::size_t i = 0; i < cellCount;)
-  {
-    std::size_t j = i + 1;
-    while (j < cellCount && hashed[j].first == hashed[i].first)
-      ++j;
-    // Within a run (almost always one cell), each copy joins the first equal cell before it.
-    for (std::size_t k = i + 1; k < j; ++k)
-      for (std::size_t first = i; first < k; ++first)
-        if (density[hashed[first].second] > 0.0f && same(hashed[first].second, hashed[k].second))
-        {
-          density[hashed[first].second] += 1.0f;
-          density[hashed[k].second] = 0.0f;
-          merged = true;
-          break;
-        }
-    i = j;
-  }
-  return merged ? density : std::vector<float>();
 }
 
 /// How many cells fold over themselves (uv::IsTangledHexahedron); `parallelFor` as above.

@@ -6,10 +6,12 @@
 #include "uvBarycentricShellSliceFS.h"
 #include "uvOpacityMaskFS.h"
 #include "uvCellVisibility.h"
+#include "uvCoincidentCells.h"
 #include "uvHexahedralMesh.h"
 #include "uvIsosurfaceList.h"
 #include "uvPreIntegration.h"
 #include "uvShellBuckets.h"
+#include "uvTetrahedralWalk.h"
 #include "vtkBarycentricShellBlendPass.h"
 #include "vtkBarycentricShellSegmentTable.h"
 #include "vtkUnstructuredVolumeSegmentLengthTable.h"
@@ -50,6 +52,7 @@
 #include <bitset>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -129,6 +132,12 @@ public:
   WarningsGiven Warnings;
   uv::TetrahedronFaceNeighbours CellSurfaces; // per tetrahedron, for a cell scalar's surfaces
   std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
+  // Per tetrahedron, the coincident copies it stands for (uv::CoincidentCellDensities; 0: merged
+  // into another; empty: none repeats). A shell sample holds one cell's value, so copies the optical
+  // model superposes are drawn as one cell of their density.
+  std::vector<float> Densities;
+  std::uint64_t DensitiesBuiltFor = 0; // the mesh's CellsVersion
+  std::vector<std::uint32_t> ShellCells; // the volume's cells less the merged copies (when any)
 
   // ---- What this frame draws (Prepare).
   struct
@@ -142,6 +151,7 @@ public:
 
   // ---- GPU state: the mesh's resources, then the passes.
   vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, PointCoordinates, NeighbourValues;
+  vtkUnstructuredVolumeBufferTexture CellDensities; // the shells' Densities, when some cells coincide
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
   vtkBarycentricShellImageTexture Image;
@@ -164,7 +174,7 @@ public:
   {
     for (vtkUnstructuredVolumeBufferTexture* texture :
       { &this->TetrahedronPoints, &this->Points, &this->PointGradients, &this->PointCoordinates,
-        &this->NeighbourValues })
+        &this->NeighbourValues, &this->CellDensities })
       texture->Release();
     this->Nodes.Release();
     this->Isosurfaces.Release();
@@ -183,6 +193,7 @@ public:
   bool UpdateTransferFunction(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateLists(vtkBarycentricShellMapper* self);
   void UpdateNeighbourValues();
+  void UpdateDensities();
   void UpdateGradients(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   void UpdateSampleDistance(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateShells(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
@@ -193,6 +204,8 @@ public:
   void UploadPasses(const vtkUnstructuredVolumeFrame& frame);
 
   std::string Defines(bool opaqueGeometry) const;
+  /// Whether the shells draw merged copies (cell projection draws every copy itself).
+  bool ShellDensities() const { return !this->Now.CellProjection && !this->Densities.empty(); }
   void SetCellUniforms(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& frame, bool opaqueGeometry);
   void SetIntegrationUniforms(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& frame, int isosurfaces);
   void UnbindMesh(bool opaqueGeometry);
@@ -322,6 +335,18 @@ void vtkBarycentricShellMapper::Internals::UpdateNeighbourValues()
   this->CellSurfacesBuiltFor = this->Mesh.CellsVersion;
 }
 
+/// Coincident copies among the tetrahedra, by position and field, once per set of cells.
+void vtkBarycentricShellMapper::Internals::UpdateDensities()
+{
+  if (this->DensitiesBuiltFor == this->Mesh.CellsVersion)
+    return;
+  const auto sort = [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); };
+  const std::vector<std::uint32_t> samePoint = uv::CoincidentPointIds(this->Mesh.PointData, 4, sort);
+  this->Densities =
+    uv::CoincidentCellDensities<4>(this->Mesh.TetrahedronPoints, samePoint, this->Mesh.PointData, {}, sort);
+  this->DensitiesBuiltFor = this->Mesh.CellsVersion;
+}
+
 /// Which tetrahedra matter: the volume's (some extinction in their range), the isosurfaces' (an
 /// isovalue in it) and either (cell projection). With an image, a cell's range is not its vertices'
 /// range: none is skipped.
@@ -398,7 +423,16 @@ bool vtkBarycentricShellMapper::Internals::UpdateShells(
     }
   });
   const std::vector<std::uint32_t>& tetrahedra = this->Mesh.TetrahedronPoints;
-  this->VolumeRanges.Update(this->Lists.Volume(), tetrahedra, this->EyePoints, frame.Parallel, uvvtk::ParallelFor);
+  this->UpdateDensities();
+  const std::vector<std::uint32_t>* volume = &this->Lists.Volume();
+  if (!this->Densities.empty())
+  {
+    this->ShellCells.clear();
+    std::copy_if(volume->begin(), volume->end(), std::back_inserter(this->ShellCells),
+      [this](std::uint32_t cell) { return this->Densities[cell] > 0.0f; });
+    volume = &this->ShellCells;
+  }
+  this->VolumeRanges.Update(*volume, tetrahedra, this->EyePoints, frame.Parallel, uvvtk::ParallelFor);
   this->IsosurfaceRanges.Update(
     this->Lists.Isosurface, tetrahedra, this->EyePoints, frame.Parallel, uvvtk::ParallelFor);
   if (!uv::LayoutShells(this->VolumeRanges, this->IsosurfaceRanges, this->Now.SampleDistance, self->SlicesPerShell,
@@ -439,6 +473,8 @@ void vtkBarycentricShellMapper::Internals::UploadMesh(vtkOpenGLRenderWindow* win
     this->PointGradients.Sync(window, this->Gradients.Values, 4, this->Gradients.Version);
   if (this->Now.CellSurfaces)
     this->NeighbourValues.Sync(window, this->CellSurfaces.Values, 4, this->CellSurfacesBuiltFor);
+  if (this->ShellDensities())
+    this->CellDensities.Sync(window, this->Densities, 1, this->DensitiesBuiltFor);
   this->Nodes.Sync(window, this->TransferFunction.Nodes);
   this->Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(this->DrawnIsosurfaces), 2, 4,
     uv::IsosurfaceList::Texels(this->DrawnIsosurfaces));
@@ -515,6 +551,7 @@ std::string vtkBarycentricShellMapper::Internals::Defines(bool opaqueGeometry) c
   options.Textured = this->Now.Textured;
   options.NodeTexture = uvgl::NodesNeedTexture(this->TransferFunction.Nodes);
   options.CellSurfaces = this->Now.CellSurfaces;
+  options.CellDensities = this->ShellDensities();
   return vtkBarycentricShellPrograms::DefinesFor(options);
 }
 
@@ -573,6 +610,8 @@ void vtkBarycentricShellMapper::Internals::UnbindMesh(bool opaqueGeometry)
     this->PointGradients.Unbind();
   if (this->Now.CellSurfaces)
     this->NeighbourValues.Unbind();
+  if (this->ShellDensities())
+    this->CellDensities.Unbind();
   this->Nodes.Unbind();
   this->Isosurfaces.Unbind();
 }
@@ -647,6 +686,8 @@ bool vtkBarycentricShellMapper::Internals::ReadyShellPrograms(vtkBarycentricShel
   programs.Use(shell.Slice);
   this->SetCellUniforms(shell.Slice, frame, opaqueGeometry);
   shell.Slice->SetUniformf("sampleDistance", static_cast<float>(this->Now.SampleDistance));
+  if (this->ShellDensities())
+    this->CellDensities.Bind(shell.Slice, "cellDensities");
   programs.Use(shell.Blend);
   this->SetIntegrationUniforms(shell.Blend, frame, 0); // isosurfaces come from their own pass
   this->Peel.BindLayers(shell.Blend);

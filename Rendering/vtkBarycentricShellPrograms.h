@@ -41,7 +41,13 @@ public:
     bool VertexGradients = false, CellGradients = false; // lighting from vertex or cell gradients
     bool SegmentTable = false, OpaqueGeometry = false, Textured = false, NodeTexture = false;
     bool CellSurfaces = false; // cell projection of a cell scalar with isosurfaces (faces between cells)
+    bool CellDensities = false; // shells over tetrahedra that stand for coincident copies
   };
+
+  /// Where the shells' slices hold a tetrahedron of density d, its value (scalar + 1, in [1, 2]) is
+  /// raised by this times d - 1: the MAX blend still keeps one cell's value per slice, and the
+  /// blending stage reads both back.
+  static constexpr float DensityStride = 4.0f;
 
   static std::string DefinesFor(const Options& options)
   {
@@ -60,6 +66,8 @@ public:
       defines += "#define UV_TEXTURE\n";
     if (options.CellSurfaces)
       defines += "#define UV_CELL_SURFACES\n";
+    if (options.CellDensities)
+      defines += "#define UV_CELL_DENSITIES\n#define UV_DENSITY_STRIDE " + std::to_string(DensityStride) + "\n";
     return defines;
   }
 
@@ -83,6 +91,13 @@ public:
     Options cellSurfaces;
     cellSurfaces.CellSurfaces = true;
     all.push_back(cellSurfaces);
+    for (bool table : { false, true })
+    {
+      Options densities;
+      densities.CellDensities = true;
+      densities.SegmentTable = table;
+      all.push_back(densities);
+    }
     Options smallest, largest;
     smallest.Slices = 3;
     smallest.Targets = 1;

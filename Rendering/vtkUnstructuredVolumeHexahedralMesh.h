@@ -215,7 +215,7 @@ private:
   /// Cells that repeat another (uv::CoincidentCellDensities) become one cell of their count's density.
   void MergeCoincidentCells(const std::vector<std::uint32_t>& samePoint)
   {
-    std::vector<float> density = uv::CoincidentCellDensities(this->CellPoints, samePoint, this->Points.Values,
+    std::vector<float> density = uv::CoincidentCellDensities<8>(this->CellPoints, samePoint, this->Points.Values,
       this->CellScalars, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
     this->CellDensities.clear();
     if (density.empty())

@@ -49,13 +49,26 @@ uniform float segmentTableSize;
 
 //UV::SegmentIntegration
 
-/// A whole segment between two samples: the table's bilinear read, or the exact walk.
-vec4 WholeSegment(float front, float back)
+/// An inside slice's scalar and density: its value is scalar + 1, raised by UV_DENSITY_STRIDE per
+/// coincident copy past the first where the cell stands for several (uvBarycentricShellSliceFS.glsl).
+vec2 ScalarAndDensity(float value)
 {
-#if defined(UV_SEGMENT_TABLE) && defined(UV_TEXTURE_UNIT_FILTER)
+#ifdef UV_CELL_DENSITIES
+  float copies = floor((value - 1.5) / UV_DENSITY_STRIDE + 0.5); // the scalar is within [0, 1]
+  return vec2(value - 1.0 - UV_DENSITY_STRIDE * copies, copies + 1.0);
+#else
+  return vec2(value - 1.0, 1.0);
+#endif
+}
+
+#ifdef UV_SEGMENT_TABLE
+/// A whole segment of one copy of the medium between two samples: the table's bilinear read.
+vec4 TableSegment(float front, float back)
+{
+#ifdef UV_TEXTURE_UNIT_FILTER
   vec2 scalars = clamp(vec2(front, back), 0.0, 1.0);
   return textureLod(segmentTable, (scalars * (segmentTableSize - 1.0) + 0.5) / segmentTableSize, 0.0);
-#elif defined(UV_SEGMENT_TABLE)
+#else
   // Bilinear with float weights from four fetches: a texture unit's own filter may round its
   // weights (GL leaves their precision to the implementation; uvgl::ExactTextureFilter).
   vec2 x = clamp(vec2(front, back), 0.0, 1.0) * (segmentTableSize - 1.0);
@@ -65,20 +78,39 @@ vec4 WholeSegment(float front, float back)
   vec4 near = mix(texelFetch(segmentTable, i0, 0), texelFetch(segmentTable, ivec2(i1.x, i0.y), 0), f.x);
   vec4 far = mix(texelFetch(segmentTable, ivec2(i0.x, i1.y), 0), texelFetch(segmentTable, i1, 0), f.x);
   return mix(near, far, f.y);
+#endif
+}
+
+/// `piece` (premultiplied) over `times` its length at the same scalars: the opacity compounds, the
+/// colour follows in proportion (exact where the scalar is constant).
+vec4 Compounded(vec4 piece, float times)
+{
+  float opacity = 1.0 - pow(max(1.0 - piece.a, 0.0), times);
+  return vec4(piece.a > 0.0 ? piece.rgb * (opacity / piece.a) : vec3(0.0), opacity);
+}
+#endif
+
+/// A whole segment between two samples through `density` copies of the medium: the table's read
+/// (compounded), or the exact walk (density scales extinction and emission alike: the same as a
+/// segment that much longer).
+vec4 WholeSegment(float front, float back, float density)
+{
+#ifdef UV_SEGMENT_TABLE
+  vec4 one = TableSegment(front, back);
+  return density == 1.0 ? one : Compounded(one, density);
 #else
-  return IntegrateSegment(front, back, vec3(0.0), vec3(0.0), sampleDistance, vec3(0.0, 0.0, 1.0));
+  return IntegrateSegment(front, back, vec3(0.0), vec3(0.0), density * sampleDistance, vec3(0.0, 0.0, 1.0));
 #endif
 }
 
 /// A fraction of a segment at a constant scalar (where the ray enters or leaves the mesh between two
-/// samples): from the table's whole constant segment (opacity a over the whole: 1 - (1 - a)^f over
-/// the fraction f, colour in proportion), or from the transfer function at the scalar.
+/// samples; `fraction` counts copies of the medium too): from the table's whole constant segment
+/// (opacity a over the whole: 1 - (1 - a)^f over the fraction f, colour in proportion), or from the
+/// transfer function at the scalar.
 vec4 PartialSegment(float scalar, float fraction)
 {
 #ifdef UV_SEGMENT_TABLE
-  vec4 whole = WholeSegment(scalar, scalar);
-  float opacity = 1.0 - pow(max(1.0 - whole.a, 0.0), fraction);
-  return vec4(whole.a > 0.0 ? whole.rgb * (opacity / whole.a) : vec3(0.0), opacity);
+  return Compounded(TableSegment(scalar, scalar), fraction);
 #else
   vec4 node = EvaluateBetween(scalar, NodesAtOrBelow(scalar));
   float opacity = 1.0 - exp(-fraction * sampleDistance * node.a);
@@ -171,32 +203,36 @@ void main()
     bool previousInside = previous > 0.9, nextInside = next > 0.9;
     if (previousInside && nextInside)
     {
-      // The scalar linear between the samples; cut at each hit inside the segment.
-      float a = previous - 1.0, b = next - 1.0, from = 0.0;
+      // The scalar linear between the samples; cut at each hit inside the segment. Where the two
+      // samples lie in cells of different densities (the segment crosses their face), each counts
+      // for half.
+      vec2 front = ScalarAndDensity(previous), back = ScalarAndDensity(next);
+      float a = front.x, b = back.x, density = 0.5 * (front.y + back.y), from = 0.0;
       for (; hit < hitCount && HitDistance(pixel, hit) < far; ++hit)
       {
         float to = clamp((HitDistance(pixel, hit) - near) / sampleDistance, from, 1.0);
-        Add(IntegrateSegment(mix(a, b, from), mix(a, b, to), zero, zero, (to - from) * sampleDistance, toEye));
+        Add(IntegrateSegment(
+          mix(a, b, from), mix(a, b, to), zero, zero, density * (to - from) * sampleDistance, toEye));
         Add(HitColour(pixel, hit));
         from = to;
       }
       if (from == 0.0)
-        Add(WholeSegment(a, b));
+        Add(WholeSegment(a, b, density));
       else
-        Add(IntegrateSegment(mix(a, b, from), b, zero, zero, (1.0 - from) * sampleDistance, toEye));
+        Add(IntegrateSegment(mix(a, b, from), b, zero, zero, density * (1.0 - from) * sampleDistance, toEye));
     }
     else
     {
       // The ray enters or leaves the mesh (or meets opaque geometry) inside this segment: the part
       // inside, at the inside end's scalar; hits are composited before it when the ray enters here,
       // after it when it leaves.
-      float inside = previousInside ? previous - 1.0 : next - 1.0;
+      vec2 inside = ScalarAndDensity(previousInside ? previous : next);
       if (previousInside)
-        Add(PartialSegment(inside, clamp(InsideFraction(next, false), 0.0, 1.0)));
+        Add(PartialSegment(inside.x, inside.y * clamp(InsideFraction(next, false), 0.0, 1.0)));
       for (; hit < hitCount && HitDistance(pixel, hit) < far; ++hit)
         Add(HitColour(pixel, hit));
       if (nextInside)
-        Add(PartialSegment(inside, clamp(InsideFraction(previous, true), 0.0, 1.0)));
+        Add(PartialSegment(inside.x, inside.y * clamp(InsideFraction(previous, true), 0.0, 1.0)));
     }
     previous = next;
   }

@@ -14,6 +14,11 @@
 
 uniform float shellStart;     // distance of the shell's first slice
 uniform float sampleDistance; // between slices
+#ifdef UV_CELL_DENSITIES
+// Per tetrahedron, the coincident copies it stands for: its inside slices are raised by
+// UV_DENSITY_STRIDE per copy past the first, read back by uvBarycentricShellBlendFS.glsl.
+uniform samplerBuffer cellDensities;
+#endif
 
 void main()
 {
@@ -21,7 +26,12 @@ void main()
   float slack = 1e-4 * sampleDistance;
   float entry = EntryDistance(ray), exit = min(ExitDistance(ray), OpaqueDistance());
   float from = entry - slack, to = exit + slack;
-  float atFace = dot(cellScalars, ray.face) + 1.0, slope = dot(cellScalars, ray.perUnit);
+#ifdef UV_CELL_DENSITIES
+  float raised = UV_DENSITY_STRIDE * (texelFetch(cellDensities, cellId).r - 1.0);
+#else
+  const float raised = 0.0;
+#endif
+  float atFace = dot(cellScalars, ray.face) + 1.0 + raised, slope = dot(cellScalars, ray.perUnit);
   // Where the stretch starts and ends between two slices, the slice just outside it records how far
   // off it is, f in [0, 1] sample distances: entries as 0.01 + 0.24 (1 - f), exits as
   // 0.51 + 0.24 (1 - f). Inside a neighbour the slice holds >= 1 and the record loses the MAX; among
@@ -46,7 +56,7 @@ void main()
     for (int k = 0; k < 4; ++k)
     {
       if (inside[k] > 0.0)
-        scalars[k] = ImageScalarAt(CoordinatesAt(ray, z[k])) + 1.0;
+        scalars[k] = ImageScalarAt(CoordinatesAt(ray, z[k])) + 1.0 + raised;
     }
     values[t] = mix(codes, scalars, inside);
 #else

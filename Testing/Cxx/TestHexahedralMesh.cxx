@@ -110,7 +110,7 @@ TEST(HexahedronMesh, CoincidentCellsMergeIntoOneOfTheirDensity)
   const std::vector<std::uint32_t> original = block.CellPoints;
   const auto sort = [](auto begin, auto end, auto less) { std::sort(begin, end, less); };
   const auto same = [&] { return uv::CoincidentPointRepresentatives(block.PointData, sort); };
-  EXPECT_TRUE(uv::CoincidentCellDensities(block.CellPoints, same(), block.PointData, {}, sort).empty());
+  EXPECT_TRUE(uv::CoincidentCellDensities<8>(block.CellPoints, same(), block.PointData, {}, sort).empty());
   block.CellPoints.insert(block.CellPoints.end(), original.begin(), original.end());
   for (int k = 8; k < 16; ++k)
   {
@@ -126,11 +126,11 @@ TEST(HexahedronMesh, CoincidentCellsMergeIntoOneOfTheirDensity)
     block.CellPoints.push_back(static_cast<std::uint32_t>(block.PointData.size() / 4 - 1));
   }
   const std::vector<float> density =
-    uv::CoincidentCellDensities(block.CellPoints, same(), block.PointData, {}, sort);
+    uv::CoincidentCellDensities<8>(block.CellPoints, same(), block.PointData, {}, sort);
   EXPECT_EQ(density, (std::vector<float>{ 2, 3, 2, 0, 0, 0, 0, 1 }));
   // A cell scalar (the point values are not drawn then): copies with another value stay apart.
   const std::vector<float> cellScalars = { 0.1f, 0.2f, 0.3f, 0.1f, 0.2f, 0.9f, 0.2f, 0.3f };
-  EXPECT_EQ(uv::CoincidentCellDensities(block.CellPoints, same(), block.PointData, cellScalars, sort),
+  EXPECT_EQ(uv::CoincidentCellDensities<8>(block.CellPoints, same(), block.PointData, cellScalars, sort),
     (std::vector<float>{ 2, 3, 2, 0, 0, 1, 0, 0 }));
 }
 

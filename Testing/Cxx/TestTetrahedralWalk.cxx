@@ -2,6 +2,7 @@
 // through meshes of tetrahedra cross the tetrahedra the brute-force intersection of the ray with
 // every tetrahedron finds (double precision), over the same length, and leave the mesh where it
 // ends; also rays through vertices and along edges and faces, where the exit face is a tie.
+#include "uvCoincidentCells.h"
 #include "uvFaceAdjacencyOrder.h"
 #include "uvTestTetrahedralCubes.h"
 #include "uvTetrahedralWalk.h"
@@ -168,6 +169,27 @@ TEST(TetrahedralWalk, CoincidentPointsShareOneId)
   const std::vector<std::uint32_t> same =
     uv::CoincidentPointIds(positions, 3, [](auto begin, auto end, auto less) { std::sort(begin, end, less); });
   EXPECT_EQ(same, (std::vector<std::uint32_t>{ 0, 1, 0, 1, 4 }));
+}
+
+TEST(TetrahedralWalk, CoincidentTetrahedraMergeByPositionAndField)
+{
+  // Two tetrahedra on five points; then the first again in another corner order, the second again on
+  // copies of its points (an append), and the second once more with another value at one corner.
+  std::vector<float> points = { 0, 0, 0, 0.1f, 1, 0, 0, 0.2f, 0, 1, 0, 0.3f, 0, 0, 1, 0.4f, 1, 1, 1, 0.5f };
+  std::vector<std::uint32_t> cells = { 0, 1, 2, 3, 1, 2, 3, 4, 3, 0, 2, 1 };
+  for (int copy = 0; copy < 2; ++copy)
+    for (std::uint32_t id : { 1u, 2u, 3u, 4u })
+    {
+      points.insert(points.end(), points.begin() + 4 * id, points.begin() + 4 * id + 4);
+      points.back() += copy == 1 && id == 4 ? 0.25f : 0.0f;
+      cells.push_back(static_cast<std::uint32_t>(points.size() / 4 - 1));
+    }
+  const auto sort = [](auto begin, auto end, auto less) { std::sort(begin, end, less); };
+  const std::vector<std::uint32_t> same = uv::CoincidentPointIds(points, 4, sort);
+  EXPECT_EQ(uv::CoincidentCellDensities<4>(cells, same, points, {}, sort),
+    (std::vector<float>{ 2, 2, 0, 0, 1 }));
+  const std::vector<std::uint32_t> firstTwo(cells.begin(), cells.begin() + 8);
+  EXPECT_TRUE(uv::CoincidentCellDensities<4>(firstTwo, same, points, {}, sort).empty());
 }
 
 TEST(TetrahedralWalk, RaysCrossTheTetrahedraTheBruteForceFinds)

@@ -13,6 +13,8 @@ from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, Tetra
                       covered_colour_error, finite_image, inside_camera, opaque_sphere, plane_scene_setup, reference, rmse,
                       spike_property, thin_shell_property, transparent_property)
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
+import stress  # noqa: E402  (its generated degenerate meshes)
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper,  # noqa: E402
                                 vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkCommonCore import vtkDoubleArray  # noqa: E402
@@ -642,6 +644,30 @@ class StressTests(SceneTestCase):
         points.Modified()
         shifted = self.finite(mesh, prop, camera_for(mesh))
         self.assertLess(rmse(shifted, expected)[0], 1e-3)
+
+    def test_coincident_cells_add_their_media(self):
+        # Every cell twice, as a mesh appended to itself: the optical model adds the copies' media. A
+        # slice keeps one cell's value (MAX blend), so the copies were drawn once (stress,
+        # "coincident cells drawn once": RMSE 0.03 to 0.2). They now merge into one cell of twice
+        # the density, by position, so an append that repeats the points merges too. Both segment
+        # routes; point and cell data.
+        from vtkmodules.vtkFiltersCore import vtkAppendFilter
+        for scalars in ("smooth", "cell_data"):
+            single = stress.apply_scalars(analytic(4), {"scalars": scalars})
+            case = {"function": "ramp", "camera": "outside"}
+            prop, camera = stress.make_property(single, case), stress.make_camera(single, case)
+            append = vtkAppendFilter()
+            append.AddInputData(single)
+            append.AddInputData(single)
+            append.Update()
+            twice = stress.apply_scalars(stress.every_cell_twice(analytic(4)), {"scalars": scalars})
+            for doubled in (twice, append.GetOutput()):
+                expected = reference(doubled, prop, camera, 48)
+                self.assertGreater(rmse(reference(single, prop, camera, 48), expected)[0], 0.05)
+                for integration in (1, 2):  # TABLE, EXACT
+                    with self.subTest(scalars=scalars, points=doubled.GetNumberOfPoints(), integration=integration):
+                        image = self.finite(doubled, prop, camera, 48, SegmentIntegration=integration)
+                        self.assertLess(rmse(image, expected)[0], 5e-3)
 
     def test_tiny_sample_distance_is_widened_with_a_warning(self):
         mesh = analytic(4)

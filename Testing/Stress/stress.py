@@ -68,10 +68,6 @@ def known_limit(case, mapper, error, missed):
         # A silhouette ray whose path through the mesh lies between two samples is not sampled, and
         # under an opaque function even that short path covers the pixel in the reference.
         return "shells: silhouette paths between two samples"
-    if mapper == "shells" and case["mesh"] == "tangled_tetrahedra":
-        # The optical model superposes coincident cells; a shell sample reads the one cell whose
-        # faces won the depth test.
-        return "coincident cells drawn once"
     if case["camera"] == "on_vertex" and case["mesh"] == "twisted_hexahedra" and mapper == "hexahedral":
         # The eye on a corner of a curved boundary: a ray leaving it outside the mesh and entering
         # further on is walked from the eye's cell, which it is not in, and lost.
