@@ -15,6 +15,7 @@
 #include "uvBarycentricPullVS.h"
 #include "uvBarycentricRayLib.h"
 #include "uvBarycentricShellGS.h"
+#include "uvBarycentricShellRecordLib.h"
 #include "uvBarycentricTetrahedronLib.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvPhongLib.h"
@@ -139,7 +140,7 @@ private:
     const std::string fragmentSource = uvgl::ShaderSource(fragment, this->Defines,
       { { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
         { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib },
-        { "//UV::SegmentLengthTable", uvSegmentLengthTableLib } });
+        { "//UV::SegmentLengthTable", uvSegmentLengthTableLib }, { "//UV::ShellRecord", uvBarycentricShellRecordLib } });
     return this->Cache->ReadyShaderProgram(vertex.c_str(), fragmentSource.c_str(), geometry.c_str());
   }
 

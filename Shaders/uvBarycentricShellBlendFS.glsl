@@ -49,6 +49,8 @@ uniform float segmentTableSize;
 
 //UV::SegmentIntegration
 
+//UV::ShellRecord
+
 /// An inside slice's scalar and density: its value is scalar + 1, raised by UV_DENSITY_STRIDE per
 /// coincident copy past the first where the cell stands for several (uvBarycentricShellSliceFS.glsl).
 vec2 ScalarAndDensity(float value)
@@ -103,6 +105,16 @@ vec4 WholeSegment(float front, float back, float density)
 #endif
 }
 
+/// A stretch of `fraction` of a segment, the scalar linear from `front` to `back` along it.
+vec4 ShortSegment(float front, float back, float fraction)
+{
+#ifdef UV_SEGMENT_TABLE
+  return Compounded(TableSegment(front, back), fraction);
+#else
+  return IntegrateSegment(front, back, vec3(0.0), vec3(0.0), fraction * sampleDistance, vec3(0.0, 0.0, 1.0));
+#endif
+}
+
 /// A fraction of a segment at a constant scalar (where the ray enters or leaves the mesh between two
 /// samples; `fraction` counts copies of the medium too): from the table's whole constant segment
 /// (opacity a over the whole: 1 - (1 - a)^f over the fraction f, colour in proportion), or from the
@@ -119,16 +131,12 @@ vec4 PartialSegment(float scalar, float fraction)
 }
 
 /// How much of the segment next to an outside slice is inside the mesh, from the slice's record
-/// (uvBarycentricShellSliceFS.glsl): an entry record when the mesh starts after it, an exit record
+/// (uvBarycentricShellRecordLib.glsl): an entry record when the mesh starts after it, an exit record
 /// when it ended before it; half a segment when the slice holds no such record.
 float InsideFraction(float record, bool entering)
 {
-  // Records: entries 0.25 - 0.24 f, exits 0.75 - 0.24 f, f the sample distances from the slice.
-  if (entering && record > 0.005 && record < 0.5)
-    return (record - 0.01) / 0.24;
-  if (!entering && record > 0.5 && record < 0.9)
-    return (record - 0.51) / 0.24;
-  return 0.5;
+  float base = entering ? EntryRecords : ExitRecords;
+  return IsRecord(record, base) ? ReadRecord(record, base).x : 0.5;
 }
 
 vec4 result = vec4(0.0);
@@ -220,6 +228,19 @@ void main()
         Add(WholeSegment(a, b, density));
       else
         Add(IntegrateSegment(mix(a, b, from), b, zero, zero, density * (1.0 - from) * sampleDistance, toEye));
+    }
+    else if (!previousInside && !nextInside)
+    {
+      // Both outside: where an entry and an exit are recorded, the ray's whole stretch through the
+      // mesh lies between the two samples (a silhouette, a thin part), from the nearest entry to the
+      // last exit, the scalar linear between the recorded ones.
+      if (IsRecord(previous, EntryRecords) && IsRecord(next, ExitRecords))
+      {
+        vec2 entry = ReadRecord(previous, EntryRecords), exit = ReadRecord(next, ExitRecords);
+        Add(ShortSegment(entry.y, exit.y, max(entry.x + exit.x - 1.0, 0.0)));
+      }
+      for (; hit < hitCount && HitDistance(pixel, hit) < far; ++hit)
+        Add(HitColour(pixel, hit));
     }
     else
     {

@@ -12,6 +12,8 @@
 // through the interpolated texture coordinates instead.
 //UV::BarycentricRay
 
+//UV::ShellRecord
+
 uniform float shellStart;     // distance of the shell's first slice
 uniform float sampleDistance; // between slices
 #ifdef UV_CELL_DENSITIES
@@ -19,6 +21,16 @@ uniform float sampleDistance; // between slices
 // UV_DENSITY_STRIDE per copy past the first, read back by uvBarycentricShellBlendFS.glsl.
 uniform samplerBuffer cellDensities;
 #endif
+
+/// The normalised scalar at distance z along the ray, inside the tetrahedron.
+float ScalarAt(BarycentricRay ray, float z)
+{
+#ifdef UV_TEXTURE
+  return ImageScalarAt(CoordinatesAt(ray, z));
+#else
+  return dot(cellScalars, CoordinatesAt(ray, z));
+#endif
+}
 
 void main()
 {
@@ -32,17 +44,20 @@ void main()
   const float raised = 0.0;
 #endif
   float atFace = dot(cellScalars, ray.face) + 1.0 + raised, slope = dot(cellScalars, ray.perUnit);
-  // Where the stretch starts and ends between two slices, the slice just outside it records how far
-  // off it is, f in [0, 1] sample distances: entries as 0.01 + 0.24 (1 - f), exits as
-  // 0.51 + 0.24 (1 - f). Inside a neighbour the slice holds >= 1 and the record loses the MAX; among
-  // records the MAX keeps the nearest entry and exit (several tetrahedra may start or end between
-  // the same two slices: the mesh begins at the first and ends at the last). Left alone, a record
-  // tells the blending stage where the mesh (or the opaque geometry) begins or ends.
+  // Where the stretch starts and ends between two slices, the slice just outside records it: how
+  // much of the segment next to it is inside, and the scalar at the boundary (Record). Inside a
+  // neighbour the slice holds >= 1 and the record loses the MAX; among records the MAX keeps the
+  // nearest entry and the last exit (several tetrahedra may start or end between the same two
+  // slices: the mesh begins at the first and ends at the last). Left alone, a record tells the
+  // blending stage where the mesh (or the opaque geometry) begins or ends, and with what scalar: a
+  // stretch lying wholly between two slices, as at a silhouette, is still integrated.
   float entrySlice = floor((entry - shellStart) / sampleDistance);
-  float entryCode =
-    entry > 0.0 ? 0.25 - 0.24 * ((entry - shellStart) / sampleDistance - entrySlice) : 0.0;
+  float entryCode = entry > 0.0
+    ? Record(EntryRecords, 1.0 - ((entry - shellStart) / sampleDistance - entrySlice), ScalarAt(ray, entry))
+    : 0.0;
   float exitSlice = ceil((exit - shellStart) / sampleDistance);
-  float exitCode = 0.75 - 0.24 * (exitSlice - (exit - shellStart) / sampleDistance);
+  float exitCode =
+    Record(ExitRecords, 1.0 - (exitSlice - (exit - shellStart) / sampleDistance), ScalarAt(ray, exit));
   vec4 values[UV_TARGETS];
   for (int t = 0; t < UV_TARGETS; ++t)
   {

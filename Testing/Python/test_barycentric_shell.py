@@ -56,20 +56,22 @@ class AccuracyTests(SceneTestCase):
         for coarse, fine in zip(errors, errors[1:]):
             self.assertLess(fine, 0.8 * coarse)
         self.assertLess(errors[-1], errors[0] / 10)
-        # Measured 5.4e-3 at 0.1 down to 1.7e-4 at 0.01: where the ray enters or leaves the mesh between
-        # two samples, the slice outside records how far off the boundary is (half a segment without it:
-        # 1.1e-2 down to 1.3e-3, first order).
-        self.assertLess(errors[-1], 3e-4)
+        # Where the ray enters or leaves the mesh between two samples, the slice outside records how far
+        # off the boundary is and the scalar there; a silhouette ray's whole stretch between two samples
+        # is integrated from an entry and an exit record. Without the scalar and the whole stretches
+        # (records of the distance only) the finest error was about six times this bound.
+        self.assertLess(errors[-1], 6e-5)
 
     def test_default_sample_distance(self):
-        # Automatic: 128 samples across the bounding box diagonal. Measured 9.2e-4 (early termination
-        # included).
+        # Automatic: 128 samples across the bounding box diagonal (early termination included). Before
+        # silhouette stretches between two samples were integrated, the error was about 2.5 times the
+        # bound.
         mesh = analytic(12)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         error, scene = self.error(mesh, prop, camera_for(mesh))
         print(f"\n  RMSE {error:.3g} at sample distance {scene.mapper.GetLastSampleDistance():.3g}", end="")
         self.assertAlmostEqual(scene.mapper.GetLastSampleDistance(), mesh.GetLength() / 128, 9)
-        self.assertLess(error, 2e-3)
+        self.assertLess(error, 4e-4)
 
     def test_cell_projection_is_exact(self):
         # The whole segment per tetrahedron, cut at the nodes and pre-integrated: measured 3.8e-7.
@@ -123,14 +125,17 @@ class AccuracyTests(SceneTestCase):
         self.assertLess(projected, 5e-5)
 
     def test_both_routes_draw_the_same_image(self):
-        # Vertex pulling (culled faces) and the geometry shader (back faces emitted): same fragments.
+        # Vertex pulling (culled faces) and the geometry shader (back faces emitted): same fragments,
+        # but for rounding. A boundary's record holds its inside part in levels of 1/2048 of a segment
+        # (uvBarycentricShellRecordLib.glsl), so the two may land on neighbouring levels: a pixel
+        # apart by that part of one segment's opacity.
         mesh = analytic(6, STEINER, vtkAnalyticMeshSource.JITTER)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         for camera in (camera_for(mesh), camera_for(mesh, 50, -20, parallel=True), inside_camera()):
             for mode in (SHELLS, CELL_PROJECTION):
                 images = [copy_image(shell_scene(mesh, prop, camera, 64, RenderMode=mode,
                                                        ProjectionRoute=route).render()) for route in (0, 1)]
-                self.assertLess(rmse(images[0], images[1])[1], 1e-5)
+                self.assertLess(rmse(images[0], images[1])[1], 5e-5)
 
     def test_camera_inside_the_mesh(self):
         mesh = analytic(6)

@@ -51,7 +51,7 @@ def known_limit(case, mapper, error, missed):
     """Why `mapper` is known to fail `case` with this RMSE and count of covered pixels missed, or
     None. Each is a bug left open, reported as KNOWN."""
     opaque = case["function"] in ("all_opaque", "unit_distance_1e-9")
-    if opaque and missed <= 2 and error <= RMSE_BOUND and mapper in ("shells", "hexahedral"):
+    if opaque and missed <= 2 and error <= RMSE_BOUND and mapper == "hexahedral":
         # Opaque at the first touch, a ray that only grazes the mesh's silhouette covers its pixel in
         # the reference; the rasteriser may leave a pixel centre within rounding of the silhouette out.
         return "silhouette pixels within rounding under an opaque function"
@@ -64,10 +64,6 @@ def known_limit(case, mapper, error, missed):
         # Cells a tenth of a pixel across: the segment ends interpolated over projected triangles
         # whose corners the rasteriser snapped are off by a few percent of the cell.
         return "tetrahedra: segment ends over snapped sub-pixel triangles"
-    if mapper == "shells" and case["function"] in ("all_opaque", "unit_distance_1e-9"):
-        # A silhouette ray whose path through the mesh lies between two samples is not sampled, and
-        # under an opaque function even that short path covers the pixel in the reference.
-        return "shells: silhouette paths between two samples"
     if case["camera"] == "on_vertex" and case["mesh"] == "twisted_hexahedra" and mapper == "hexahedral":
         # The eye on a corner of a curved boundary: a ray leaving it outside the mesh and entering
         # further on is walked from the eye's cell, which it is not in, and lost.
