@@ -121,6 +121,88 @@ class ShellRoutes(RouteTestCase):
                        analytic(12), 2e-5)
 
 
+class SubPixelCoverage(RouteTestCase):
+    """The contract for geometry finer than a pixel: every mapper finds the cells a ray crosses by
+    rasterising their projected faces, and a rasteriser snaps projected corners to its sub-pixel grid
+    (GL_SUBPIXEL_BITS: at least 4 bits, a sixteenth of a pixel; llvmpipe's is 8). Coverage of a pixel
+    is therefore the reference's wherever the pixel's centre is at least 1/16 pixel from every
+    projected edge, and the rasteriser's closer than that. A mesh a fraction of a pixel across (the
+    stress suite's far-away camera at one pixel) lies wholly within that band."""
+
+    COLUMN, PIXELS = 3, 8
+
+    def scenes(self, mesh, prop, camera):
+        yield "tetrahedra, projection", Scene(mesh, prop, camera, self.PIXELS, RenderMode=PROJECTION)
+        yield "tetrahedra, ray casting", Scene(mesh, prop, camera, self.PIXELS, RenderMode=RAY_CASTING)
+        yield "shells", Scene(mesh, prop, camera, self.PIXELS, mapper_class=vtkBarycentricShellMapper)
+        yield "cell projection", Scene(mesh, prop, camera, self.PIXELS, mapper_class=vtkBarycentricShellMapper,
+                                       RenderMode=CELL_PROJECTION)
+        yield "hexahedral", HexScene(mesh, prop, camera, self.PIXELS)
+
+    def camera(self, offset):
+        """Parallel view down z with column COLUMN's pixel centres `offset` pixels right of x = 0."""
+        from vtkmodules.vtkRenderingCore import vtkCamera
+        scale = 0.2
+        pixel = 2.0 * scale / self.PIXELS
+        x = offset * pixel + scale - (self.COLUMN + 0.5) * pixel
+        camera = vtkCamera()
+        camera.ParallelProjectionOn()
+        camera.SetParallelScale(scale)
+        camera.SetPosition(x, 0.35, 5.0)
+        camera.SetFocalPoint(x, 0.35, 0.0)
+        camera.SetViewUp(0.0, 1.0, 0.0)
+        camera.SetClippingRange(1.0, 10.0)
+        return camera
+
+    def test_coverage_is_exact_a_sixteenth_of_a_pixel_from_an_edge(self):
+        # One tetrahedron whose outline has an edge along x = 0, on its right and then on its left
+        # (rasterisers count a pixel centre on an edge to one side only), a face rising steeply from
+        # it so the volume is thick close to it, moved across column COLUMN's centres.
+        from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+        from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkUnstructuredGrid
+        prop = uvrender.volume_property((0.0, 1.0))
+        prop.SetScalarOpacityUnitDistance(0.002)
+        band = {}
+        for side in (1, -1):
+            mesh = vtkUnstructuredGrid()
+            points, scalars = vtkPoints(), vtkDoubleArray()
+            scalars.SetName("f")
+            for (x, y, z), value in (((0, 0, 0), 0.2), ((1, 0, 0), 0.8), ((0, 1, 0), 0.5), ((0.002, 0.3, 1), 0.6)):
+                points.InsertNextPoint(side * x, y, z)
+                scalars.InsertNextValue(value)
+            mesh.SetPoints(points)
+            mesh.GetPointData().SetScalars(scalars)
+            mesh.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
+            for sixteenths in (8, 2, 1, -1, -2, -8, 1 / 16, -1 / 16, 1 / 256, -1 / 256):
+                self.check_coverage(mesh, prop, sixteenths / 16, side, band)
+        print("\n  " + DRIVER + ", pixels the rasteriser decided within 1/16 pixel: " +
+              ", ".join(f"{name} {count}" for name, count in band.items()), end="")
+
+    def check_coverage(self, mesh, prop, offset, side, band):
+        """Every mapper's image against the reference with the edge `offset` pixels left of column
+        COLUMN's centres: the same wherever |offset| >= 1/16; within, different in that column only
+        (counted in `band`)."""
+        camera = self.camera(offset)
+        expected = reference(mesh, prop, camera, self.PIXELS)
+        alpha = expected.GetPointData().GetScalars()
+        column = [alpha.GetTuple4(row * self.PIXELS + self.COLUMN)[3] for row in range(self.PIXELS)]
+        if abs(offset) >= 1 / 16:
+            self.assertEqual(max(column) > 0.1, side * offset > 0)  # the column is inside, or not
+        for name, scene in self.scenes(mesh, prop, camera):
+            with self.subTest(mapper=name, offset=offset, side=side):
+                image = scene.render()
+                self.assertEqual(scene.events.errors, 0)
+                self.assertEqual(scene.window_events.errors, 0)
+                drawn = image.GetPointData().GetScalars()
+                off = [p for p in range(self.PIXELS * self.PIXELS)
+                       if abs(drawn.GetTuple4(p)[3] - alpha.GetTuple4(p)[3]) > 0.01]
+                if abs(offset) >= 1 / 16:
+                    self.assertEqual(off, [])
+                else:
+                    self.assertTrue(all(p % self.PIXELS == self.COLUMN for p in off), off)
+                    band[name] = band.get(name, 0) + len(off)
+
+
 class BufferTextureLimit(SceneTestCase):
     """A mesh that needs more buffer-texture texels than the driver allows (GL_MAX_TEXTURE_BUFFER_SIZE:
     softpipe's is 65536, OpenGL 3.3's least) gets one clear error per frame and a transparent image."""
