@@ -86,6 +86,34 @@ std::vector<float> CoincidentCellDensities(const std::vector<std::uint32_t>& cel
   return merged ? density : std::vector<float>();
 }
 
+/// Per cell of `cellPoints` (`Corners` ids each), the first cell with the same point ids in any
+/// order: itself unless it repeats an earlier one. Empty when no cell repeats another. Copies on the
+/// same ids share every face, so a face joins more than two cells: what orders cells by their faces
+/// takes one of each. `sort(begin, end, less)` orders (key, cell) pairs.
+template <int Corners, typename Sort>
+std::vector<std::uint32_t> FirstCopies(const std::vector<std::uint32_t>& cellPoints, Sort&& sort)
+{
+  const std::size_t cellCount = cellPoints.size() / Corners;
+  using Key = std::array<std::uint32_t, Corners>;
+  std::vector<std::pair<Key, std::uint32_t>> keyed(cellCount);
+  for (std::size_t c = 0; c < cellCount; ++c)
+  {
+    std::copy_n(cellPoints.begin() + Corners * c, Corners, keyed[c].first.begin());
+    std::sort(keyed[c].first.begin(), keyed[c].first.end());
+    keyed[c].second = static_cast<std::uint32_t>(c);
+  }
+  sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a < b; });
+  std::vector<std::uint32_t> first(cellCount);
+  bool repeated = false;
+  for (std::size_t i = 0; i < cellCount; ++i)
+  {
+    const bool same = i > 0 && keyed[i].first == keyed[i - 1].first;
+    first[keyed[i].second] = same ? first[keyed[i - 1].second] : keyed[i].second; // runs sort by cell
+    repeated = repeated || same;
+  }
+  return repeated ? first : std::vector<std::uint32_t>();
+}
+
 } // namespace uv
 
 #endif

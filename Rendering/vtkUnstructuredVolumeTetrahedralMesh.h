@@ -9,6 +9,7 @@
 #include "uvBoundaryGapOrder.h"
 #include "uvCellVisibility.h"
 #include "uvFaceAdjacencyOrder.h"
+#include "uvCoincidentCells.h"
 #include "uvHexahedralMesh.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
@@ -498,8 +499,10 @@ public:
   /// state live only while sorting).
   std::size_t GetBytes() const
   {
-    return sizeof(std::uint32_t) * this->Order.capacity() + sizeof(std::int32_t) * this->Adjacency.capacity() +
-      sizeof(this->Boundary[0]) * this->Boundary.capacity() + this->Faces.GetBytes();
+    return sizeof(std::uint32_t) *
+      (this->Order.capacity() + this->Copies.capacity() + this->Kept.capacity() + this->SetOf.capacity()) +
+      sizeof(std::int32_t) * this->Adjacency.capacity() + sizeof(this->Boundary[0]) * this->Boundary.capacity() +
+      this->Faces.GetBytes();
   }
 
 private:
@@ -549,20 +552,94 @@ private:
       for (std::size_t i = 0; i < drawn.size(); ++i)
         corners[i] = mesh.CornerPoints[drawn[i]];
     }
-    const std::vector<std::uint32_t>& ids = ownPoints ? corners : drawn;
+    const std::vector<std::uint32_t>& allIds = ownPoints ? corners : drawn;
     if (this->AdjacencyFor != mesh.TopologyVersion)
     {
-      this->Adjacency = uv::MakeTetrahedronFaceAdjacency(ids, ParallelFor);
+      this->UpdateCopies(allIds);
+      this->Adjacency = uv::MakeTetrahedronFaceAdjacency(this->Copies.empty() ? allIds : this->Compact(allIds), ParallelFor);
       this->AdjacencyFor = mesh.TopologyVersion;
     }
+    if (!this->Copies.empty())
+    {
+      // Copies of a tetrahedron (a mesh appended to itself) share its faces, which then join none of
+      // them: the faces of one tetrahedron of each set order the sets, each drawn next to its copies.
+      const std::vector<std::uint32_t> ids = this->Compact(allIds);
+      const auto position = [&](std::size_t u, int k) { return glm::dvec3(mesh.Corner(this->Kept[u], k)); };
+      std::vector<std::uint32_t> sets = this->SetsInOrder();
+      this->SortByFaces(mesh, ids, position, eye, parallel, pixels, sets);
+      this->ExpandSets(sets);
+      return;
+    }
     const auto position = [&mesh](std::size_t t, int k) { return glm::dvec3(mesh.Corner(t, k)); };
+    this->SortByFaces(mesh, allIds, position, eye, parallel, pixels, this->Order);
+  }
+
+  /// `order` (cells of `ids`) made exact across faces and gaps.
+  template <typename Position>
+  void SortByFaces(const TetrahedralMesh& mesh, const std::vector<std::uint32_t>& ids, const Position& position,
+    const glm::dvec3& eye, bool parallel, const uv::PixelGrid& pixels, std::vector<std::uint32_t>& order)
+  {
     this->UpdateBoundary(mesh, ids, position);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
     if (!this->Boundary.empty() && pixels.Width > 0 && pixels.Height > 0)
       gaps = uv::GapConstraints(this->Boundary, position, pixels, ParallelFor);
     this->GapConstraints = gaps.size();
-    this->Faces.Sort(this->Order, ids, position, this->Adjacency, eye, parallel, ParallelFor, gaps);
+    this->Faces.Sort(order, ids, position, this->Adjacency, eye, parallel, ParallelFor, gaps);
     this->CyclesBroken = this->Faces.CyclesBroken;
+  }
+
+  /// Which tetrahedra repeat another's ids (Copies: per tetrahedron the first of its set; empty when
+  /// none does), and the first of each set in order (Kept) with each tetrahedron's set (SetOf).
+  void UpdateCopies(const std::vector<std::uint32_t>& ids)
+  {
+    this->Copies = uv::FirstCopies<4>(ids, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
+    this->Kept.clear();
+    this->SetOf.assign(this->Copies.size(), 0);
+    for (std::size_t t = 0; t < this->Copies.size(); ++t)
+    {
+      if (this->Copies[t] == t)
+        this->Kept.push_back(static_cast<std::uint32_t>(t));
+      this->SetOf[t] = this->Copies[t] == t ? static_cast<std::uint32_t>(this->Kept.size() - 1) : this->SetOf[this->Copies[t]];
+    }
+  }
+
+  /// The ids of the first tetrahedron of each set.
+  std::vector<std::uint32_t> Compact(const std::vector<std::uint32_t>& ids) const
+  {
+    std::vector<std::uint32_t> compact(4 * this->Kept.size());
+    for (std::size_t u = 0; u < this->Kept.size(); ++u)
+      std::copy_n(ids.begin() + 4 * std::size_t(this->Kept[u]), 4, compact.begin() + 4 * u);
+    return compact;
+  }
+
+  /// The sets of Order's tetrahedra, each once, where its first member stands in Order.
+  std::vector<std::uint32_t> SetsInOrder() const
+  {
+    std::vector<std::uint32_t> sets;
+    std::vector<unsigned char> seen(this->Kept.size(), 0);
+    for (std::uint32_t t : this->Order)
+      if (!seen[this->SetOf[t]])
+      {
+        seen[this->SetOf[t]] = 1;
+        sets.push_back(this->SetOf[t]);
+      }
+    return sets;
+  }
+
+  /// Order again from the sorted sets: each set's members of Order together, where the set stands.
+  void ExpandSets(const std::vector<std::uint32_t>& sets)
+  {
+    std::vector<std::uint32_t> start(this->Kept.size() + 1, 0), members(this->Order.size());
+    for (std::uint32_t t : this->Order)
+      ++start[this->SetOf[t] + 1];
+    for (std::size_t u = 0; u < this->Kept.size(); ++u)
+      start[u + 1] += start[u];
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::uint32_t t : this->Order)
+      members[next[this->SetOf[t]]++] = t;
+    this->Order.clear();
+    for (std::uint32_t u : sets)
+      this->Order.insert(this->Order.end(), members.begin() + start[u], members.begin() + start[u + 1]);
   }
 
   /// The boundary faces a pixel's ray can cross between two others (none on a convex mesh), once
@@ -580,8 +657,9 @@ private:
     this->BoundaryFor = versions;
   }
 
-  std::vector<std::int32_t> Adjacency;
+  std::vector<std::int32_t> Adjacency; // of the first tetrahedron of each set when some repeat (Kept)
   std::uint64_t AdjacencyFor = 0; // the mesh's TopologyVersion
+  std::vector<std::uint32_t> Copies, Kept, SetOf; // UpdateCopies (empty when no tetrahedron repeats)
   std::vector<std::pair<std::uint32_t, int>> Boundary; // boundary faces off a non-convex mesh's hull
   std::pair<std::uint64_t, std::uint64_t> BoundaryFor{ 0, 0 }; // TopologyVersion, PositionsVersion
   uv::PixelGrid Pixels;

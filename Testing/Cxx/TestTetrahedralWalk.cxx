@@ -190,6 +190,9 @@ TEST(TetrahedralWalk, CoincidentTetrahedraMergeByPositionAndField)
     (std::vector<float>{ 2, 2, 0, 0, 1 }));
   const std::vector<std::uint32_t> firstTwo(cells.begin(), cells.begin() + 8);
   EXPECT_TRUE(uv::CoincidentCellDensities<4>(firstTwo, same, points, {}, sort).empty());
+  // By ids alone (what the face order joins): only the repeat of the first on its own ids.
+  EXPECT_EQ(uv::FirstCopies<4>(cells, sort), (std::vector<std::uint32_t>{ 0, 1, 0, 3, 4 }));
+  EXPECT_TRUE(uv::FirstCopies<4>(firstTwo, sort).empty());
 }
 
 TEST(TetrahedralWalk, RaysCrossTheTetrahedraTheBruteForceFinds)
