@@ -272,7 +272,7 @@ struct PassFrame
 };
 
 /// Per peel, the nearest boundary face where each pixel's ray enters the mesh beyond where the
-/// previous peel left it: the boundary faces rasterised (6 vertices each, pulled from the mesh's
+/// previous peel left it: the boundary faces rasterised (12 vertices each, pulled from the mesh's
 /// buffer textures) into Entry, depth-tested.
 class EntryPass
 {
@@ -305,7 +305,7 @@ public:
       pass.SetRayUniforms(program);
       pass.NoAttributes->Bind();
       entered = uvgl::SamplesPassed([&] {
-        uvgl::DrawItemsInChunks(program, "faceOffset", GL_TRIANGLES, boundaryCount, 6);
+        uvgl::DrawItemsInChunks(program, "faceOffset", GL_TRIANGLES, boundaryCount, 12);
       }) > 0;
       pass.NoAttributes->Release();
       images.Exit->Deactivate();

@@ -6,6 +6,7 @@
 in vec3 modelPosition;
 flat in int boundaryFace;
 flat in vec3 outwardNormal;
+flat in int widening; // from a triangle of the face's other diagonal (uvHexahedralEntryVS.glsl)
 
 uniform vec3 nearPlane[3];    // the rays (EyeRay)
 uniform vec3 rayDirection[3];
@@ -38,29 +39,41 @@ int BoundaryPatch(out vec3 a, out vec3 b, out vec3 c, out vec3 d, out int cell)
   return CanonicalFace(q, qi, a, b, c, d);
 }
 
-/// The nearest ray parameter beyond `after` where the ray enters the mesh through the patch, or 3e38.
-float EntryParameter(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, int corners, float after)
+/// The nearest ray parameter beyond `after` where the ray enters the mesh through the patch (with
+/// `anyCrossing`, or leaves it beyond t = 0: `leaving`), or 3e38.
+float EntryParameter(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d, int corners, float after,
+  bool anyCrossing, out bool leaving)
 {
+  leaving = false;
   float h0, h1;
   vec3 n0, n1;
   int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
   if (hits == 0)
   {
-    // Rasterisation put this pixel on this face, the exact patch just misses it (its centre is
-    // within rounding of the face's edge): take the triangle's point where the ray enters here; the
-    // walk sorts out the cell.
+    // Rasterisation put this pixel on this face's own triangles, the exact patch just misses it (its
+    // centre is within rounding of the face's edge): take the triangle's point where the ray enters
+    // here; the walk sorts out the cell. The other diagonal's triangles reach beyond the patch where
+    // it is curved: a miss there is a miss.
     float nearby = dot(modelPosition - origin, direction);
-    return dot(outwardNormal, direction) < 0.0 && nearby > after ? nearby : 3.0e38;
+    return widening == 0 && dot(outwardNormal, direction) < 0.0 && nearby > after ? nearby : 3.0e38;
   }
   // Only where the ray enters the mesh: the patch's own normal there, turned outward (a curved
   // boundary face can be entered on one part and left on another).
   vec3 normal0 = OrientedNormal(n0, outwardNormal);
   vec3 normal1 = OrientedNormal(n1, outwardNormal);
+  // Leaving faces only beyond the near-plane point (t = 0), which the traversal walks back to.
+  bool leaves0 = dot(normal0, direction) >= 0.0, leaves1 = dot(normal1, direction) >= 0.0;
   float t = 3.0e38;
-  if (h0 > after && dot(normal0, direction) < 0.0)
+  if (h0 > after && (!leaves0 || (anyCrossing && h0 > 0.0)))
+  {
     t = h0;
-  if (hits > 1 && h1 > after && dot(normal1, direction) < 0.0)
-    t = min(t, h1);
+    leaving = leaves0;
+  }
+  if (hits > 1 && h1 > after && h1 < t && (!leaves1 || (anyCrossing && h1 > 0.0)))
+  {
+    t = h1;
+    leaving = leaves1;
+  }
   return t;
 }
 
@@ -73,7 +86,7 @@ void main()
   // unshared points), whose crossing rounds to either side of the stop -- but not the face the lost
   // walk entered by, which would lose it again.
   vec4 exit = texelFetch(previousExit, ivec2(gl_FragCoord.xy), 0);
-  if (firstPeel == 0 && (!(exit.r < 3.0e38) || (exit.g > 1.5 && boundaryFace == int(exit.b))))
+  if (firstPeel == 0 && (!(exit.r < 3.0e38) || (exit.g > 1.5 && exit.g < 2.5 && boundaryFace == int(exit.b))))
     discard;
   vec3 origin, direction;
   EyeRay(PixelNdc(gl_FragCoord.xy, viewportSize), nearPlane, rayDirection, origin, direction);
@@ -83,7 +96,10 @@ void main()
   // In proportion to the ray parameter and the face, not absolute: meshes of any size and distance.
   float wall = exit.g > 0.5 ? 1e-5 * (abs(exit.r) + length(c - a)) : 0.0;
   float after = firstPeel == 1 ? -3.0e38 : exit.r - wall;
-  float t = EntryParameter(origin, direction, a, b, c, d, corners, after);
+  // Where the first peel did not locate the ray's near-plane point (uvHexahedralTraverseFS.glsl's
+  // UNLOCATED), the nearest crossing of either kind: where the ray leaves, the point is in the mesh.
+  bool leaving;
+  float t = EntryParameter(origin, direction, a, b, c, d, corners, after, firstPeel == 0 && exit.g > 2.5, leaving);
   // Not back into the cell the walk left the mesh from, where it left it (exit.a, -1: none).
   if (firstPeel == 0 && exit.g > 0.5 && exit.g < 1.5 && cell == int(exit.a) && t <= exit.r + wall)
     discard;
@@ -93,5 +109,5 @@ void main()
   }
   vec4 clip = modelToClip * vec4(origin + t * direction, 1.0);
   gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
-  gl_FragData[0] = vec4(t, float(boundaryFace), 0.0, 1.0);
+  gl_FragData[0] = vec4(t, float(boundaryFace), leaving ? 1.0 : 0.0, 1.0);
 }

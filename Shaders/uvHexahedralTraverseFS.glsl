@@ -63,7 +63,10 @@ vec3 colour = vec3(0.0);
 float transmittance = 1.0;
 // How the walk ended, for the next peel's entry pass: opaque, out of the mesh through a boundary
 // face, or lost at an edge (Relocate found no cell ahead).
-const float STOPPED = 0.0, LEFT_THROUGH_BOUNDARY = 1.0, LOST = 2.0;
+// UNLOCATED: the first peel's walk from startCell did not reach the ray's near-plane point (a hole in
+// the way, or the point is outside the mesh); the next peel's entry pass takes the nearest crossing
+// of either kind for it.
+const float STOPPED = 0.0, LEFT_THROUGH_BOUNDARY = 1.0, LOST = 2.0, UNLOCATED = 3.0;
 const int nearPlaneSteps = 256; // cells a ray walks from startCell to its near-plane point
 float stopKind = STOPPED;
 // The cell the walk left the mesh from (LEFT_THROUGH_BOUNDARY), -1 otherwise: the next peel does not
@@ -1079,22 +1082,26 @@ float CastRay(ivec2 pixel, vec4 start, bool fromStartCell)
   vec4 opaque = clipToModel * vec4(ndc, 2.0 * depth - 1.0, 1.0);
   float opaqueT = depth < 1.0 ? dot(opaque.xyz / opaque.w - origin, direction) : noExit;
   // With the near plane inside the mesh, the first peel starts every ray at its own near-plane point
-  // (t = 0), in the cell found by walking there from startCell; a ray whose point lies outside the
-  // mesh leaves it to the next peel's entry faces beyond the near plane. (One call of Walk: the
-  // compiler inlines every call, and the walk is most of the shader.)
+  // (t = 0), in the cell found by walking there from startCell. Where that walk does not get there,
+  // the next peel takes the nearest boundary crossing beyond the point: where the ray enters the
+  // mesh, the walk starts there; where it leaves (`start.b`), the point is in the mesh and the ray
+  // inside it all the way, and the point's cell is found by walking back to it from that face's
+  // cell. (One call each of Walk and WalkTowards: the compiler inlines every call, and each copy
+  // costs seconds of compilation on a CPU driver.)
+  bool seeking = !fromStartCell && start.b > 0.5;
   ivec4 cellFace = fromStartCell ? ivec4(startCell, -1, 0, 0) : texelFetch(boundaryFaces, int(start.g));
   int cell = cellFace.x;
-  if (fromStartCell)
+  if (fromStartCell || seeking)
   {
     LoadCell(cell);
     if (!WalkTowards(origin, cell, nearPlaneSteps))
     {
-      stopKind = LEFT_THROUGH_BOUNDARY;
+      stopKind = fromStartCell ? UNLOCATED : LEFT_THROUGH_BOUNDARY;
       return 0.0;
     }
   }
-  float t = fromStartCell ? 0.0 : start.r;
-  return Walk(origin, direction, opaqueT, cell, cellFace.y, t);
+  float t = fromStartCell || seeking ? 0.0 : start.r;
+  return Walk(origin, direction, opaqueT, cell, seeking ? -1 : cellFace.y, t);
 }
 
 void main()
