@@ -864,6 +864,32 @@ class StressTests(SceneTestCase):
         self.assertTrue(ambiguous)
         self.assertEqual({y for _, y in ambiguous}, {size // 2})
 
+    def test_rasteriser_band_forgives_only_pixels_on_a_projected_edge(self):
+        # stress.py forgives up to BAND_PIXELS pixels within 1/16 pixel of a projected edge (the
+        # contract of test_routes.SubPixelCoverage). One pixel changed on a projected edge is forgiven;
+        # the same change at a pixel half a pixel from every edge, or on too many pixels, is not.
+        mesh = analytic_hexahedra(2)  # seen along an axis, its middle edges run through pixel centres
+        case = {"scalars": "smooth", "camera": "axis_aligned", "function": "ramp"}
+        mesh = stress.apply_scalars(mesh, case)
+        prop, camera, size = stress.make_property(mesh, case), stress.make_camera(mesh, case), 17
+        expected = reference(mesh, prop, camera, size)
+        edges = stress.projected_edges(mesh, camera, size)
+        alpha = expected.GetPointData().GetScalars()
+        covered = [p for p in range(size * size) if alpha.GetTuple4(p)[3] > 0.1]
+        near = [p for p in covered if stress.within_band(p, size, edges)]
+        far = [p for p in covered if p not in near]
+        self.assertTrue(near and far)
+
+        def changed(pixels):
+            image = copy_image(expected)
+            for p in pixels:
+                image.GetPointData().GetScalars().SetTuple4(p, 0.0, 0.0, 0.0, 0.0)
+            return image
+        self.assertIsNotNone(stress.rasteriser_band(changed(near[:1]), expected, mesh, camera, size))
+        self.assertIsNone(stress.rasteriser_band(changed(far[:1]), expected, mesh, camera, size))
+        self.assertIsNone(stress.rasteriser_band(changed(near[:stress.BAND_PIXELS + 1]), expected, mesh, camera,
+                                                 size))
+
     def test_coincident_cells_add_their_media(self):
         # Every cell twice on the same points, as a mesh appended twice: the optical model adds the
         # copies' media. Four faces of one key joined none of them, and the walk entered one copy
