@@ -120,6 +120,26 @@ inline HexahedronFaceRecord MakeFaceRecord(
   return record;
 }
 
+/// Marks collapsed (all NoPoint) the six faces of a cell that has no volume by its point ids: fewer
+/// than four distinct corners, or two faces on the same points (a layer pinched out, its top
+/// nodes merged with its bottom ones). Such a cell bounds nothing, so the cells above and below it
+/// share their face as two cells, not four.
+inline void CollapseFacesOfFlatCell(HexahedronFaceRecord* faces)
+{
+  std::array<std::uint32_t, 24> corners;
+  for (int f = 0; f < 6; ++f)
+    std::copy(faces[f].Key.begin(), faces[f].Key.end(), corners.begin() + 4 * f);
+  std::sort(corners.begin(), corners.end());
+  const auto distinct = std::unique(corners.begin(), corners.end()) - corners.begin();
+  bool flat = distinct - (corners[distinct - 1] == NoPoint ? 1 : 0) < 4;
+  for (int f = 0; f < 6 && !flat; ++f)
+    for (int g = f + 1; g < 6 && !flat; ++g)
+      flat = faces[f].Key[0] != NoPoint && faces[f].Key == faces[g].Key;
+  if (flat)
+    for (int f = 0; f < 6; ++f)
+      faces[f].Key.fill(NoPoint);
+}
+
 /// Joins the faces (sorted) whose key exactly two of them share, in `neighbours`; returns the others,
 /// but for the collapsed ones, which are neither joined nor boundary.
 inline std::vector<HexahedronFaceRecord> JoinFacePairs(
@@ -148,7 +168,8 @@ inline std::vector<HexahedronFaceRecord> JoinFacePairs(
 
 /// Which cells share each face (uv::HexahedronFaces numbering): a face two cells share joins them;
 /// any other (a boundary face, or a non-manifold one, every copy) is a boundary face; a collapsed
-/// face (FaceKey) is neither, and has no neighbour. Faces are matched by point id first; those left
+/// face (FaceKey), and every face of a cell flat by its ids (CollapseFacesOfFlatCell), is neither,
+/// and has no neighbour. Faces are matched by point id first; those left
 /// over, by the points' `samePoint` representatives (CoincidentPointRepresentatives; empty: none), so
 /// a mesh repeating its points along internal faces is joined across them. By id first: a flat
 /// layer of cells (its points moved onto the layer below) would otherwise make four faces of each
@@ -164,8 +185,11 @@ HexahedralFaces MakeHexahedralFaces(const std::vector<std::uint32_t>& cellPoints
   std::vector<HexahedronFaceRecord> faces(6 * cellCount);
   parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
     for (std::size_t c = begin; c < end; ++c)
+    {
       for (int f = 0; f < 6; ++f)
         faces[6 * c + f] = MakeFaceRecord(cellPoints, {}, static_cast<std::uint32_t>(8 * c + f));
+      CollapseFacesOfFlatCell(&faces[6 * c]);
+    }
   });
   progress(0.5);
   sort(faces.begin(), faces.end());

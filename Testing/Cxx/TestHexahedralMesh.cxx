@@ -221,3 +221,28 @@ TEST(HexahedronMesh, TetrahedronFaceNeighboursAcrossEachCorner)
   EXPECT_EQ(neighbours.Low, (std::vector<float>{ 0.25f, 0.25f }));
   EXPECT_EQ(neighbours.High, (std::vector<float>{ 0.75f, 0.75f }));
 }
+
+TEST(HexahedronMesh, ACellFlatByItsIdsBoundsNothing)
+{
+  // Three cubes stacked in z; the middle one pinched out as reservoir writers do it: its top
+  // nodes are its bottom nodes. Its top and bottom faces are the same four ids, which the cells
+  // above and below also use: four faces of one key. The flat cell bounds nothing, so the other
+  // two are neighbours.
+  auto id = [](int i, int j, int k) { return static_cast<std::uint32_t>(i + 2 * j + 4 * k); };
+  auto cube = [&](int bottom, int top) {
+    return std::vector<std::uint32_t>{ id(0, 0, bottom), id(1, 0, bottom), id(1, 1, bottom), id(0, 1, bottom),
+      id(0, 0, top), id(1, 0, top), id(1, 1, top), id(0, 1, top) };
+  };
+  std::vector<std::uint32_t> cells;
+  for (const auto& cell : { cube(0, 1), cube(1, 1), cube(1, 2) })
+    cells.insert(cells.end(), cell.begin(), cell.end());
+  const uv::HexahedralFaces faces =
+    uv::MakeHexahedralFaces(cells, {}, Serial, [](auto begin, auto end) { std::sort(begin, end); }, [](double) {});
+  EXPECT_EQ(faces.Neighbours[8 * 0 + 1], 8 * 2 + 0); // cube 0's top (face 1) meets cube 2's bottom
+  EXPECT_EQ(faces.Neighbours[8 * 2 + 0], 8 * 0 + 1);
+  for (int f = 0; f < 6; ++f)
+    EXPECT_EQ(faces.Neighbours[8 * 1 + f], -1);
+  for (std::size_t b = 0; b < faces.Boundary.size(); b += 4)
+    EXPECT_NE(faces.Boundary[b], 1);
+  EXPECT_EQ(faces.Boundary.size(), 4u * 10u); // two cubes' outer faces only
+}
