@@ -30,6 +30,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -249,11 +250,14 @@ struct PassFrame
   vtkOpenGLVertexArrayObject* NoAttributes = nullptr;
   glm::dmat4 ModelToClip{ 1.0 }, ClipToModel{ 1.0 }, ModelToEye{ 1.0 };
   glm::dmat3 NormalToEye{ 1.0 };
+  double MeshRadius = 1.0; // half the diagonal of the points' bounds, about `center`
 
-  static PassFrame Make(const vtkUnstructuredVolumeFrame& frame, const glm::dvec3& center,
+  static PassFrame Make(const vtkUnstructuredVolumeFrame& frame, const glm::dvec3& center, const double bounds[6],
     vtkOpenGLVertexArrayObject* noAttributes)
   {
     PassFrame pass;
+    const glm::dvec3 diagonal(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+    pass.MeshRadius = std::max(0.5 * glm::length(diagonal), std::numeric_limits<double>::min());
     pass.Frame = &frame;
     pass.NoAttributes = noAttributes;
     pass.ModelToEye = frame.ModelToEye(center);
@@ -301,6 +305,7 @@ public:
       images.Exit->Activate();
       program->SetUniformi("previousExit", images.Exit->GetTextureUnit());
       program->SetUniformi("firstPeel", firstPeel ? 1 : 0);
+      program->SetUniformf("meshRadius", static_cast<float>(pass.MeshRadius));
       SetMatrix(program, "modelToClip", pass.ModelToClip);
       pass.SetRayUniforms(program);
       pass.NoAttributes->Bind();
@@ -687,7 +692,8 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
 {
   Internals& impl = *this->Impl;
   impl.Images.Resize(frame.Window, frame.Width, frame.Height);
-  const PassFrame pass = PassFrame::Make(frame, impl.Mesh.Points.Center, target.GetNoAttributes());
+  const PassFrame pass =
+    PassFrame::Make(frame, impl.Mesh.Points.Center, impl.Mesh.Points.Bounds, target.GetNoAttributes());
   TraversalSettings settings;
   settings.IntegrationMode = this->IntegrationMode;
   settings.FixedSteps = this->FixedSteps;

@@ -10,12 +10,12 @@ flat in int widening; // from a triangle of the face's other diagonal (uvHexahed
 
 uniform vec3 nearPlane[3];    // the rays (EyeRay)
 uniform vec3 rayDirection[3];
-uniform mat4 modelToClip;
 uniform isamplerBuffer boundaryFaces;
 uniform vec2 viewportSize;
 uniform sampler2D previousExit; // the previous peel's traversal: where and how it stopped, the
                                 // boundary face it entered by
 uniform int firstPeel;
+uniform float meshRadius;       // the mesh's bounding radius about the model origin (its centre)
 
 //UV::BilinearFace
 
@@ -107,7 +107,11 @@ void main()
   {
     discard; // the ray leaves the mesh here, or this face was traversed already
   }
-  vec4 clip = modelToClip * vec4(origin + t * direction, 1.0);
-  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+  // The nearest face wins the depth test by its ray parameter, not by the window depth: that one's
+  // resolution falls with the square of the distance over the near plane's, and faces a cell apart
+  // can round to one depth. Any map increasing in t will do per pixel; this one is steepest where the
+  // ray passes the mesh's centre and keeps the float's resolution over the whole mesh.
+  float fromCentre = t - dot(-origin, direction);
+  gl_FragDepth = 0.5 + 0.5 * fromCentre / (abs(fromCentre) + meshRadius);
   gl_FragData[0] = vec4(t, float(boundaryFace), leaving ? 1.0 : 0.0, 1.0);
 }

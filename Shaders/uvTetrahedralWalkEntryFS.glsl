@@ -5,7 +5,8 @@
 // that leaves a non-convex mesh, or crosses a hole or a gap between cells, is picked up again by the
 // next peel). The test is exact, by the walk's own Plücker products (two boundary faces sharing an
 // edge leave no crack between them), and the ray parameter the same the walk computes. Writes
-// (boundary face, ray parameter); the depth test keeps the nearest.
+// (boundary face, ray parameter); the depth test, on a depth made from that parameter, keeps the
+// nearest.
 flat in int boundaryFace;
 flat in vec3 faceCorners[3];
 flat in vec3 outwardNormal;
@@ -78,5 +79,10 @@ void main()
   {
     discard;
   }
+  // The nearest face wins the depth test by its ray parameter, not by the window depth, whose
+  // resolution falls with the square of the distance over the near plane's: faces a cell apart can
+  // round to one depth there. Increasing in t, steepest where the ray passes the mesh's centre.
+  float fromCentre = at - dot(0.5 * (boundsLow + boundsHigh) - origin, direction);
+  gl_FragDepth = 0.5 + 0.5 * fromCentre / (abs(fromCentre) + 0.5 * length(boundsHigh - boundsLow) + 1e-30);
   gl_FragData[0] = vec4(float(boundaryFace), at, 0.0, 1.0);
 }
