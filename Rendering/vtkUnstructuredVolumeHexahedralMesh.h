@@ -8,6 +8,7 @@
 #define vtkUnstructuredVolumeHexahedralMesh_h
 
 #include "uvHexahedralMesh.h"
+#include "uvNonConformingFaces.h"
 #include "uvLinearCellSplit.h"
 #include "uvScalarNormalisation.h"
 #include "vtkUnstructuredVolumeMeshContent.h"
@@ -52,6 +53,7 @@ public:
   vtkSmartPointer<vtkDataSet> Drawn;
   RenderedScalar DrawnScalar;
   vtkIdType TangledCells = 0, NaNCells = 0;
+  std::size_t NonConformingFaces = 0; ///< boundary faces lying against another cell's (faults)
   vtkIdType FlatCells = 0; // vertices, lines and polygons: not volumes, left out
   int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;
   std::uint64_t Version = 0;      // bumped by every change: positions, values, cells
@@ -129,8 +131,15 @@ private:
       this->CellScalars = std::move(cellScalars);
     }
     if (changed.Points)
+    {
       this->TangledCells =
         static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
+      // Which faces lie against which depends on where the points are; the neighbours' GPU copy
+      // follows the cells' version, so a mesh with such faces is built again.
+      if (this->NonConformingFaces > 0 ||
+        uv::LinkNonConformingFaces(this->CellPoints, this->Points.Values, this->Faces) > 0)
+        return false;
+    }
     this->Drawn = input;
     this->DrawnScalar = scalar;
     return true;
@@ -173,6 +182,7 @@ private:
     this->Faces = uv::MakeHexahedralFaces(
       this->CellPoints, samePoint, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
       [&progress](double fraction) { progress(0.8 * fraction); });
+    this->NonConformingFaces = uv::LinkNonConformingFaces(this->CellPoints, this->Points.Values, this->Faces);
     this->Drawn = linear;
     this->DrawnScalar = drawn;
     ++this->Builds;

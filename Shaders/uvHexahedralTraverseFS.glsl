@@ -21,7 +21,8 @@ uniform sampler2D entry;        // (ray parameter, boundary face) of this peel, 
 uniform sampler2D accumulated;  // colour so far: premultiplied rgb, alpha
 uniform sampler2D opaqueDepth;
 uniform isamplerBuffer boundaryFaces;
-uniform isamplerBuffer cellNeighbours; // per cell 6 values (2 texels): neighbour * 8 + its face, or -1
+uniform isamplerBuffer cellNeighbours; // per cell 6 values (2 texels): neighbour * 8 + its face, or -1;
+                                       // -2 - cell: a boundary face against that cell's (a fault)
 #ifdef UV_CELL_DENSITIES
 uniform samplerBuffer cellDensities;    // per cell, the coincident copies it stands for (media add up)
 #endif
@@ -983,14 +984,14 @@ bool WalkTowards(vec3 target, inout int cell, int steps)
 }
 
 /// No face claims the ray at t: it passed within rounding of an edge or a corner into a cell it only
-/// touches. Finds the cell holding a point a little ahead (farther on each attempt) by walking
-/// towards it from `cell`; false when there is none (the ray is outside the mesh). `ahead` is how far
-/// past t that point lies: the sliver of path skipped.
-bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ahead)
+/// touches. Finds the cell holding a point a little ahead (farther on each of `attempts`, at most 3)
+/// by walking towards it from `cell`; false when there is none (the ray is outside the mesh).
+/// `ahead` is how far past t that point lies: the sliver of path skipped.
+bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ahead, int attempts)
 {
   int startCell = cell;
   bool located = false;
-  for (int attempt = 0; attempt < 3 && !located; ++attempt)
+  for (int attempt = 0; attempt < attempts && !located; ++attempt)
   {
     cell = startCell;
     LoadCell(cell);
@@ -1011,6 +1012,7 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
 #ifdef UV_SKIP_INVISIBLE_CELLS
   int invisibleRun = 0; // cells outside the visible region in a row
 #endif
+  int faultFrom = -1; // the cell the ray left through a fault face, its far side's cell in `cell`
   for (int step = 0; step < maximumCells; ++step)
   {
     LoadCell(cell);
@@ -1027,18 +1029,36 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
     }
 #endif
     float exitT;
-    int exitFace = FindExit(origin, direction, t, enterFace, exitT);
+    int exitFace = faultFrom >= 0 ? -1 : FindExit(origin, direction, t, enterFace, exitT);
     if (exitFace < 0)
     {
+      // No face claims the ray, or it crossed a fault: find its cell a little ahead by walking.
+      // Across a fault only just ahead: a face that merely lies near the far side's (a thin hole
+      // between them) is a gap for the next peel, not medium.
       float ahead;
-      if (!Relocate(origin, direction, t, cell, ahead))
+      bool located = Relocate(origin, direction, t, cell, ahead, faultFrom >= 0 ? 1 : 3);
+      if (!located && faultFrom >= 0)
+      {
+        exitParameter = t; // the fault's face is bare here (its throw): the ray left the mesh
+        stopKind = LEFT_THROUGH_BOUNDARY;
+        leftCell = faultFrom;
+        break;
+      }
+      if (!located)
       {
         exitParameter = t;
         stopKind = LOST;
         break;
       }
+#ifdef UV_CELL_SCALARS
+      if (faultFrom >= 0 && isosurfaceCount > 0)
+        CompositeSurfacesBetweenCells(texelFetch(cellScalars, faultFrom).r, scalars[0], origin + t * direction,
+          exitNormal);
+#endif
+      // Across a fault the faces lie against each other: the ray goes on from where it crossed.
+      t += faultFrom >= 0 ? 0.0 : ahead;
       enterFace = -1;
-      t += ahead;
+      faultFrom = -1;
       continue;
     }
     float segmentEnd = min(exitT, opaqueT);
@@ -1051,6 +1071,13 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
     int next = across[exitFace];
     if (next < 0)
       next = NeighbourAcrossTiedFace(origin, direction, exitT, enterFace, across);
+    if (next < 0 && across[exitFace] <= -2)
+    {
+      faultFrom = cell;
+      cell = -2 - across[exitFace];
+      t = exitT;
+      continue;
+    }
     if (next < 0)
     {
       exitParameter = exitT; // left the mesh: the next peel looks beyond here

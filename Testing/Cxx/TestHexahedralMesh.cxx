@@ -1,6 +1,7 @@
-// The hexahedral mesh's connectivity (uvHexahedralMesh.h) and the scalar normalisation every mapper
+// The hexahedral mesh's connectivity (uvHexahedralMesh.h, uvNonConformingFaces.h) and the scalar normalisation every mapper
 // uploads with (uvScalarNormalisation.h), on a small block of cells.
 #include "uvHexahedralMesh.h"
+#include "uvNonConformingFaces.h"
 #include "uvScalarNormalisation.h"
 #include "uvTestHexahedralRow.h"
 
@@ -245,4 +246,33 @@ TEST(HexahedronMesh, ACellFlatByItsIdsBoundsNothing)
   for (std::size_t b = 0; b < faces.Boundary.size(); b += 4)
     EXPECT_NE(faces.Boundary[b], 1);
   EXPECT_EQ(faces.Boundary.size(), 4u * 10u); // two cubes' outer faces only
+}
+
+TEST(HexahedronMesh, FacesAcrossAFaultLieAgainstEachOther)
+{
+  // Two rows of one cube side by side in x, the second moved down by half a cube with points of
+  // its own (a fault with a throw): its face x = 1 lies against the first's, sharing no point.
+  uvtest::HexahedralRow left(1), right(1);
+  for (std::size_t p = 0; p < right.PointData.size(); p += 4)
+  {
+    right.PointData[p] += 1.0f;
+    right.PointData[p + 2] -= 0.5f;
+  }
+  std::vector<std::uint32_t> cells = left.CellPoints;
+  for (std::uint32_t point : right.CellPoints)
+    cells.push_back(point + static_cast<std::uint32_t>(left.PointData.size() / 4));
+  std::vector<float> points = left.PointData;
+  points.insert(points.end(), right.PointData.begin(), right.PointData.end());
+  uv::HexahedralFaces faces =
+    uv::MakeHexahedralFaces(cells, {}, Serial, [](auto begin, auto end) { std::sort(begin, end); }, [](double) {});
+  ASSERT_EQ(faces.Boundary.size(), 4u * 12u);
+  EXPECT_EQ(uv::LinkNonConformingFaces(cells, points, faces), 2u);
+  EXPECT_EQ(uv::FarSideCell(faces.Neighbours[8 * 0 + 3]), 1); // face 3: r = 1, x = 1
+  EXPECT_EQ(uv::FarSideCell(faces.Neighbours[8 * 1 + 5]), 0); // face 5: r = 0
+  EXPECT_EQ(faces.Neighbours[8 * 0 + 1], -1);                   // the top lies against nothing
+  // Moved apart by a tenth of a cube, they are a gap, not a fault.
+  for (std::size_t p = left.PointData.size(); p < points.size(); p += 4)
+    points[p] += 0.1f;
+  faces = uv::MakeHexahedralFaces(cells, {}, Serial, [](auto begin, auto end) { std::sort(begin, end); }, [](double) {});
+  EXPECT_EQ(uv::LinkNonConformingFaces(cells, points, faces), 0u);
 }
