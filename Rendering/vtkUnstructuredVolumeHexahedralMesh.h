@@ -22,7 +22,10 @@
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkHexahedraToTetrahedra.h"
 #include "vtkHigherOrderSubdivision.h"
+#include "vtkCellData.h"
+#include "vtkPointData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
@@ -156,7 +159,7 @@ private:
     vtkDataSet* linear = this->Linearise(input, drawn);
     if (!linear)
     {
-      return "the higher-order cells cannot be subdivided (see the errors above)";
+      return "the higher-order cells cannot be subdivided, or the prisms and polyhedra split (see the errors above)";
     }
     std::string range = IndexRangeError("points", linear->GetNumberOfPoints(), 1);
     range = range.empty() ? IndexRangeError("cells", linear->GetNumberOfCells(), 8) : range;
@@ -170,9 +173,7 @@ private:
     {
       this->CellPoints.clear();
       this->Faces = uv::HexahedralFaces();
-      return std::to_string(others) + " cells are not hexahedra, voxels, wedges, pyramids or tetrahedra (nor "
-                                      "higher-order ones): split the mesh with vtkHexahedraToTetrahedra and render "
-                                      "it with vtkPreIntegratedTetrahedraMapper";
+      return std::to_string(others) + " 3D cells are of types the walk cannot take nor split";
     }
     const std::vector<std::uint32_t> samePoint = uv::CoincidentPointRepresentatives(
       this->Points.Values, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
@@ -205,22 +206,84 @@ private:
   vtkDataSet* Linearise(vtkDataSet* input, RenderedScalar& scalar)
   {
     this->Subdivided = nullptr;
+    this->Mixed = nullptr;
     bool curved = false;
     for (vtkIdType c = 0; c < input->GetNumberOfCells() && !curved; ++c)
       curved = vtkHigherOrderSubdivision::IsSubdividedCellType(input->GetCellType(c));
-    if (!curved)
-      return input;
-    vtkNew<vtkHigherOrderSubdivision> subdivision;
-    subdivision->SetInputData(input);
-    if (!scalar.OnCells)
-      subdivision->SetFieldArrayName(scalar.Array->GetName());
-    subdivision->Update();
-    this->Subdivided = subdivision->GetOutput();
-    scalar = scalar.On(this->Subdivided);
-    return this->Subdivided->GetNumberOfCells() > 0 && scalar ? this->Subdivided.Get() : nullptr;
+    vtkDataSet* linear = input;
+    if (curved)
+    {
+      vtkNew<vtkHigherOrderSubdivision> subdivision;
+      subdivision->SetInputData(input);
+      if (!scalar.OnCells)
+        subdivision->SetFieldArrayName(scalar.Array->GetName());
+      subdivision->Update();
+      this->Subdivided = subdivision->GetOutput();
+      scalar = scalar.On(this->Subdivided);
+      if (!(this->Subdivided->GetNumberOfCells() > 0 && scalar))
+        return nullptr;
+      linear = this->Subdivided;
+    }
+    return this->SplitOthers(linear, scalar);
+  }
+
+  /// `grid` itself, or where it holds 3D cells the walk does not take as collapsed hexahedra
+  /// (pentagonal and hexagonal prisms, polyhedra), a grid with those split into tetrahedra by
+  /// vtkHexahedraToTetrahedra and the rest as they are. The split keeps the point ids (polyhedra
+  /// may add centres after them), so the tetrahedra join the same walk: by ids where the faces
+  /// match, and through uvNonConformingFaces.h where a quad of a hexahedron meets two triangles.
+  vtkDataSet* SplitOthers(vtkDataSet* grid, RenderedScalar& scalar)
+  {
+    vtkNew<vtkIdList> others;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      const int type = grid->GetCellType(c);
+      if (!AsHexahedron(type) && type != VTK_EMPTY_CELL && IsVolumeCell(type))
+        others->InsertNextId(c);
+    }
+    auto* unstructured = vtkUnstructuredGrid::SafeDownCast(grid);
+    if (others->GetNumberOfIds() == 0 || !unstructured)
+      return grid;
+    vtkNew<vtkUnstructuredGrid> toSplit; // the other cells alone, on all the points
+    toSplit->SetPoints(unstructured->GetPoints());
+    toSplit->GetPointData()->ShallowCopy(unstructured->GetPointData());
+    toSplit->Allocate(others->GetNumberOfIds());
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType i = 0; i < others->GetNumberOfIds(); ++i)
+    {
+      unstructured->GetFaceStream(others->GetId(i), ids);
+      toSplit->InsertNextCell(unstructured->GetCellType(others->GetId(i)), ids);
+    }
+    vtkNew<vtkHexahedraToTetrahedra> split;
+    split->SetInputData(toSplit);
+    split->Update();
+    vtkUnstructuredGrid* tetrahedra = split->GetOutput();
+    vtkDataArray* parents = tetrahedra->GetCellData()->GetArray("vtkOriginalCellIds");
+    this->Mixed = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    this->Mixed->SetPoints(tetrahedra->GetPoints());
+    this->Mixed->GetPointData()->ShallowCopy(tetrahedra->GetPointData());
+    vtkCellData* cellData = this->Mixed->GetCellData();
+    cellData->CopyAllocate(unstructured->GetCellData());
+    this->Mixed->Allocate(grid->GetNumberOfCells() + tetrahedra->GetNumberOfCells());
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      if (!AsHexahedron(grid->GetCellType(c)))
+        continue;
+      unstructured->GetCellPoints(c, ids);
+      cellData->CopyData(unstructured->GetCellData(), c, this->Mixed->InsertNextCell(grid->GetCellType(c), ids));
+    }
+    for (vtkIdType t = 0; t < tetrahedra->GetNumberOfCells() && parents; ++t)
+    {
+      tetrahedra->GetCellPoints(t, ids);
+      const vtkIdType parent = others->GetId(static_cast<vtkIdType>(parents->GetComponent(t, 0)));
+      cellData->CopyData(unstructured->GetCellData(), parent, this->Mixed->InsertNextCell(VTK_TETRA, ids));
+    }
+    scalar = scalar.On(this->Mixed);
+    return scalar ? this->Mixed.Get() : nullptr;
   }
 
   vtkSmartPointer<vtkUnstructuredGrid> Subdivided; // the linear hexahedra drawn for higher-order ones
+  vtkSmartPointer<vtkUnstructuredGrid> Mixed;      // with prisms and polyhedra split into tetrahedra
 
   /// Cells that repeat another (uv::CoincidentCellDensities) become one cell of their count's density.
   void MergeCoincidentCells(const std::vector<std::uint32_t>& samePoint)
