@@ -2,8 +2,8 @@
 puts one mapper in an off-screen window, the reference and the error measures, baseline comparison
 and checks every tetrahedral mapper shares.
 
-Test modules import from here, from uvrender (the rendering helpers the main job also uses) and from
-shared_data (the real meshes), never from one another: each test module is one ctest test, and one
+Test modules import from here, from uvrender (the rendering helpers the main job also uses), from
+shared_data (the real meshes) and from corner_point (generated reservoir grids), never from one another: each test module is one ctest test, and one
 that borrows another's helpers or subclasses its test classes breaks when that module changes."""
 import math
 import os
