@@ -984,19 +984,22 @@ bool WalkTowards(vec3 target, inout int cell, int steps)
 }
 
 /// No face claims the ray at t: it passed within rounding of an edge or a corner into a cell it only
-/// touches. Finds the cell holding a point a little ahead (farther on each of `attempts`, at most 3)
-/// by walking towards it from `cell`; false when there is none (the ray is outside the mesh).
-/// `ahead` is how far past t that point lies: the sliver of path skipped.
-bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ahead, int attempts)
+/// touches. Finds the cell holding a point a little ahead (farther on each of three attempts) by
+/// walking towards it from `cell`; false when there is none (the ray is outside the mesh). `ahead`
+/// is how far past t that point lies: the sliver of path skipped; `attempts`, how many it took.
+/// (The loop's bound stays constant: Mesa 26's llvmpipe miscompiled it as a parameter.)
+bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ahead, out int attempts)
 {
   int startCell = cell;
   bool located = false;
-  for (int attempt = 0; attempt < attempts && !located; ++attempt)
+  attempts = 0;
+  for (int attempt = 0; attempt < 3 && !located; ++attempt)
   {
     cell = startCell;
     LoadCell(cell);
     ahead = (attempt == 0 ? 1e-3 : (attempt == 1 ? 1e-2 : 5e-2)) * length(points[6] - points[0]);
     located = WalkTowards(origin + (t + ahead) * direction, cell, 32);
+    attempts = attempt + 1;
   }
   return located;
 }
@@ -1036,7 +1039,8 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
       // Across a fault only just ahead: a face that merely lies near the far side's (a thin hole
       // between them) is a gap for the next peel, not medium.
       float ahead;
-      bool located = Relocate(origin, direction, t, cell, ahead, faultFrom >= 0 ? 1 : 3);
+      int attempts;
+      bool located = Relocate(origin, direction, t, cell, ahead, attempts) && (faultFrom < 0 || attempts == 1);
       if (!located && faultFrom >= 0)
       {
         exitParameter = t; // the fault's face is bare here (its throw): the ray left the mesh
