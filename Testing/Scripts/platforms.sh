@@ -3,10 +3,11 @@
 # and Debian testing (forky: VTK 9.6, ParaView 6.1), each in a chroot made with debootstrap from
 # Debian's archive, by the same setup.sh and test.sh that run on Debian 12. Run as root.
 #
-#   bash Testing/Scripts/platforms.sh [tools|prepare|test|shell] [trixie] [forky]
+#   bash Testing/Scripts/platforms.sh [tools|prepare|test|shell|run] [trixie] [forky]
 #
 # tools: install debootstrap on this machine (alone, so that parallel prepares need no apt); prepare: make (or reuse) the chroots and install their packages; test (default): prepare, then build
-# into build/<suite>/ and run the platform subset (ctest label `platform`); shell: a shell in one.
+# into build/<suite>/ and run the platform subset (ctest label `platform`); shell: a shell in one;
+# run: the command in $UV_RUN in each, from the source tree (to bisect a driver's failure).
 # Chroots are kept in $UV_CHROOT_CACHE (default /var/cache/unstructuredvolume/chroots) and reused.
 set -euo pipefail
 
@@ -14,7 +15,7 @@ UV_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cache="${UV_CHROOT_CACHE:-/var/cache/unstructuredvolume/chroots}"
 mirror="${UV_DEBIAN_MIRROR:-http://deb.debian.org/debian}"
 action=test
-case "${1:-}" in tools|prepare|test|shell) action="$1"; shift ;; esac
+case "${1:-}" in tools|prepare|test|shell|run) action="$1"; shift ;; esac
 suites=("$@")
 [ "${#suites[@]}" -gt 0 ] || suites=(trixie forky)
 
@@ -90,6 +91,8 @@ for suite in "${suites[@]}"; do
       in_chroot "$suite" bash -c 'cd /uv/main && UV_TEST_LABEL=platform bash Testing/Scripts/test.sh' || status=1 ;;
     shell)
       in_chroot "$suite" bash -c 'cd /uv/main && exec bash -i' || status=1 ;;
+    run)
+      in_chroot "$suite" bash -c "cd /uv/main && $UV_RUN" || status=1 ;;
   esac
   unmount_all
   say "$suite: $([ "$status" -eq 0 ] && echo passed || echo FAILED so far)"
