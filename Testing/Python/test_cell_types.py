@@ -6,8 +6,8 @@ non-convex polyhedron's centre point takes the mean of its vertices). Checks:
 - against vtkLocatorRayMarcher, which samples VTK's own vtkPolyhedron / prism cells (its own
   inside test, VTK's mean value weights, not the split): for a linear field both definitions agree,
   so the two renderers must;
-- the tetrahedral mappers against the reference on a polyhedral mesh; the hexahedral mapper refuses
-  polyhedra with one error naming the split route;
+- every mapper against the reference on a polyhedral mesh; the hexahedral mapper also on hexahedra
+  mixed with polyhedra (split triangles meeting quads) and on the prisms;
 - the real prism files of ../shared/data (skipped when absent).
 """
 import os
