@@ -17,3 +17,14 @@ void EyeRay(vec2 ndc, vec3 nearPlane[3], vec3 rayDirection[3], out vec3 origin, 
   origin = nearPlane[0] + ndc.x * nearPlane[1] + ndc.y * nearPlane[2];
   direction = normalize(rayDirection[0] + ndc.x * rayDirection[1] + ndc.y * rayDirection[2]);
 }
+
+/// The depth an entry pass writes for ray parameter t, so that the depth test keeps the nearest face
+/// by t itself: the window depth resolves distance ever more coarsely past the near plane (with the
+/// square of the distance over the near plane's), and faces a cell apart can round to one depth
+/// there. Increasing in t, steepest at `centreT` (where the ray passes the mesh's centre) and spread
+/// over `radius` (the mesh's), so float keeps its resolution across the whole mesh.
+float RayParameterDepth(float t, float centreT, float radius)
+{
+  float fromCentre = t - centreT;
+  return 0.5 + 0.5 * fromCentre / (abs(fromCentre) + radius + 1e-30);
+}

@@ -107,11 +107,6 @@ void main()
   {
     discard; // the ray leaves the mesh here, or this face was traversed already
   }
-  // The nearest face wins the depth test by its ray parameter, not by the window depth: that one's
-  // resolution falls with the square of the distance over the near plane's, and faces a cell apart
-  // can round to one depth. Any map increasing in t will do per pixel; this one is steepest where the
-  // ray passes the mesh's centre and keeps the float's resolution over the whole mesh.
-  float fromCentre = t - dot(-origin, direction);
-  gl_FragDepth = 0.5 + 0.5 * fromCentre / (abs(fromCentre) + meshRadius);
+  gl_FragDepth = RayParameterDepth(t, dot(-origin, direction), meshRadius); // the model origin is the centre
   gl_FragData[0] = vec4(t, float(boundaryFace), leaving ? 1.0 : 0.0, 1.0);
 }

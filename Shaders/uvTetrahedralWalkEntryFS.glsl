@@ -79,10 +79,7 @@ void main()
   {
     discard;
   }
-  // The nearest face wins the depth test by its ray parameter, not by the window depth, whose
-  // resolution falls with the square of the distance over the near plane's: faces a cell apart can
-  // round to one depth there. Increasing in t, steepest where the ray passes the mesh's centre.
-  float fromCentre = at - dot(0.5 * (boundsLow + boundsHigh) - origin, direction);
-  gl_FragDepth = 0.5 + 0.5 * fromCentre / (abs(fromCentre) + 0.5 * length(boundsHigh - boundsLow) + 1e-30);
+  gl_FragDepth =
+    RayParameterDepth(at, dot(0.5 * (boundsLow + boundsHigh) - origin, direction), 0.5 * length(boundsHigh - boundsLow));
   gl_FragData[0] = vec4(float(boundaryFace), at, 0.0, 1.0);
 }
