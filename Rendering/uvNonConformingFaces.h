@@ -105,6 +105,15 @@ inline bool OutlinesOverlap(const BoundaryFaceShape& a, const BoundaryFaceShape&
                                                                  : glm::cross(a.Normal, glm::dvec3(0.0, 1.0, 0.0)));
   const glm::dvec3 v = glm::cross(a.Normal, u);
   auto flat = [&](const glm::dvec3& x) { return glm::dvec2(glm::dot(x, u), glm::dot(x, v)); };
+  auto extent = [&](const BoundaryFaceShape& shape, const glm::dvec2& axis) { // (low, high) along axis
+    glm::dvec2 range(1e300, -1e300);
+    for (int i = 0; i < shape.CornerCount; ++i)
+    {
+      const double d = glm::dot(flat(shape.Corners[static_cast<std::size_t>(i)]), axis);
+      range = glm::dvec2(std::min(range.x, d), std::max(range.y, d));
+    }
+    return range;
+  };
   for (const BoundaryFaceShape* edges : { &a, &b })
     for (int k = 0; k < edges->CornerCount; ++k)
     {
@@ -113,20 +122,8 @@ inline bool OutlinesOverlap(const BoundaryFaceShape& a, const BoundaryFaceShape&
       if (!(glm::length(edge) > 0.0))
         continue;
       const glm::dvec2 axis = glm::normalize(glm::dvec2(-edge.y, edge.x));
-      double lowA = 1e300, highA = -1e300, lowB = 1e300, highB = -1e300;
-      for (int i = 0; i < a.CornerCount; ++i)
-      {
-        const double d = glm::dot(flat(a.Corners[static_cast<std::size_t>(i)]), axis);
-        lowA = std::min(lowA, d);
-        highA = std::max(highA, d);
-      }
-      for (int i = 0; i < b.CornerCount; ++i)
-      {
-        const double d = glm::dot(flat(b.Corners[static_cast<std::size_t>(i)]), axis);
-        lowB = std::min(lowB, d);
-        highB = std::max(highB, d);
-      }
-      if (std::min(highA, highB) - std::max(lowA, lowB) < margin)
+      const glm::dvec2 onA = extent(a, axis), onB = extent(b, axis);
+      if (std::min(onA.y, onB.y) - std::max(onA.x, onB.x) < margin)
         return false;
     }
   return true;
