@@ -235,10 +235,11 @@ private:
   vtkDataSet* SplitOthers(vtkDataSet* grid, RenderedScalar& scalar)
   {
     vtkNew<vtkIdList> others;
+    VolumeCellTypes volume;
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
     {
       const int type = grid->GetCellType(c);
-      if (!AsHexahedron(type) && type != VTK_EMPTY_CELL && IsVolumeCell(type))
+      if (!AsHexahedron(type) && type != VTK_EMPTY_CELL && volume(type))
         others->InsertNextId(c);
     }
     auto* unstructured = vtkUnstructuredGrid::SafeDownCast(grid);
@@ -343,6 +344,20 @@ private:
     return probe->GetCellDimension() == 3;
   }
 
+  /// IsVolumeCell, asked once per cell type (it stands a cell up to ask).
+  struct VolumeCellTypes
+  {
+    std::array<signed char, 256> Known; // per cell type: 1 3D, 0 not, -1 not asked yet
+    VolumeCellTypes() { this->Known.fill(-1); }
+    bool operator()(int type)
+    {
+      signed char& known = this->Known[static_cast<std::size_t>(type)];
+      if (known < 0)
+        known = IsVolumeCell(type) ? 1 : 0;
+      return known == 1;
+    }
+  };
+
   /// The hexahedra, voxels (reordered), tetrahedra, pyramids and wedges (as collapsed hexahedra) of
   /// `grid` into CellPoints, leaving out those that touch a NaN point scalar or hold a NaN cell
   /// scalar, and the cells that are not 3D (counted in FlatCells). Returns how many 3D cells are none
@@ -355,8 +370,7 @@ private:
     this->NaNCells = 0;
     this->FlatCells = 0;
     vtkIdType others = 0;
-    std::array<signed char, 256> volume; // per cell type: 1 3D, 0 not, -1 not asked yet
-    volume.fill(-1);
+    VolumeCellTypes volume;
     vtkNew<vtkIdList> cellIds;
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
     {
@@ -366,9 +380,7 @@ private:
       const std::array<int, 8>* order = AsHexahedron(type);
       if (!order)
       {
-        if (volume[type] < 0)
-          volume[type] = IsVolumeCell(type) ? 1 : 0;
-        ++(volume[type] ? others : this->FlatCells);
+        ++(volume(type) ? others : this->FlatCells);
         continue;
       }
       grid->GetCellPoints(c, cellIds);
