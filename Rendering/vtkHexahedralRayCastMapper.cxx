@@ -3,6 +3,7 @@
 #include "uvIsosurfaceList.h"
 #include "uvVisibleRegion.h"
 #include "vtkHexahedralRayCastPrograms.h"
+#include "vtkPreIntegratedTetrahedraMapper.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
@@ -15,6 +16,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkCellType.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -23,7 +25,9 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
 #include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
@@ -444,6 +448,13 @@ private:
     program->SetUniformi("startCell", settings.StartCell);
   }
 };
+
+/// Cells the tetrahedra mapper takes as tetrahedra (higher-order ones subdivided as here).
+bool IsTetrahedron(int type)
+{
+  return type == VTK_TETRA || type == VTK_QUADRATIC_TETRA || type == VTK_LAGRANGE_TETRAHEDRON ||
+    type == VTK_BEZIER_TETRAHEDRON;
+}
 } // namespace
 
 class vtkHexahedralRayCastMapper::Internals
@@ -466,6 +477,40 @@ public:
   int StartCellOfFrame = -1; // where the first peel's rays start (RayStartCell), or -1
   bool WarnedNaN = false;
   int Peels = 0;
+
+  // Meshes of tetrahedra alone go to the tetrahedra mapper (DelegateTetrahedralMeshes).
+  vtkSmartPointer<vtkPreIntegratedTetrahedraMapper> Tetrahedra; // made on the first handed-over frame
+  bool Delegated = false;                                       // this frame is handed over
+  vtkDataSet* TypesCheckedOf = nullptr; // AllTetrahedra is of this input at this time
+  vtkMTimeType TypesCheckedAt = 0;
+  bool AllTetrahedra = false;
+
+  /// The input holds tetrahedra and nothing else, linear or of higher order (which both mappers
+  /// subdivide alike); asked again only when it changes.
+  bool OnlyTetrahedra(vtkDataSet* input)
+  {
+    if (input != this->TypesCheckedOf || input->GetMTime() != this->TypesCheckedAt)
+    {
+      this->TypesCheckedOf = input;
+      this->TypesCheckedAt = input->GetMTime();
+      auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+      const vtkIdType cells = input->GetNumberOfCells();
+      this->AllTetrahedra = grid && cells > 0;
+      for (vtkIdType c = 0; c < cells && this->AllTetrahedra; ++c)
+        this->AllTetrahedra = IsTetrahedron(grid->GetCellType(c));
+    }
+    return this->AllTetrahedra;
+  }
+
+  vtkPreIntegratedTetrahedraMapper* TetrahedraMapper()
+  {
+    if (!this->Tetrahedra)
+    {
+      this->Tetrahedra = vtkSmartPointer<vtkPreIntegratedTetrahedraMapper>::New();
+      this->Self->ForwardMessagesOf(this->Tetrahedra);
+    }
+    return this->Tetrahedra;
+  }
 
   // GPU state.
   GpuResources Gpu;
@@ -548,6 +593,8 @@ vtkIdType vtkHexahedralRayCastMapper::GetNumberOfTangledCells()
 }
 vtkIdType vtkHexahedralRayCastMapper::GetMeshMemoryInBytes()
 {
+  if (this->Impl->Delegated)
+    return this->Impl->Tetrahedra->GetMeshMemoryInBytes();
   return static_cast<vtkIdType>(this->Impl->Mesh.Bytes() + sizeof(float) * this->Impl->Gradients.Values.size());
 }
 int vtkHexahedralRayCastMapper::GetNumberOfGradientComputations()
@@ -566,15 +613,24 @@ int vtkHexahedralRayCastMapper::FillInputPortInformation(int, vtkInformation* in
   return 1;
 }
 
+bool vtkHexahedralRayCastMapper::GetLastFrameDelegated()
+{
+  return this->Impl->Delegated;
+}
+
 void vtkHexahedralRayCastMapper::ForgetMesh()
 {
   this->Impl->Mesh.Invalidate();
+  if (this->Impl->Tetrahedra)
+    ForgetMeshOf(this->Impl->Tetrahedra);
 }
 
 void vtkHexahedralRayCastMapper::ReleaseMapperGraphics()
 {
   this->Impl->Gpu.Release();
   this->Impl->Images.Release();
+  if (this->Impl->Tetrahedra)
+    ReleaseGraphicsOf(this->Impl->Tetrahedra);
 }
 
 void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
@@ -585,6 +641,7 @@ void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FixedSteps: " << this->FixedSteps << "\n";
   os << indent << "ExactSegmentEnds: " << this->ExactSegmentEnds << "\n";
   os << indent << "MaximumPeels: " << this->MaximumPeels << "\n";
+  os << indent << "DelegateTetrahedralMeshes: " << this->DelegateTetrahedralMeshes << "\n";
 }
 
 bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
@@ -636,17 +693,30 @@ bool vtkHexahedralRayCastMapper::UpdateTransferFunction(vtkVolumeProperty* prope
   return true;
 }
 
+bool vtkHexahedralRayCastMapper::HandsOver(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
+{
+  if (!this->DelegateTetrahedralMeshes || this->IntegrationMode == FIXED_STEPS ||
+    !this->Impl->OnlyTetrahedra(input))
+  {
+    return false;
+  }
+  // Isosurfaces only where the other mapper draws and lights them as this one would.
+  return this->GetNumberOfIsosurfaces() == 0 || (!scalar.OnCells && this->GradientMode == VERTEX_GRADIENTS);
+}
+
 bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
 {
   Internals& impl = *this->Impl;
   impl.Peels = 0;
   vtkDataSet* input = this->GetDataSetInput();
   uvvtk::RenderedScalar scalar;
-  if (!this->FindScalar(input, frame.Property, scalar) || !this->UpdateMesh(input, scalar) ||
-    !this->UpdateTransferFunction(frame.Property))
-  {
+  if (!this->FindScalar(input, frame.Property, scalar))
     return false;
-  }
+  impl.Delegated = this->HandsOver(input, scalar);
+  if (impl.Delegated)
+    return this->PrepareThrough(impl.TetrahedraMapper(), frame);
+  if (!this->UpdateMesh(input, scalar) || !this->UpdateTransferFunction(frame.Property))
+    return false;
   const uv::ScalarNormalisation& normalisation = impl.Mesh.Points.Normalisation;
   impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(normalisation.Offset, normalisation.Scale);
   // A cell scalar's isosurfaces are faces between cells (the walk draws them as it crosses); the
@@ -668,6 +738,18 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
 bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
 {
   Internals& impl = *this->Impl;
+  // Whichever of the two draws holds GPU memory, not both (the context is current here).
+  if (impl.Delegated)
+  {
+    impl.Gpu.Release();
+    impl.Images.Release();
+    return UploadThrough(impl.Tetrahedra, frame);
+  }
+  if (impl.Tetrahedra)
+  {
+    ReleaseGraphicsOf(impl.Tetrahedra);
+    impl.Tetrahedra = nullptr;
+  }
   vtkOpenGLRenderWindow* window = frame.Window;
   const uvvtk::HexahedralMesh& mesh = impl.Mesh;
   impl.Gpu.CellPoints.Sync(window, mesh.CellPoints, 4, mesh.CellsVersion);
@@ -691,6 +773,8 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
 bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target)
 {
   Internals& impl = *this->Impl;
+  if (impl.Delegated)
+    return DrawThrough(impl.Tetrahedra, frame, target);
   impl.Images.Resize(frame.Window, frame.Width, frame.Height);
   const PassFrame pass =
     PassFrame::Make(frame, impl.Mesh.Points.Center, impl.Mesh.Points.Bounds, target.GetNoAttributes());
@@ -720,6 +804,11 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
 
 void vtkHexahedralRayCastMapper::GetDrawnBounds(double bounds[6])
 {
+  if (this->Impl->Delegated)
+  {
+    DrawnBoundsOf(this->Impl->Tetrahedra, bounds);
+    return;
+  }
   const double* drawn = this->Impl->Mesh.Points.Bounds;
   if (drawn[0] <= drawn[1])
     std::copy(drawn, drawn + 6, bounds);

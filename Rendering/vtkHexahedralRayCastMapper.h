@@ -48,9 +48,10 @@
  * vtkRectilinearGrid as they are, with no conversion. Wedges, pyramids and tetrahedra walk as
  * hexahedra with repeated corners, whose trilinear map is their own isoparametric map (a
  * tetrahedron's field is linear along the ray; triangular faces are flat). Higher-order cells are
- * subdivided first (vtkHigherOrderSubdivision). Other cells (polyhedra, pentagonal and hexagonal
- * prisms) are an error: split such meshes with vtkHexahedraToTetrahedra and render them with
- * vtkPreIntegratedTetrahedraMapper. Cells touching a NaN scalar are left out (one
+ * subdivided first (vtkHigherOrderSubdivision). Other 3D cells (polyhedra, pentagonal and hexagonal
+ * prisms) are split into tetrahedra on the way (vtkHexahedraToTetrahedra, on the same points), which
+ * join the same walk. Meshes of tetrahedra alone are handed to vtkPreIntegratedTetrahedraMapper
+ * (DelegateTetrahedralMeshes). Cells touching a NaN scalar are left out (one
  * warning); folded (tangled) cells are rendered, with a warning per mesh build.
  */
 #ifndef vtkHexahedralRayCastMapper_h
@@ -111,6 +112,22 @@ public:
   ///@}
 
   ///@{
+  /// Hand meshes of tetrahedra alone to a vtkPreIntegratedTetrahedraMapper (default on): on them the
+  /// field is linear in each cell, that mapper draws it as exactly (its own route, projection or
+  /// ray casting), and its walk steps through a tetrahedron with far less work than this one, which
+  /// carries every cell shape's code. Not handed over: FIXED_STEPS (a comparison of this walk's
+  /// own), a cell scalar's isosurfaces (drawn here as faces between cells) and isosurfaces lit by
+  /// CELL_GRADIENTS (that mapper lights with vertex gradients). The mapper's input, scalar
+  /// selection, isosurfaces and base settings go with the mesh; IntegrationMode, FixedSteps,
+  /// ExactSegmentEnds and MaximumPeels do not apply (SegmentIntegration does). GetLastFrameDelegated
+  /// tells whether the last frame was handed over; the counters below then describe no frame.
+  vtkSetMacro(DelegateTetrahedralMeshes, bool);
+  vtkGetMacro(DelegateTetrahedralMeshes, bool);
+  vtkBooleanMacro(DelegateTetrahedralMeshes, bool);
+  bool GetLastFrameDelegated();
+  ///@}
+
+  ///@{
   /// What the last frame did: cells in the mesh, boundary faces, peels run, mesh builds, and the
   /// cells found tangled (folded over themselves; warned about once per mesh build).
   vtkIdType GetNumberOfCells();
@@ -154,6 +171,7 @@ protected:
   int FixedSteps = 8;
   bool ExactSegmentEnds = true;
   int MaximumPeels = 8;
+  bool DelegateTetrahedralMeshes = true;
 
 private:
   vtkHexahedralRayCastMapper(const vtkHexahedralRayCastMapper&) = delete;
@@ -161,6 +179,7 @@ private:
 
   bool UpdateMesh(vtkDataSet* input, const uvvtk::RenderedScalar& scalar);
   bool UpdateTransferFunction(vtkVolumeProperty* property);
+  bool HandsOver(vtkDataSet* input, const uvvtk::RenderedScalar& scalar);
 
   class Internals;
   std::unique_ptr<Internals> Impl;

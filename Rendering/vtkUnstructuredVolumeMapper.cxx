@@ -7,12 +7,14 @@
 #include "vtkUnstructuredVolumeScalar.h"
 #include "vtkUnstructuredVolumeVertexGradients.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkImageData.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
@@ -105,6 +107,59 @@ void vtkUnstructuredVolumeMapper::AddIsosurface(double value, double red, double
 {
   this->Base->Isosurfaces.Add(value, red, green, blue, opacity);
   this->Modified();
+}
+
+bool vtkUnstructuredVolumeMapper::PrepareThrough(
+  vtkUnstructuredVolumeMapper* delegate, const vtkUnstructuredVolumeFrame& frame)
+{
+  delegate->SetInputDataObject(this->GetInputDataObject(0, 0));
+  delegate->SetScalarMode(this->ScalarMode);
+  if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID)
+    delegate->SelectScalarArray(this->ArrayId);
+  else
+    delegate->SelectScalarArray(this->ArrayName);
+  delegate->SetBlendMode(this->BlendMode);
+  delegate->Base->Isosurfaces = this->Base->Isosurfaces;
+  delegate->ProjectionRoute = this->ProjectionRoute;
+  delegate->SkipInvisibleCells = this->SkipInvisibleCells;
+  delegate->OpacityThreshold = this->OpacityThreshold;
+  delegate->TransferFunctionTolerance = this->TransferFunctionTolerance;
+  delegate->SegmentIntegration = this->SegmentIntegration;
+  delegate->VisibilityOrder = this->VisibilityOrder;
+  delegate->GradientMode = this->GradientMode;
+  delegate->SetGradientArrayName(this->GradientArrayName);
+  const bool prepared = delegate->Prepare(frame);
+  this->MeshUpdates = { delegate->MeshUpdates.Builds, delegate->MeshUpdates.PointRefreshes,
+    delegate->MeshUpdates.ValueRefreshes };
+  this->NumberOfTransferFunctionNodes = delegate->NumberOfTransferFunctionNodes;
+  this->NumberOfCyclesBroken = delegate->NumberOfCyclesBroken;
+  this->NumberOfGapConstraints = delegate->NumberOfGapConstraints;
+  return prepared;
+}
+
+namespace
+{
+/// A delegate's error or warning, given to its delegator's observers, or shown as VTK shows them
+/// when the delegator has none.
+void ForwardMessage(vtkObject*, unsigned long event, void* delegator, void* message)
+{
+  auto* to = static_cast<vtkObject*>(delegator);
+  if (to->HasObserver(event))
+    to->InvokeEvent(event, message);
+  else if (event == vtkCommand::ErrorEvent)
+    vtkOutputWindowDisplayErrorText(static_cast<const char*>(message));
+  else
+    vtkOutputWindowDisplayWarningText(static_cast<const char*>(message));
+}
+}
+
+void vtkUnstructuredVolumeMapper::ForwardMessagesOf(vtkUnstructuredVolumeMapper* delegate)
+{
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetCallback(ForwardMessage);
+  forward->SetClientData(this);
+  delegate->AddObserver(vtkCommand::ErrorEvent, forward);
+  delegate->AddObserver(vtkCommand::WarningEvent, forward);
 }
 
 void vtkUnstructuredVolumeMapper::RemoveAllIsosurfaces()

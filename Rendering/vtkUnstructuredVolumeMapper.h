@@ -94,7 +94,7 @@ public:
   /// pulled from buffer textures under a fixed index pattern; GEOMETRY_SHADER, one point per
   /// tetrahedron and a geometry shader emitting its faces (the papers' route; llvmpipe runs geometry
   /// shaders slowly). Same image; the benchmark compares their speed. The hexahedral ray caster
-  /// rasterises boundary faces and ignores it.
+  /// rasterises boundary faces and ignores it, but for the meshes of tetrahedra it hands over.
   vtkSetClampMacro(ProjectionRoute, int, VERTEX_PULLING, GEOMETRY_SHADER);
   vtkGetMacro(ProjectionRoute, int);
   void SetProjectionRouteToVertexPulling() { this->SetProjectionRoute(VERTEX_PULLING); }
@@ -141,7 +141,7 @@ public:
   /// AUTOMATIC (default): the table where its largest error against the exact segments, measured
   /// when it is built, is within TransferFunctionTolerance; EXACT otherwise. Isosurfaces and
   /// shading need the cuts and always integrate exactly. The hexahedral ray caster, whose scalar
-  /// is not linear along a ray, ignores it.
+  /// is not linear along a ray, ignores it, but for the meshes of tetrahedra it hands over.
   vtkSetClampMacro(SegmentIntegration, int, AUTOMATIC, EXACT);
   vtkGetMacro(SegmentIntegration, int);
   void SetSegmentIntegrationToAutomatic() { this->SetSegmentIntegration(AUTOMATIC); }
@@ -272,6 +272,31 @@ protected:
   /// (`facesBetweenCells`: the faces between cells on either side of the value). Returns true when
   /// the scalar is on cells.
   bool WarnCellScalarLimits(const uvvtk::RenderedScalar& scalar, bool shade, bool facesBetweenCells);
+
+  ///@{
+  /// Delegation: a mapper that hands some inputs to a mapper of another kind, which draws them
+  /// better (the hexahedral caster hands all-tetrahedra meshes to the tetrahedra mapper), runs that
+  /// one's steps through these. PrepareThrough first gives it this mapper's input, scalar selection,
+  /// isosurfaces and shared settings, and afterwards takes back its mesh-update counters; the
+  /// delegate's errors and warnings reach this mapper's observers (ForwardMessagesOf, once).
+  bool PrepareThrough(vtkUnstructuredVolumeMapper* delegate, const vtkUnstructuredVolumeFrame& frame);
+  void ForwardMessagesOf(vtkUnstructuredVolumeMapper* delegate);
+  static bool UploadThrough(vtkUnstructuredVolumeMapper* delegate, const vtkUnstructuredVolumeFrame& frame)
+  {
+    return delegate->Upload(frame);
+  }
+  static bool DrawThrough(vtkUnstructuredVolumeMapper* delegate, const vtkUnstructuredVolumeFrame& frame,
+    vtkUnstructuredVolumeFloatTarget& target)
+  {
+    return delegate->Draw(frame, target);
+  }
+  static void ReleaseGraphicsOf(vtkUnstructuredVolumeMapper* delegate) { delegate->ReleaseMapperGraphics(); }
+  static void ForgetMeshOf(vtkUnstructuredVolumeMapper* delegate) { delegate->ForgetMesh(); }
+  static void DrawnBoundsOf(vtkUnstructuredVolumeMapper* delegate, double bounds[6])
+  {
+    delegate->GetDrawnBounds(bounds);
+  }
+  ///@}
 
   /// In the GL-error debug mode, reports the GL errors raised since the last check, naming `pass`;
   /// false when there was one. Does nothing (true) when the mode is off.

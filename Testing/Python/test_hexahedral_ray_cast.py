@@ -11,7 +11,7 @@ import shared_data  # noqa: E402
 import stress  # noqa: E402  (its generated degenerate meshes and placements)
 import corner_point  # noqa: E402
 import uvrender  # noqa: E402
-from fixtures import (BaselineTestCase, HexScene, SceneTestCase, analytic, analytic_hexahedra, as_polyhedra,  # noqa: E402
+from fixtures import (BaselineTestCase, HexScene, Scene, SceneTestCase, analytic, analytic_hexahedra, as_polyhedra,  # noqa: E402
                       camera_for, check_geometry_shown_later, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
                       largest_difference,
                       load_shared, plane_scene_setup, property_from_nodes, reference, rmse, thin_shell_property,
@@ -161,11 +161,11 @@ class AccuracyTests(SceneTestCase):
 class MixedCellTests(SceneTestCase):
     """Tetrahedra, pyramids and wedges walk with the hexahedra, as hexahedra with repeated corners."""
 
-    def check(self, mesh, camera, bound, size=96):
+    def check(self, mesh, camera, bound, size=96, **settings):
         scalars = mesh.GetPointData().GetScalars() or mesh.GetCellData().GetScalars()
         prop = uvrender.volume_property(scalars.GetRange())
         prop.SetScalarOpacityUnitDistance(0.3)
-        scene = HexScene(mesh, prop, camera, size)
+        scene = HexScene(mesh, prop, camera, size, **settings)
         image = scene.render()
         self.assertEqual(scene.events.errors, 0)
         self.assertEqual(scene.mapper.GetNumberOfCells(), mesh.GetNumberOfCells())
@@ -195,11 +195,45 @@ class MixedCellTests(SceneTestCase):
         mesh.GetCellData().SetScalars(values)
         self.check(mesh, camera_for(mesh), 2e-3)
 
-    def test_tetrahedra_alone(self):
+    def jittered_tetrahedra(self):
         split = vtkHexahedraToTetrahedra()
         split.SetInputData(analytic_hexahedra(4, distortion=vtkAnalyticMeshSource.JITTER))
         split.Update()
-        self.check(split.GetOutput(), camera_for(split.GetOutput()), 2e-3)
+        return split.GetOutput()
+
+    def test_tetrahedra_alone(self):
+        """The walk itself on tetrahedra (they also come in mixed meshes)."""
+        mesh = self.jittered_tetrahedra()
+        self.check(mesh, camera_for(mesh), 2e-3, DelegateTetrahedralMeshes=False)
+
+    def test_tetrahedra_alone_are_handed_over(self):
+        """A mesh of tetrahedra alone is drawn by the tetrahedra mapper, with this mapper's settings:
+        the same image as that mapper's own, bit for bit; its warnings reach this mapper's observers."""
+        mesh = self.jittered_tetrahedra()
+        scalars = mesh.GetPointData().GetScalars()
+        prop = uvrender.volume_property(scalars.GetRange())
+        prop.SetScalarOpacityUnitDistance(0.3)
+        camera = camera_for(mesh)
+        scene = HexScene(mesh, prop, camera, 96)
+        scene.mapper.AddIsosurface(sum(scalars.GetRange()) / 2, 1.0, 0.8, 0.2, 0.5)
+        scene.mapper.SetGradientModeToVertexGradients()
+        image = copy_image(scene.render())
+        self.assertTrue(scene.mapper.GetLastFrameDelegated())
+        self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+        own = Scene(mesh, prop, camera, 96, OpacityThreshold=0.99)
+        own.mapper.AddIsosurface(sum(scalars.GetRange()) / 2, 1.0, 0.8, 0.2, 0.5)
+        self.assertEqual(rmse(image, own.render())[1], 0.0)
+        # Lit by the cells' own gradients, the surfaces stay with this walk.
+        scene.mapper.SetGradientModeToCellGradients()
+        scene.render()
+        self.assertFalse(scene.mapper.GetLastFrameDelegated())
+        # A NaN leaves cells out with a warning, which reaches this mapper.
+        scene.mapper.RemoveAllIsosurfaces()
+        scalars.SetValue(0, float("nan"))
+        scalars.Modified()
+        scene.render()
+        self.assertTrue(scene.mapper.GetLastFrameDelegated())
+        self.assertEqual(scene.events.warnings, 1)
 
     def test_camera_inside(self):
         self.check(hex_dominant(5), inside_camera(), 5e-3)
@@ -587,7 +621,8 @@ class SkippingTests(SceneTestCase):
             mesh.GetPointData().SetActiveScalars(array)
             low, high = mesh.GetPointData().GetArray(array).GetRange()
             with self.subTest(name):
-                self.compare(mesh, sparse_property(low, high, 0.03 * mesh.GetLength()), camera_for(mesh))
+                self.compare(mesh, sparse_property(low, high, 0.03 * mesh.GetLength()), camera_for(mesh),
+                             DelegateTetrahedralMeshes=False)  # the walk's own skipping
 
     def test_rays_grazing_invisible_voxels_between_visible_ones(self):
         # neghip's voxels under a ramp: its visible region folds along edges of invisible voxels, where
