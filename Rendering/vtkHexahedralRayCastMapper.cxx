@@ -150,13 +150,17 @@ public:
 
   const std::vector<std::int32_t>& Boundary() const
   {
-    return this->Skip ? this->Region.Boundary : this->Mesh->Faces.Boundary;
+    return this->Skip || !this->Mesh ? this->Region.Boundary : this->Mesh->Faces.Boundary;
   }
   std::size_t BoundaryCount() const { return this->Boundary().size() / 4; }
   /// With skipping, the region's cells, one bit each (32 to a word), for the GPU copy.
   const std::vector<std::uint32_t>& VisibleCellBits() const { return this->VisibleBits; }
   bool Skipping() const { return this->Skip; }
-  std::size_t VisibleCells() const { return this->Skip ? this->Region.VisibleCells : this->Mesh->CellCount(); }
+  /// (Before any frame, or after frames handed to the tetrahedra mapper only, none.)
+  std::size_t VisibleCells() const
+  {
+    return this->Skip || !this->Mesh ? this->Region.VisibleCells : this->Mesh->CellCount();
+  }
 
 private:
   const uvvtk::HexahedralMesh* Mesh = nullptr;

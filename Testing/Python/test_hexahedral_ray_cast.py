@@ -220,6 +220,9 @@ class MixedCellTests(SceneTestCase):
         image = copy_image(scene.render())
         self.assertTrue(scene.mapper.GetLastFrameDelegated())
         self.assertEqual(scene.events.errors + scene.events.warnings, 0)
+        for counter in ("Cells", "VisibleCells", "EntryFaces", "BoundaryFaces", "Peels", "TangledCells"):
+            self.assertEqual(getattr(scene.mapper, "GetNumberOf" + counter)(), 0)  # this walk drew nothing
+        self.assertGreater(scene.mapper.GetMeshMemoryInBytes(), 0)  # the other mapper's mesh
         own = Scene(mesh, prop, camera, 96, OpacityThreshold=0.99)
         own.mapper.AddIsosurface(sum(scalars.GetRange()) / 2, 1.0, 0.8, 0.2, 0.5)
         self.assertEqual(rmse(image, own.render())[1], 0.0)
