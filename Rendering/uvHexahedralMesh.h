@@ -278,6 +278,104 @@ std::size_t CountTangledHexahedra(
   return static_cast<std::size_t>(std::count(tangled.begin(), tangled.end(), 1));
 }
 
+/// Whether the cell with corners p (collapsed ones repeated, as `ids` tell) is convex with planar
+/// faces, every corner within `1e-6` of its size of every face's plane through the face's centroid
+/// (its normal the cross product of its diagonals, which a triangle stored as a quad with a repeated
+/// corner also has) and its centre inside every face by more than 1e-3 of its size (a volume, not
+/// a sliver). A ray leaves such a cell through the nearest face plane it heads out of.
+inline bool IsConvexWithPlanarFaces(const glm::dvec3 p[8], const std::uint32_t ids[8])
+{
+  glm::dvec3 low = p[0], high = p[0], centre(0.0);
+  for (int k = 0; k < 8; ++k)
+  {
+    low = glm::min(low, p[k]);
+    high = glm::max(high, p[k]);
+    centre += 0.125 * p[k];
+  }
+  const double size = std::max({ high.x - low.x, high.y - low.y, high.z - low.z });
+  if (!(size > 0.0))
+    return false;
+  for (int f = 0; f < 6; ++f)
+  {
+    const int* corner = HexahedronFaces[f].Vertices.data();
+    std::uint32_t faceIds[4] = { ids[corner[0]], ids[corner[1]], ids[corner[2]], ids[corner[3]] };
+    std::array<std::uint32_t, 4> key;
+    if (FaceKey(faceIds, key) < 3)
+      continue; // collapsed: the other faces bound the cell
+    const glm::dvec3 normal = glm::cross(p[corner[2]] - p[corner[0]], p[corner[3]] - p[corner[1]]);
+    const double length = glm::length(normal);
+    if (!(length > 0.0))
+      return false;
+    const glm::dvec3 centroid = 0.25 * (p[corner[0]] + p[corner[1]] + p[corner[2]] + p[corner[3]]);
+    glm::dvec3 outward = normal / length;
+    const double centreDepth = glm::dot(outward, centroid - centre);
+    if (!(std::abs(centreDepth) > 1e-3 * size))
+      return false;
+    outward = centreDepth < 0.0 ? -outward : outward;
+    for (int k = 0; k < 4; ++k)
+    {
+      if (std::abs(glm::dot(outward, p[corner[k]] - centroid)) > 1e-6 * size)
+        return false;
+    }
+    for (int k = 0; k < 8; ++k)
+    {
+      if (glm::dot(outward, p[k] - centroid) > 1e-6 * size)
+        return false;
+    }
+  }
+  return true;
+}
+
+/// Whether the cell with corners p is a parallelepiped: eight distinct corners, its trilinear map's
+/// bilinear and trilinear terms within 1e-6 of its edges' size (its affine frame is then its map).
+inline bool IsParallelepiped(const glm::dvec3 p[8], const std::uint32_t ids[8])
+{
+  std::array<std::uint32_t, 8> sorted;
+  std::copy(ids, ids + 8, sorted.begin());
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    return false;
+  const double size = glm::length(p[1] - p[0]) + glm::length(p[3] - p[0]) + glm::length(p[4] - p[0]);
+  const glm::dvec3 twists[4] = { p[0] - p[1] + p[2] - p[3], p[0] - p[1] - p[4] + p[5], p[0] - p[3] - p[4] + p[7],
+    -p[0] + p[1] - p[2] + p[3] + p[4] - p[5] + p[6] - p[7] };
+  for (const glm::dvec3& twist : twists)
+  {
+    if (!(glm::length(twist) <= 1e-6 * size))
+      return false;
+  }
+  return true;
+}
+
+/// What every cell of a mesh is, from the most general to the most particular: the walk compiles
+/// the code of this kind alone (a CPU driver runs every branch some pixel of a SIMD group takes).
+enum class CellGeometry
+{
+  Any = 0,
+  ConvexPlanar = 1,   // IsConvexWithPlanarFaces: left through face planes
+  Parallelepipeds = 2 // also IsParallelepiped: no collapsed corner, the affine frame exact
+};
+
+/// The CellGeometry every cell of the mesh has; `parallelFor` as above.
+template <typename ParallelFor>
+CellGeometry MeshCellGeometry(
+  const std::vector<std::uint32_t>& cellPoints, const std::vector<float>& pointData, ParallelFor&& parallelFor)
+{
+  const std::size_t cellCount = cellPoints.size() / 8;
+  std::vector<unsigned char> kind(cellCount, 0);
+  parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
+    glm::dvec3 p[8];
+    for (std::size_t c = begin; c < end; ++c)
+    {
+      HexahedronCornerPoints(cellPoints, pointData, c, p);
+      const std::uint32_t* ids = &cellPoints[8 * c];
+      kind[c] = !IsConvexWithPlanarFaces(p, ids) ? 0 : (IsParallelepiped(p, ids) ? 2 : 1);
+    }
+  });
+  if (cellCount == 0)
+    return CellGeometry::Any;
+  return static_cast<CellGeometry>(*std::min_element(kind.begin(), kind.end()));
+}
+
 /// The first cell holding `x` (by its bounding box, then the isoparametric inverse), or -1.
 inline int HexahedronHolding(
   const std::vector<std::uint32_t>& cellPoints, const std::vector<float>& pointData, const glm::dvec3& x)

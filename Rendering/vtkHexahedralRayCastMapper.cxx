@@ -349,6 +349,7 @@ struct TraversalSettings
   bool CellDensities = false;  // some cells stand for coincident copies (GpuResources::CellDensities)
   bool SkipInvisibleCells = false; // rays enter and leave at the visible region (GpuResources::VisibleCells)
   bool VertexGradients = false;    // isosurfaces lit by GpuResources::PointGradients
+  int CellGeometry = 0;            // what every cell is (uv::MeshCellGeometry)
   bool LastPeel = false;           // no peel is left to pick a ray up
 };
 
@@ -368,7 +369,8 @@ public:
     const bool cellScalars = settings.CellScalars, skip = settings.SkipInvisibleCells;
     const bool vertexGradients = settings.VertexGradients, densities = settings.CellDensities;
     vtkShaderProgram* program = this->Ready(pass.Frame->Window,
-      { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip, vertexGradients, densities });
+      { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip, vertexGradients, densities,
+        settings.IntegrationMode, settings.CellGeometry });
     if (program)
     {
       images.Entry->Activate();
@@ -441,7 +443,6 @@ private:
     program->SetUniformi("parallelProjection", frame.Parallel ? 1 : 0);
     uvgl::SetPhongUniforms(program, frame.Renderer, frame.Property, frame.WorldToEye);
     pass.SetRayUniforms(program);
-    program->SetUniformi("integrationMode", settings.IntegrationMode);
     program->SetUniformi("fixedSteps", settings.FixedSteps);
     program->SetUniformi("exactEnds", settings.ExactEnds ? 1 : 0);
     program->SetUniformf("opacityThreshold", settings.OpacityThreshold);
@@ -793,6 +794,7 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.CellScalars = !impl.Mesh.CellScalars.empty();
   settings.CellDensities = !impl.Mesh.CellDensities.empty();
   settings.VertexGradients = impl.NeedGradients;
+  settings.CellGeometry = static_cast<int>(impl.Mesh.Geometry);
 
   impl.Images.Framebuffer->SaveCurrentBindingsAndBuffers();
   impl.Images.Framebuffer->Bind();

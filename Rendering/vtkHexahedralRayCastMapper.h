@@ -34,7 +34,11 @@
  * the front of that region; past its back, and over an invisible run inside the mesh, they walk a few
  * invisible cells and leave the rest to the next peel's entry faces. Rays that meet the region nowhere
  * cost only the entry pass. The image is the full walk's. Without
- * skipping a transparent cell costs one range test, no integration.
+ * skipping a transparent cell costs one range test, no integration. The traversal program is
+ * compiled for the integration mode and for what every cell of the mesh is (uv::MeshCellGeometry):
+ * where all are convex with planar faces a ray leaves each through its nearest face plane, and
+ * where all are parallelepipeds the curved and collapsed cells' code is left out too (a CPU driver
+ * runs every branch that any pixel of a SIMD group takes).
  *
  * The traversal reads transfer-function nodes from uniforms: a function with more than
  * uvgl::MaximumUniformNodes nodes after TransferFunctionTolerance is approximated by fewer (with a

@@ -35,12 +35,15 @@ struct vtkHexahedralRayCastPrograms
     bool SkipInvisibleCells = false; // rays leave the visible region to the next peel
     bool VertexGradients = false; // isosurfaces lit by interpolated vertex gradients (point scalars only)
     bool CellDensities = false;   // some cells stand for coincident copies: their media add up
+    int IntegrationMode = 0;      // vtkHexahedralRayCastMapper's: only its code is compiled
+    int CellGeometry = 0;         // what every cell is (uv::MeshCellGeometry): only its code is compiled
 
     bool operator==(const TraversalOptions& other) const
     {
       return this->NodeTexture == other.NodeTexture && this->CellScalars == other.CellScalars &&
         this->SkipInvisibleCells == other.SkipInvisibleCells && this->VertexGradients == other.VertexGradients &&
-        this->CellDensities == other.CellDensities;
+        this->CellDensities == other.CellDensities && this->IntegrationMode == other.IntegrationMode &&
+        this->CellGeometry == other.CellGeometry;
     }
   };
 
@@ -69,6 +72,11 @@ struct vtkHexahedralRayCastPrograms
       defines += "#define UV_VERTEX_GRADIENTS\n";
     if (options.CellDensities)
       defines += "#define UV_CELL_DENSITIES\n";
+    defines += "#define UV_INTEGRATION_MODE " + std::to_string(options.IntegrationMode) + "\n";
+    if (options.CellGeometry >= 1)
+      defines += "#define UV_ALL_CELLS_CONVEX\n"; // no bilinear face to solve
+    if (options.CellGeometry >= 2)
+      defines += "#define UV_ALL_PARALLELEPIPEDS\n"; // no collapsed or curved cell either
     sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
       { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
         { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib },
@@ -76,6 +84,9 @@ struct vtkHexahedralRayCastPrograms
     return sources;
   }
 
+  /// The variants a test compiles: every combination of the flags, each with an integration mode and
+  /// a cell geometry taken in turn, so that every pair of those two appears (all of their products
+  /// with the flags would be nine times as many programs to link, for no define they share).
   static std::vector<TraversalOptions> AllTraversalOptions()
   {
     std::vector<TraversalOptions> all;
@@ -85,7 +96,11 @@ struct vtkHexahedralRayCastPrograms
           for (bool vertexGradients : { false, true })
             for (bool densities : { false, true })
               if (!(cellScalars && vertexGradients)) // a cell scalar's surfaces are lit by their faces
-                all.push_back({ nodeTexture, cellScalars, skip, vertexGradients, densities });
+              {
+                const int turn = static_cast<int>(all.size());
+                all.push_back(
+                  { nodeTexture, cellScalars, skip, vertexGradients, densities, turn % 3, (turn / 3) % 3 });
+              }
     return all;
   }
 };

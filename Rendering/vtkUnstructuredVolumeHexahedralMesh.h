@@ -49,6 +49,7 @@ public:
   std::vector<std::uint32_t> CellPoints; // 8 per cell, VTK hexahedron order
   std::vector<float> CellScalars;        // per cell, normalised, for a cell scalar (else empty)
   std::vector<float> CellDensities;      // per cell, the copies it stands for (else empty: none repeats)
+  uv::CellGeometry Geometry = uv::CellGeometry::Any; // what every cell is: the walk compiles only that
   RecentredPoints Points;
   uv::HexahedralFaces Faces;
   // What CellPoints' ids index (the input, or its subdivision) and the scalar rendered on it, as of
@@ -137,6 +138,7 @@ private:
     {
       this->TangledCells =
         static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
+      this->Geometry = uv::MeshCellGeometry(this->CellPoints, this->Points.Values, uvvtk::ParallelFor);
       // Which faces lie against which depends on where the points are; the neighbours' GPU copy
       // follows the cells' version, so a mesh with such faces is built again.
       if (this->NonConformingFaces > 0 ||
@@ -180,6 +182,7 @@ private:
     this->MergeCoincidentCells(samePoint);
     this->TangledCells =
       static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
+    this->Geometry = uv::MeshCellGeometry(this->CellPoints, this->Points.Values, uvvtk::ParallelFor);
     this->Faces = uv::MakeHexahedralFaces(
       this->CellPoints, samePoint, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
       [&progress](double fraction) { progress(0.8 * fraction); });

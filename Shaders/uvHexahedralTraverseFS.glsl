@@ -36,7 +36,9 @@ uniform mat4 clipToModel;       // for the opaque geometry's depth
 uniform vec3 nearPlane[3];      // the rays (EyeRay)
 uniform vec3 rayDirection[3];
 uniform vec2 viewportSize;
-uniform int integrationMode;    // 0 accurate, 1 fast, 2 fixed steps
+// The program's integration mode (0 accurate, 1 fast, 2 fixed steps): a constant, so that the modes not
+// taken cost nothing (a CPU driver runs every branch some pixel of a SIMD group takes, and more).
+const int integrationMode = UV_INTEGRATION_MODE;
 uniform int fixedSteps;
 uniform int exactEnds;           // 1: segment ends by the isoparametric inverse (curved cells)
 uniform float opacityThreshold; // early ray termination
@@ -161,12 +163,21 @@ void LoadCell(int cell)
   mapF = points[0] - points[1] - points[4] + points[5];
   mapG = points[0] - points[3] - points[4] + points[7];
   mapH = -points[0] + points[1] - points[2] + points[3] + points[4] - points[5] + points[6] - points[7];
+#ifdef UV_ALL_PARALLELEPIPEDS
+  cellShape = HEXAHEDRON;
+  tetrahedronGradient = vec3(0.0);
+#else
   bool apex = cellIds[4] == cellIds[5] && cellIds[5] == cellIds[6] && cellIds[6] == cellIds[7];
   bool collapsedEdge = cellIds[2] == cellIds[3];
   cellShape = apex ? (collapsedEdge ? TETRAHEDRON : PYRAMID)
                    : (collapsedEdge && cellIds[6] == cellIds[7] ? WEDGE : HEXAHEDRON);
   tetrahedronGradient = cellShape == TETRAHEDRON ? LinearFieldGradient() : vec3(0.0);
+#endif
+#ifdef UV_ALL_CELLS_CONVEX
+  cellFlat = false; // a convex cell has a volume
+#else
   cellFlat = IsFlat();
+#endif
 }
 
 /// Face f of the loaded cell as CanonicalFace gives it; returns its distinct corners.
@@ -753,6 +764,9 @@ void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd, float
   vec3 xi0 = FrameCoordinates(frame, entryPoint);
   vec3 xi1 = FrameCoordinates(frame, exitPoint);
   vec4 field;
+#ifdef UV_ALL_PARALLELEPIPEDS
+  field = TrilinearAlongSegment(scalars, xi0, xi1); // the frame is the cell's map
+#else
   if (cellShape == TETRAHEDRON)
   {
     float f0 = scalars[0] + dot(tetrahedronGradient, entryPoint - points[0]);
@@ -763,6 +777,7 @@ void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd, float
     field = FieldThroughExactEnds(entryPoint, exitPoint, xi0, xi1); // a collapsed cell is never its frame
   else
     field = TrilinearAlongSegment(scalars, xi0, xi1);
+#endif
   segmentXi0 = xi0;
   segmentXi1 = xi1;
   segmentStartPoint = entryPoint;
@@ -819,12 +834,42 @@ void LeavingHits(int f, vec3 origin, vec3 direction, vec3 cellCentre, out float 
     h1 = -3.0e38;
 }
 
-/// The face of the loaded cell (other than `enterFace`) where the ray leaves it nearest beyond t, with
-/// that parameter in exitT; -1 when no face claims the ray. Where none does beyond rounding of t, the
-/// ray leaves where it entered (a flat cell, whose faces coincide): exitT is then t, no length.
 vec3 exitNormal; // the face's normal where FindExit found the ray leaving
 
-int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
+/// FindExit for a convex cell with planar faces (every cell of the mesh is, UV_ALL_CELLS_CONVEX): where the ray crosses the nearest face plane it heads
+/// out of (no patch to solve, no inside test: in a convex cell that crossing is on its face). Each
+/// plane comes from the face's canonical corners, the same from either cell sharing the face.
+int FindExitThroughPlanes(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
+{
+  exitT = noExit;
+  int exitFace = -1;
+  vec3 cellCentre = CellCentre(points);
+  for (int f = 0; f < 6; ++f)
+  {
+    vec3 a, b, c, d;
+    if (f == enterFace || LoadedCellFace(f, a, b, c, d) < 3)
+      continue;
+    vec3 normal = SafeNormalize(cross(c - a, d - b));
+    vec3 faceMiddle = 0.25 * (a + b + c + d);
+    normal = dot(normal, faceMiddle - cellCentre) < 0.0 ? -normal : normal;
+    float along = dot(normal, direction);
+    if (!(along > 0.0))
+      continue; // the ray enters through this plane, or runs along it
+    float hit = dot(normal, faceMiddle - origin) / along;
+    if (hit < exitT)
+    {
+      exitT = hit;
+      exitFace = f;
+      exitNormal = normal;
+    }
+  }
+  if (exitFace >= 0)
+    exitT = max(exitT, t);
+  return exitFace;
+}
+
+/// FindExit for any other cell: the exact bilinear faces.
+int FindExitThroughPatches(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
 {
   exitT = noExit;
   int exitFace = -1;
@@ -858,6 +903,19 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
       exitT = max(exitT, t);
   }
   return exitFace;
+}
+
+/// The face of the loaded cell (other than `enterFace`) where the ray leaves it nearest beyond t, with
+/// that parameter in exitT; -1 when no face claims the ray. Where none does beyond rounding of t, the
+/// ray leaves where it entered (a flat cell, whose faces coincide): exitT is then t, no length.
+int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
+{
+  // One of the two per program: a CPU driver runs both sides of a branch that differs between pixels.
+#ifdef UV_ALL_CELLS_CONVEX
+  return FindExitThroughPlanes(origin, direction, t, enterFace, exitT);
+#else
+  return FindExitThroughPatches(origin, direction, t, enterFace, exitT);
+#endif
 }
 
 /// The neighbour (as `across` gives it) across a face of the loaded cell, other than `enterFace`,

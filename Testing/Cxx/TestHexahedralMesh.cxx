@@ -276,3 +276,76 @@ TEST(HexahedronMesh, FacesAcrossAFaultLieAgainstEachOther)
   faces = uv::MakeHexahedralFaces(cells, {}, Serial, [](auto begin, auto end) { std::sort(begin, end); }, [](double) {});
   EXPECT_EQ(uv::LinkNonConformingFaces(cells, points, faces), 0u);
 }
+
+TEST(HexahedronMesh, ConvexCellsWithPlanarFacesAreFlagged)
+{
+  // A box, a tetrahedron and a wedge (collapsed hexahedra), and a trapezoidal prism (planar faces,
+  // a bilinear map) are walked through their planes; a box with one corner lifted (a warped face),
+  // a non-convex cell (a corner pushed inwards through the opposite faces' planes), a left-handed
+  // box and a flat one are told apart.
+  const glm::dvec3 box[8] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 },
+    { 1, 1, 1 }, { 0, 1, 1 } };
+  const std::uint32_t ids[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  EXPECT_TRUE(uv::IsConvexWithPlanarFaces(box, ids));
+
+  glm::dvec3 p[8];
+  std::uint32_t collapsed[8];
+  for (const auto& order : { uv::TetrahedronAsHexahedron, uv::WedgeAsHexahedron })
+  {
+    const glm::dvec3 corners[6] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } };
+    for (int k = 0; k < 8; ++k)
+    {
+      p[k] = corners[order[k]];
+      collapsed[k] = static_cast<std::uint32_t>(order[k]);
+    }
+    EXPECT_TRUE(uv::IsConvexWithPlanarFaces(p, collapsed));
+  }
+
+  std::copy(box, box + 8, p);
+  p[6] = { 1.2, 1.2, 1 }; // the top face stays planar, its sides lean out in plane
+  p[7] = { 0, 1.2, 1 };
+  p[5] = { 1.2, 0, 1 };
+  EXPECT_TRUE(uv::IsConvexWithPlanarFaces(p, ids));
+
+  std::copy(box, box + 8, p);
+  p[6].z = 1.01; // three faces warp
+  EXPECT_FALSE(uv::IsConvexWithPlanarFaces(p, ids));
+
+  std::copy(box, box + 8, p);
+  p[6] = { 0.4, 0.4, 0.4 }; // three faces fold inwards
+  EXPECT_FALSE(uv::IsConvexWithPlanarFaces(p, ids));
+
+  for (int k = 0; k < 8; ++k)
+    p[k] = box[k] * glm::dvec3(1, 1, -1); // left-handed: still convex, every plane turned outwards
+  EXPECT_TRUE(uv::IsConvexWithPlanarFaces(p, ids));
+
+  for (int k = 0; k < 8; ++k)
+    p[k] = box[k] * glm::dvec3(1, 1, 0); // no volume
+  EXPECT_FALSE(uv::IsConvexWithPlanarFaces(p, ids));
+}
+
+TEST(HexahedronMesh, TheMeshsCellGeometryIsItsMostGeneralCells)
+{
+  // A row of cubes is parallelepipeds, and still is sheared; lift one corner, which warps the faces
+  // of the two cells sharing it, and the mesh is general. A frustum is convex with planar faces
+  // but no parallelepiped; nor is a cell with a collapsed corner.
+  Block block(3);
+  EXPECT_EQ(uv::MeshCellGeometry(block.CellPoints, block.PointData, Serial), uv::CellGeometry::Parallelepipeds);
+  for (std::size_t p = 0; p < block.PointData.size(); p += 4)
+    block.PointData[p] += 0.3f * block.PointData[p + 2]; // sheared along x by z
+  EXPECT_EQ(uv::MeshCellGeometry(block.CellPoints, block.PointData, Serial), uv::CellGeometry::Parallelepipeds);
+  block.PointData[4 * block.CellPoints[6] + 2] += 0.2f; // the first cell's far corner lifted
+  EXPECT_EQ(uv::MeshCellGeometry(block.CellPoints, block.PointData, Serial), uv::CellGeometry::Any);
+
+  const glm::dvec3 frustum[8] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1.2, 0, 1 },
+    { 1.2, 1.2, 1 }, { 0, 1.2, 1 } };
+  const std::uint32_t ids[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  EXPECT_TRUE(uv::IsConvexWithPlanarFaces(frustum, ids));
+  EXPECT_FALSE(uv::IsParallelepiped(frustum, ids));
+  const std::uint32_t wedge[8] = { 0, 1, 2, 2, 4, 5, 6, 6 };
+  glm::dvec3 collapsed[8];
+  std::copy(frustum, frustum + 8, collapsed);
+  collapsed[3] = collapsed[2];
+  collapsed[7] = collapsed[6];
+  EXPECT_FALSE(uv::IsParallelepiped(collapsed, wedge));
+}
