@@ -1074,87 +1074,99 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
   int invisibleRun = 0; // cells outside the visible region in a row
 #endif
   int faultFrom = -1; // the cell the ray left through a fault face, its far side's cell in `cell`
-  for (int step = 0; step < maximumCells; ++step)
+  // The steps run in the inner loop; a ray to relocate (no face claims it, or it crossed a fault)
+  // leaves it for the outer one, so the relocation's code runs once per relocation rather than on
+  // every step (a CPU driver runs every branch of a loop body that any pixel of a SIMD group takes).
+  int step = 0;
+  for (int round = 0; round < maximumCells && step < maximumCells; ++round)
   {
-    LoadCell(cell);
+    bool relocate = false;
+    for (; step < maximumCells; ++step)
+    {
+      LoadCell(cell);
 #ifdef UV_SKIP_INVISIBLE_CELLS
-    // Region membership, not CellVisible: the next peel enters where the region does, and its
-    // cells include those beside a cell-data isosurface.
-    bool inRegion = ((texelFetch(visibleCells, cell / 32).r >> uint(cell % 32)) & 1u) != 0u;
-    invisibleRun = inRegion ? 0 : invisibleRun + 1;
-    if (invisibleRun > invisibleCellLimit)
-    {
-      exitParameter = t;
-      stopKind = LEFT_THROUGH_BOUNDARY;
-      break;
-    }
-#endif
-    float exitT;
-    int exitFace = faultFrom >= 0 ? -1 : FindExit(origin, direction, t, enterFace, exitT);
-    if (exitFace < 0)
-    {
-      // No face claims the ray, or it crossed a fault: find its cell a little ahead by walking.
-      // Across a fault only just ahead: a face that merely lies near the far side's (a thin hole
-      // between them) is a gap for the next peel, not medium.
-      float ahead;
-      int attempts;
-      bool located = Relocate(origin, direction, t, cell, ahead, attempts) && (faultFrom < 0 || attempts == 1);
-      if (!located && faultFrom >= 0)
-      {
-        exitParameter = t; // the fault's face is bare here (its throw): the ray left the mesh
-        stopKind = LEFT_THROUGH_BOUNDARY;
-        leftCell = faultFrom;
-        break;
-      }
-      if (!located)
+      // Region membership, not CellVisible: the next peel enters where the region does, and its
+      // cells include those beside a cell-data isosurface.
+      bool inRegion = ((texelFetch(visibleCells, cell / 32).r >> uint(cell % 32)) & 1u) != 0u;
+      invisibleRun = inRegion ? 0 : invisibleRun + 1;
+      if (invisibleRun > invisibleCellLimit)
       {
         exitParameter = t;
-        stopKind = LOST;
+        stopKind = LEFT_THROUGH_BOUNDARY;
+        break;
+      }
+#endif
+      float exitT;
+      int exitFace = faultFrom >= 0 ? -1 : FindExit(origin, direction, t, enterFace, exitT);
+      if (exitFace < 0)
+      {
+        relocate = true;
+        break;
+      }
+      float segmentEnd = min(exitT, opaqueT);
+      if (segmentEnd > t && !cellFlat && CellVisible())
+        IntegrateCell(origin, direction, t, segmentEnd, CellDensity(cell));
+      if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
+        break;
+      int across[6];
+      CellNeighbours(cell, across);
+      int next = across[exitFace];
+      if (next < 0)
+        next = NeighbourAcrossTiedFace(origin, direction, exitT, enterFace, across);
+      if (next < 0 && across[exitFace] <= -2)
+      {
+        faultFrom = cell;
+        cell = -2 - across[exitFace];
+        t = exitT;
+        continue;
+      }
+      if (next < 0)
+      {
+        exitParameter = exitT; // left the mesh: the next peel looks beyond here
+        stopKind = LEFT_THROUGH_BOUNDARY;
+        leftCell = cell;
         break;
       }
 #ifdef UV_CELL_SCALARS
-      if (faultFrom >= 0 && isosurfaceCount > 0)
-        CompositeSurfacesBetweenCells(texelFetch(cellScalars, faultFrom).r, scalars[0], origin + t * direction,
+      if (isosurfaceCount > 0)
+        CompositeSurfacesBetweenCells(scalars[0], texelFetch(cellScalars, next / 8).r, origin + exitT * direction,
           exitNormal);
 #endif
-      // Across a fault the faces lie against each other: the ray goes on from where it crossed.
-      t += faultFrom >= 0 ? 0.0 : ahead;
-      enterFace = -1;
-      faultFrom = -1;
-      continue;
-    }
-    float segmentEnd = min(exitT, opaqueT);
-    if (segmentEnd > t && !cellFlat && CellVisible())
-      IntegrateCell(origin, direction, t, segmentEnd, CellDensity(cell));
-    if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
-      break;
-    int across[6];
-    CellNeighbours(cell, across);
-    int next = across[exitFace];
-    if (next < 0)
-      next = NeighbourAcrossTiedFace(origin, direction, exitT, enterFace, across);
-    if (next < 0 && across[exitFace] <= -2)
-    {
-      faultFrom = cell;
-      cell = -2 - across[exitFace];
+      cell = next / 8;
+      enterFace = next % 8;
       t = exitT;
-      continue;
     }
-    if (next < 0)
+    if (!relocate)
+      break;
+    ++step; // the relocation takes this step
+    // No face claims the ray, or it crossed a fault: find its cell a little ahead by walking.
+    // Across a fault only just ahead: a face that merely lies near the far side's (a thin hole
+    // between them) is a gap for the next peel, not medium.
+    float ahead;
+    int attempts;
+    bool located = Relocate(origin, direction, t, cell, ahead, attempts) && (faultFrom < 0 || attempts == 1);
+    if (!located && faultFrom >= 0)
     {
-      exitParameter = exitT; // left the mesh: the next peel looks beyond here
+      exitParameter = t; // the fault's face is bare here (its throw): the ray left the mesh
       stopKind = LEFT_THROUGH_BOUNDARY;
-      leftCell = cell;
+      leftCell = faultFrom;
+      break;
+    }
+    if (!located)
+    {
+      exitParameter = t;
+      stopKind = LOST;
       break;
     }
 #ifdef UV_CELL_SCALARS
-    if (isosurfaceCount > 0)
-      CompositeSurfacesBetweenCells(scalars[0], texelFetch(cellScalars, next / 8).r, origin + exitT * direction,
+    if (faultFrom >= 0 && isosurfaceCount > 0)
+      CompositeSurfacesBetweenCells(texelFetch(cellScalars, faultFrom).r, scalars[0], origin + t * direction,
         exitNormal);
 #endif
-    cell = next / 8;
-    enterFace = next % 8;
-    t = exitT;
+    // Across a fault the faces lie against each other: the ray goes on from where it crossed.
+    t += faultFrom >= 0 ? 0.0 : ahead;
+    enterFace = -1;
+    faultFrom = -1;
   }
   return exitParameter;
 }
