@@ -64,11 +64,15 @@ class RayStartCell
 public:
   int Update(const uvvtk::HexahedralMesh& mesh, bool perspective, const glm::dvec3& eye, const glm::dvec3& nearCentre)
   {
+    if (mesh.Version != this->MeshVersion)
+      this->MeasureBox(mesh.Points.Values);
     if (mesh.Version != this->MeshVersion || perspective != this->Perspective || eye != this->Eye ||
       nearCentre != this->NearCentre)
     {
-      this->Cell = perspective ? uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, eye) : -1;
-      if (this->Cell < 0)
+      // Each search scans every cell: asked only for points within the mesh's box, so that a camera
+      // moving outside the mesh costs nothing per frame.
+      this->Cell = perspective && this->InBox(eye) ? uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, eye) : -1;
+      if (this->Cell < 0 && this->InBox(nearCentre))
         this->Cell = uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, nearCentre);
       this->MeshVersion = mesh.Version;
       this->Perspective = perspective;
@@ -83,6 +87,26 @@ private:
   std::uint64_t MeshVersion = 0;
   bool Perspective = false;
   glm::dvec3 Eye{ 0.0 }, NearCentre{ 0.0 };
+  glm::dvec3 Low{ 0.0 }, High{ -1.0 }; // the points' box (recentred, as the cells' corners)
+
+  void MeasureBox(const std::vector<float>& pointData)
+  {
+    this->Low = glm::dvec3(std::numeric_limits<double>::infinity());
+    this->High = -this->Low;
+    for (std::size_t p = 0; p + 3 < pointData.size(); p += 4)
+    {
+      const glm::dvec3 x(pointData[p], pointData[p + 1], pointData[p + 2]);
+      this->Low = glm::min(this->Low, x);
+      this->High = glm::max(this->High, x);
+    }
+    const glm::dvec3 slack(1e-6 * glm::length(this->High - this->Low)); // the cells' own tolerance is less
+    this->Low -= slack;
+    this->High += slack;
+  }
+  bool InBox(const glm::dvec3& x) const
+  {
+    return glm::all(glm::greaterThanEqual(x, this->Low)) && glm::all(glm::lessThanEqual(x, this->High));
+  }
 };
 
 /// The faces where rays enter: the whole mesh's boundary, or with skipping the visible region's
