@@ -836,33 +836,43 @@ void LeavingHits(int f, vec3 origin, vec3 direction, vec3 cellCentre, out float 
 
 vec3 exitNormal; // the face's normal where FindExit found the ray leaving
 
-/// FindExit for a convex cell with planar faces (every cell of the mesh is, UV_ALL_CELLS_CONVEX): where the ray crosses the nearest face plane it heads
-/// out of (no patch to solve, no inside test: in a convex cell that crossing is on its face). Each
-/// plane comes from the face's canonical corners, the same from either cell sharing the face.
+/// One face plane of FindExitThroughPlanes: face f with corners p0..p3 in cyclic order (a triangle
+/// repeats one; a collapsed face has no normal and is passed over).
+void PlaneExit(int f, vec3 p0, vec3 p1, vec3 p2, vec3 p3, vec3 cellCentre, vec3 origin, vec3 direction,
+  int enterFace, inout float exitT, inout int exitFace)
+{
+  vec3 normal = SafeNormalize(cross(p2 - p0, p3 - p1));
+  vec3 faceMiddle = 0.25 * (p0 + p1 + p2 + p3);
+  normal = dot(normal, faceMiddle - cellCentre) < 0.0 ? -normal : normal;
+  float along = dot(normal, direction);
+  float hit = dot(normal, faceMiddle - origin) / along;
+  // Not where the ray enters through the plane, or runs along it.
+  if (f != enterFace && along > 0.0 && hit < exitT)
+  {
+    exitT = hit;
+    exitFace = f;
+    exitNormal = normal;
+  }
+}
+
+/// FindExit for a convex cell with planar faces (every cell of the mesh is, UV_ALL_CELLS_CONVEX):
+/// where the ray crosses the nearest face plane it heads out of (no patch to solve, no inside test:
+/// in a convex cell that crossing is on its face). The ray goes on from there in the neighbour,
+/// which does not test that face again, so the two cells need not compute it alike. The faces are
+/// written out (uv::HexahedronFaces): corners by constant index, which a CPU driver reads from
+/// registers where a loop's index would make it gather from memory.
 int FindExitThroughPlanes(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
 {
   exitT = noExit;
   int exitFace = -1;
-  vec3 cellCentre = CellCentre(points);
-  for (int f = 0; f < 6; ++f)
-  {
-    vec3 a, b, c, d;
-    if (f == enterFace || LoadedCellFace(f, a, b, c, d) < 3)
-      continue;
-    vec3 normal = SafeNormalize(cross(c - a, d - b));
-    vec3 faceMiddle = 0.25 * (a + b + c + d);
-    normal = dot(normal, faceMiddle - cellCentre) < 0.0 ? -normal : normal;
-    float along = dot(normal, direction);
-    if (!(along > 0.0))
-      continue; // the ray enters through this plane, or runs along it
-    float hit = dot(normal, faceMiddle - origin) / along;
-    if (hit < exitT)
-    {
-      exitT = hit;
-      exitFace = f;
-      exitNormal = normal;
-    }
-  }
+  vec3 c = CellCentre(points);
+  vec3 o = origin, d = direction;
+  PlaneExit(0, points[0], points[3], points[2], points[1], c, o, d, enterFace, exitT, exitFace);
+  PlaneExit(1, points[4], points[5], points[6], points[7], c, o, d, enterFace, exitT, exitFace);
+  PlaneExit(2, points[0], points[1], points[5], points[4], c, o, d, enterFace, exitT, exitFace);
+  PlaneExit(3, points[1], points[2], points[6], points[5], c, o, d, enterFace, exitT, exitFace);
+  PlaneExit(4, points[2], points[3], points[7], points[6], c, o, d, enterFace, exitT, exitFace);
+  PlaneExit(5, points[3], points[0], points[4], points[7], c, o, d, enterFace, exitT, exitFace);
   if (exitFace >= 0)
     exitT = max(exitT, t);
   return exitFace;
