@@ -260,21 +260,32 @@ TetrahedronFaceNeighbours MakeTetrahedronFaceNeighbours(const std::vector<std::u
   return result;
 }
 
-/// How many cells fold over themselves (uv::IsTangledHexahedron); `parallelFor` as above.
-template <typename ParallelFor>
-std::size_t CountTangledHexahedra(
-  const std::vector<std::uint32_t>& cellPoints, const std::vector<float>& pointData, ParallelFor&& parallelFor)
+/// `classify(corners, ids)` of every cell, its corners in double and its 8 point ids; `parallelFor`
+/// as above.
+template <typename ParallelFor, typename Classify>
+std::vector<unsigned char> ClassifyHexahedra(const std::vector<std::uint32_t>& cellPoints,
+  const std::vector<float>& pointData, ParallelFor&& parallelFor, Classify&& classify)
 {
   const std::size_t cellCount = cellPoints.size() / 8;
-  std::vector<unsigned char> tangled(cellCount, 0);
+  std::vector<unsigned char> kind(cellCount, 0);
   parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
     glm::dvec3 p[8];
     for (std::size_t c = begin; c < end; ++c)
     {
       HexahedronCornerPoints(cellPoints, pointData, c, p);
-      tangled[c] = IsTangledHexahedron(p) ? 1 : 0;
+      kind[c] = classify(p, &cellPoints[8 * c]);
     }
   });
+  return kind;
+}
+
+/// How many cells fold over themselves (uv::IsTangledHexahedron); `parallelFor` as above.
+template <typename ParallelFor>
+std::size_t CountTangledHexahedra(
+  const std::vector<std::uint32_t>& cellPoints, const std::vector<float>& pointData, ParallelFor&& parallelFor)
+{
+  const std::vector<unsigned char> tangled = ClassifyHexahedra(cellPoints, pointData, parallelFor,
+    [](const glm::dvec3* p, const std::uint32_t*) { return static_cast<unsigned char>(IsTangledHexahedron(p)); });
   return static_cast<std::size_t>(std::count(tangled.begin(), tangled.end(), 1));
 }
 
@@ -360,18 +371,11 @@ template <typename ParallelFor>
 CellGeometry MeshCellGeometry(
   const std::vector<std::uint32_t>& cellPoints, const std::vector<float>& pointData, ParallelFor&& parallelFor)
 {
-  const std::size_t cellCount = cellPoints.size() / 8;
-  std::vector<unsigned char> kind(cellCount, 0);
-  parallelFor(cellCount, [&](std::size_t begin, std::size_t end) {
-    glm::dvec3 p[8];
-    for (std::size_t c = begin; c < end; ++c)
-    {
-      HexahedronCornerPoints(cellPoints, pointData, c, p);
-      const std::uint32_t* ids = &cellPoints[8 * c];
-      kind[c] = !IsConvexWithPlanarFaces(p, ids) ? 0 : (IsParallelepiped(p, ids) ? 2 : 1);
-    }
-  });
-  if (cellCount == 0)
+  const std::vector<unsigned char> kind =
+    ClassifyHexahedra(cellPoints, pointData, parallelFor, [](const glm::dvec3* p, const std::uint32_t* ids) {
+      return static_cast<unsigned char>(!IsConvexWithPlanarFaces(p, ids) ? 0 : (IsParallelepiped(p, ids) ? 2 : 1));
+    });
+  if (kind.empty())
     return CellGeometry::Any;
   return static_cast<CellGeometry>(*std::min_element(kind.begin(), kind.end()));
 }
