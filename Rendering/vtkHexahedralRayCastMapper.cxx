@@ -64,15 +64,14 @@ class RayStartCell
 public:
   int Update(const uvvtk::HexahedralMesh& mesh, bool perspective, const glm::dvec3& eye, const glm::dvec3& nearCentre)
   {
-    if (mesh.Version != this->MeshVersion)
-      this->MeasureBox(mesh.Points.Values);
     if (mesh.Version != this->MeshVersion || perspective != this->Perspective || eye != this->Eye ||
       nearCentre != this->NearCentre)
     {
       // Each search scans every cell: asked only for points within the mesh's box, so that a camera
       // moving outside the mesh costs nothing per frame.
-      this->Cell = perspective && this->InBox(eye) ? uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, eye) : -1;
-      if (this->Cell < 0 && this->InBox(nearCentre))
+      this->Cell =
+        perspective && InBox(mesh, eye) ? uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, eye) : -1;
+      if (this->Cell < 0 && InBox(mesh, nearCentre))
         this->Cell = uv::HexahedronHolding(mesh.CellPoints, mesh.Points.Values, nearCentre);
       this->MeshVersion = mesh.Version;
       this->Perspective = perspective;
@@ -87,25 +86,16 @@ private:
   std::uint64_t MeshVersion = 0;
   bool Perspective = false;
   glm::dvec3 Eye{ 0.0 }, NearCentre{ 0.0 };
-  glm::dvec3 Low{ 0.0 }, High{ -1.0 }; // the points' box (recentred, as the cells' corners)
 
-  void MeasureBox(const std::vector<float>& pointData)
+  /// Whether `x` (recentred, as the cells' corners) lies in the box of the mesh's points, widened by
+  /// more than the rounding of their recentred float copies.
+  static bool InBox(const uvvtk::HexahedralMesh& mesh, const glm::dvec3& x)
   {
-    this->Low = glm::dvec3(std::numeric_limits<double>::infinity());
-    this->High = -this->Low;
-    for (std::size_t p = 0; p + 3 < pointData.size(); p += 4)
-    {
-      const glm::dvec3 x(pointData[p], pointData[p + 1], pointData[p + 2]);
-      this->Low = glm::min(this->Low, x);
-      this->High = glm::max(this->High, x);
-    }
-    const glm::dvec3 slack(1e-6 * glm::length(this->High - this->Low)); // the cells' own tolerance is less
-    this->Low -= slack;
-    this->High += slack;
-  }
-  bool InBox(const glm::dvec3& x) const
-  {
-    return glm::all(glm::greaterThanEqual(x, this->Low)) && glm::all(glm::lessThanEqual(x, this->High));
+    const double* b = mesh.Points.Bounds;
+    const glm::dvec3 low(b[0], b[2], b[4]), high(b[1], b[3], b[5]);
+    const glm::dvec3 slack(1e-6 * glm::length(high - low));
+    const glm::dvec3 y = x + mesh.Points.Center;
+    return glm::all(glm::greaterThanEqual(y, low - slack)) && glm::all(glm::lessThanEqual(y, high + slack));
   }
 };
 
