@@ -1114,7 +1114,19 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
         break;
       }
       float segmentEnd = min(exitT, opaqueT);
-      if (segmentEnd > t && !cellFlat && CellVisible())
+#ifdef UV_SKIP_INVISIBLE_CELLS
+      // The region's cells are those CellVisible would pass, classified on the CPU from the same
+      // ranges: one bit read instead of the transfer function's searches on every step. A cell
+      // scalar's region also holds the neighbours of its isosurfaces' cells, which CellVisible sorts.
+#ifdef UV_CELL_SCALARS
+      bool visible = inRegion && CellVisible();
+#else
+      bool visible = inRegion;
+#endif
+#else
+      bool visible = CellVisible();
+#endif
+      if (segmentEnd > t && !cellFlat && visible)
         IntegrateCell(origin, direction, t, segmentEnd, CellDensity(cell));
       if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
         break;
