@@ -46,8 +46,10 @@ namespace
 /// With skipping, how many cells outside the visible region a ray walks through before it leaves the
 /// ray to the next peel's entry faces. Not zero: where a ray only grazes an edge or a corner of an
 /// invisible cell between visible ones, the region's faces fold, and rasterising the fold's edge may
-/// round either way, so no entry face would pick the ray up again.
-constexpr int InvisibleCellsWalked = 4;
+/// round either way, so no entry face would pick the ray up again. Not a few either: every peel adds
+/// two passes over the screen and restarts each ray, which costs more than walking a short gap
+/// between visible cells; only long gaps are worth a peel.
+constexpr int InvisibleCellsWalked = 16;
 
 void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
 {
