@@ -357,7 +357,7 @@ struct TraversalSettings
 {
   int IntegrationMode = 0, FixedSteps = 8;
   bool ExactEnds = true;
-  float OpacityThreshold = 0.99f;
+  float OpacityThreshold = 0.999f;
   int MaximumCells = 0; // bounds the walk (and any cycle in it)
   int StartCell = -1;   // where the first peel's rays start (RayStartCell), or -1
   int IsosurfaceCount = 0;
@@ -577,7 +577,7 @@ public:
 vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
   : Impl(new Internals(this))
 {
-  this->OpacityThreshold = 0.99;
+  this->OpacityThreshold = 0.999;
   // The exact field's own gradient needs nothing computed ahead; the plugin picks vertex gradients.
   this->GradientMode = CELL_GRADIENTS;
 }

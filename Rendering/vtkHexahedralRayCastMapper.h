@@ -28,7 +28,7 @@
  * gradients interpolated by the cell's own trilinear weights at the hit (smooth). Isosurfaces of a
  * cell scalar are lit by their faces either way.
  *
- * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.99); with
+ * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.999); with
  * SkipInvisibleCells (default) rays enter only where the cells the transfer function makes visible
  * (or that hold an isovalue) start (after the iSBVR paper's culling surfaces, uvVisibleRegion.h): at
  * the front of that region; past its back, and over an invisible run inside the mesh, they walk a few

@@ -201,7 +201,7 @@ public:
 
   ///@{
   /// Early ray termination: a pixel's ray stops once its accumulated opacity reaches this (1: never).
-  /// The hexahedral caster stops each ray (default 0.99), the shells mask pixels between shells
+  /// The hexahedral caster stops each ray (default 0.999), the shells mask pixels between shells
   /// (default 0.999), the tetrahedra mapper between batches of its front-to-back order, with
   /// SkipInvisibleCells on (default 0.999). What is left out weighs at most 1 - threshold.
   vtkSetClampMacro(OpacityThreshold, double, 0.0, 1.0);

@@ -105,7 +105,7 @@ MAPPERS = [
      "hexahedra"),
     ("UV HexRayCast Accurate, image sample distance 2",
      lambda: configured(vtkHexahedralRayCastMapper, ImageSampleDistance=2.0), "hexahedra"),
-    # Accurate without early ray termination: what stopping at opacity 0.99 saves and costs.
+    # Accurate without early ray termination: what stopping at opacity 0.999 saves and costs.
     ("UV HexRayCast Accurate, no early stop", lambda: configured(vtkHexahedralRayCastMapper, OpacityThreshold=1.0),
      "hexahedra"),
     # Against the default's SkipInvisibleCells: what skipping saves; skipping_table() pairs each

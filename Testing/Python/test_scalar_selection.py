@@ -39,7 +39,7 @@ STEPS = 8000
 REFERENCE_BOUND = 2e-3  # reference against the marcher, largest difference in premultiplied RGBA
 # Mappers against the reference (RMSE over the image): the tetrahedra mapper and cell projection
 # integrate a constant exactly (their error is float and the visibility order), the hexahedral
-# mapper integrates in float and stops rays at 0.99, the shells sample and miss the jumps between
+# mapper integrates in float and stops rays at 0.999, the shells sample and miss the jumps between
 # cells by up to a sample.
 MAPPER_BOUNDS = {"preintegrated": 1e-3, "cell projection": 1e-3, "shells": 1e-2, "hexahedral": 2e-3}
 
