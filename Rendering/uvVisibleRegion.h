@@ -16,6 +16,8 @@
 #include "uvHexahedralMesh.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -111,6 +113,40 @@ std::vector<unsigned char> VisibleCells(const std::vector<float>& low, const std
       visible[c] = RoleOf(low[c], high[c], zeroSet, sortedIsovalues) != 0 ? 1 : 0;
   });
   return visible;
+}
+/// A box holding every visible cell's corners (low x, y, z, then high), widened by a little more
+/// than float rounding, so that a ray past it meets no visible cell again; where no cell is visible,
+/// the point at the origin. `pointValues` holds 4 floats per point, the position first.
+inline std::array<float, 6> BoxOfCells(const std::vector<std::uint32_t>& cellPoints,
+  const std::vector<float>& pointValues, const std::vector<unsigned char>& visible)
+{
+  std::array<float, 6> box = { HUGE_VALF, HUGE_VALF, HUGE_VALF, -HUGE_VALF, -HUGE_VALF, -HUGE_VALF };
+  for (std::size_t c = 0; c < visible.size(); ++c)
+  {
+    if (!visible[c])
+      continue;
+    for (int k = 0; k < 8; ++k)
+    {
+      const float* p = &pointValues[4 * std::size_t(cellPoints[8 * c + k])];
+      for (int i = 0; i < 3; ++i)
+      {
+        box[i] = std::min(box[i], p[i]);
+        box[3 + i] = std::max(box[3 + i], p[i]);
+      }
+    }
+  }
+  if (!(box[0] <= box[3]))
+    return {};
+  float extent = 0.0f;
+  for (int i = 0; i < 3; ++i)
+    extent = std::max({ extent, box[3 + i] - box[i], std::abs(box[i]), std::abs(box[3 + i]) });
+  const float margin = 1e-5f * extent;
+  for (int i = 0; i < 3; ++i)
+  {
+    box[i] -= margin;
+    box[3 + i] += margin;
+  }
+  return box;
 }
 } // namespace uv
 

@@ -137,6 +137,7 @@ public:
     {
       std::vector<unsigned char> visible =
         uv::VisibleCells(this->Low, this->High, zeroSet, isovalues, uvvtk::ParallelFor);
+      this->Box = uv::BoxOfCells(mesh.CellPoints, mesh.Points.Values, visible);
       this->ZeroSet = std::move(zeroSet);
       this->Isovalues = std::move(isovalues);
       this->Classified = true;
@@ -172,6 +173,8 @@ public:
   /// With skipping, the region's cells, one bit each (32 to a word), for the GPU copy.
   const std::vector<std::uint32_t>& VisibleCellBits() const { return this->VisibleBits; }
   bool Skipping() const { return this->Skip; }
+  /// With skipping, a box holding every visible cell (low xyz, high xyz; empty: low above high).
+  const std::array<float, 6>& VisibleBox() const { return this->Box; }
   /// (Before any frame, or after frames handed to the tetrahedra mapper only, none.)
   std::size_t VisibleCells() const
   {
@@ -188,6 +191,7 @@ private:
   std::vector<double> Isovalues;
   std::vector<unsigned char> Visible;
   std::vector<std::uint32_t> VisibleBits;
+  std::array<float, 6> Box{};
   uv::VisibleRegion Region;
 };
 
@@ -359,6 +363,7 @@ struct TraversalSettings
   bool ExactEnds = true;
   float OpacityThreshold = 0.999f;
   int MaximumCells = 0; // bounds the walk (and any cycle in it)
+  std::array<float, 6> VisibleBox{}; // with skipping: past it an invisible cell ends the ray
   int StartCell = -1;   // where the first peel's rays start (RayStartCell), or -1
   int IsosurfaceCount = 0;
   bool CellScalars = false;    // the mesh's scalar is per cell (uploaded to GpuResources::CellScalars)
@@ -465,7 +470,11 @@ private:
     program->SetUniformi("maximumCells", settings.MaximumCells);
     // The last peel walks on through invisible runs: no peel is left to pick the ray up.
     if (settings.SkipInvisibleCells)
+    {
       program->SetUniformi("invisibleCellLimit", settings.LastPeel ? settings.MaximumCells : InvisibleCellsWalked);
+      program->SetUniform3f("visibleLow", settings.VisibleBox.data());
+      program->SetUniform3f("visibleHigh", settings.VisibleBox.data() + 3);
+    }
     program->SetUniformi("startCell", settings.StartCell);
   }
 };
@@ -806,6 +815,7 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.OpacityThreshold = static_cast<float>(this->OpacityThreshold);
   settings.MaximumCells = static_cast<int>(std::min<std::size_t>(impl.Mesh.CellCount() + 8, 1 << 20));
   settings.SkipInvisibleCells = impl.Entries.Skipping();
+  settings.VisibleBox = impl.Entries.VisibleBox();
   settings.IsosurfaceCount = static_cast<int>(impl.DrawnIsosurfaces.size());
   settings.CellScalars = !impl.Mesh.CellScalars.empty();
   settings.CellDensities = !impl.Mesh.CellDensities.empty();

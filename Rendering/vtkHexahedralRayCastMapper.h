@@ -31,9 +31,9 @@
  * Skipped work: rays stop once their opacity reaches OpacityThreshold (default 0.999); with
  * SkipInvisibleCells (default) rays enter only where the cells the transfer function makes visible
  * (or that hold an isovalue) start (after the iSBVR paper's culling surfaces, uvVisibleRegion.h): at
- * the front of that region; past its back, and over an invisible run inside the mesh, they walk a few
- * invisible cells and leave the rest to the next peel's entry faces. Rays that meet the region nowhere
- * cost only the entry pass. The image is the full walk's. Without
+ * the front of that region; over an invisible run inside the mesh they walk a few invisible cells and
+ * leave the rest to the next peel's entry faces, and past the box of the visible cells they stop.
+ * Rays that meet the region nowhere cost only the entry pass. The image is the full walk's. Without
  * skipping a transparent cell costs one range test, no integration. The traversal program is
  * compiled for the integration mode and for what every cell of the mesh is (uv::MeshCellGeometry):
  * where all are convex with planar faces a ray leaves each through its nearest face plane, and

@@ -47,6 +47,7 @@ uniform int maximumCells;       // bound on the walk (also guards against cycles
 uniform usamplerBuffer visibleCells; // the visible region's cells (whose entry faces are drawn), a bit each
 uniform int invisibleCellLimit; // cells outside it in a row after which the walk leaves the ray to
                                 // the next peel's entry faces
+uniform vec3 visibleLow, visibleHigh; // a box holding every cell of the visible region
 #endif
 uniform int startCell;          // first peel, the near plane inside the mesh: the cell holding the
                                 // eye or the near plane's centre, or -1
@@ -1077,11 +1078,23 @@ bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ah
 /// or, with skipping, has crossed more than invisibleCellLimit cells outside the visible region in a
 /// row (the next peel's entry faces pick it up where the region starts again). Returns where the
 /// next peel should pick the ray up (noExit: nowhere).
+/// Where the ray leaves the box [low, high] for good (-noExit if it never meets it).
+float BoxExit(vec3 origin, vec3 direction, vec3 low, vec3 high)
+{
+  vec3 inverse = 1.0 / direction; // an axis the ray runs along gives +-infinity: that slab never ends it
+  vec3 a = (low - origin) * inverse, b = (high - origin) * inverse;
+  vec3 far = max(a, b);
+  return min(min(far.x, far.y), far.z);
+}
+
 float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, float t)
 {
   float exitParameter = noExit;
 #ifdef UV_SKIP_INVISIBLE_CELLS
   int invisibleRun = 0; // cells outside the visible region in a row
+  // Past this the ray meets no visible cell again (a box once left is never re-entered): there an
+  // invisible cell ends the ray, with no peel left to pick it up.
+  float pastVisible = BoxExit(origin, direction, visibleLow, visibleHigh);
 #endif
   int faultFrom = -1; // the cell the ray left through a fault face, its far side's cell in `cell`
   // The steps run in the inner loop; a ray to relocate (no face claims it, or it crossed a fault)
@@ -1099,6 +1112,8 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
       // cells include those beside a cell-data isosurface.
       bool inRegion = ((texelFetch(visibleCells, cell / 32).r >> uint(cell % 32)) & 1u) != 0u;
       invisibleRun = inRegion ? 0 : invisibleRun + 1;
+      if (invisibleRun > 0 && t > pastVisible)
+        break;
       if (invisibleRun > invisibleCellLimit)
       {
         exitParameter = t;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <limits>
 #include <set>
@@ -100,4 +101,21 @@ TEST(VisibleRegion, EverythingVisibleIsTheMeshAndNothingVisibleIsEmpty)
   const uv::VisibleRegion none = uv::MakeVisibleRegion(row.Faces, std::vector<unsigned char>(4, 0));
   EXPECT_EQ(none.BoundaryCount(), 0u);
   EXPECT_EQ(none.VisibleCells, 0u);
+}
+
+TEST(VisibleRegion, TheBoxHoldsTheVisibleCellsAndLittleMore)
+{
+  const Row row(5); // unit cubes along x from 0 to 5
+  const std::array<float, 6> box = uv::BoxOfCells(row.CellPoints, row.PointData, { 0, 1, 1, 0, 0 });
+  const std::array<float, 6> cells = { 1, 0, 0, 3, 1, 1 };
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_LT(box[i], cells[i]);
+    EXPECT_GT(box[3 + i], cells[3 + i]);
+    EXPECT_NEAR(box[i], cells[i], 1e-4);
+    EXPECT_NEAR(box[3 + i], cells[3 + i], 1e-4);
+  }
+  // Nothing visible: a point, which any ray passes at once.
+  EXPECT_EQ(uv::BoxOfCells(row.CellPoints, row.PointData, std::vector<unsigned char>(5, 0)),
+    (std::array<float, 6>{}));
 }
