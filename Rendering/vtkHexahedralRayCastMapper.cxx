@@ -34,6 +34,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <cstdint>
 #include <string>
@@ -47,9 +48,13 @@ namespace
 /// ray to the next peel's entry faces. Not zero: where a ray only grazes an edge or a corner of an
 /// invisible cell between visible ones, the region's faces fold, and rasterising the fold's edge may
 /// round either way, so no entry face would pick the ray up again. Not a few either: every peel adds
-/// two passes over the screen and restarts each ray, which costs more than walking a short gap
-/// between visible cells; only long gaps are worth a peel.
-constexpr int InvisibleCellsWalked = 16;
+/// two passes over the screen and restarts each ray, which costs more than walking the gaps between
+/// visible cells (past the visible cells' box a ray stops at once). About the cells across the mesh:
+/// only a gap as long as the mesh is wide is worth a peel.
+int InvisibleCellsWalked(std::size_t cells)
+{
+  return std::max(16, static_cast<int>(std::cbrt(static_cast<double>(cells))));
+}
 
 void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
 {
@@ -363,6 +368,7 @@ struct TraversalSettings
   bool ExactEnds = true;
   float OpacityThreshold = 0.999f;
   int MaximumCells = 0; // bounds the walk (and any cycle in it)
+  std::size_t MeshCells = 0;
   std::array<float, 6> VisibleBox{}; // with skipping: past it an invisible cell ends the ray
   int StartCell = -1;   // where the first peel's rays start (RayStartCell), or -1
   int IsosurfaceCount = 0;
@@ -471,7 +477,8 @@ private:
     // The last peel walks on through invisible runs: no peel is left to pick the ray up.
     if (settings.SkipInvisibleCells)
     {
-      program->SetUniformi("invisibleCellLimit", settings.LastPeel ? settings.MaximumCells : InvisibleCellsWalked);
+      program->SetUniformi("invisibleCellLimit",
+        settings.LastPeel ? settings.MaximumCells : InvisibleCellsWalked(settings.MeshCells));
       program->SetUniform3f("visibleLow", settings.VisibleBox.data());
       program->SetUniform3f("visibleHigh", settings.VisibleBox.data() + 3);
     }
@@ -814,6 +821,7 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.ExactEnds = this->ExactSegmentEnds;
   settings.OpacityThreshold = static_cast<float>(this->OpacityThreshold);
   settings.MaximumCells = static_cast<int>(std::min<std::size_t>(impl.Mesh.CellCount() + 8, 1 << 20));
+  settings.MeshCells = impl.Mesh.CellCount();
   settings.SkipInvisibleCells = impl.Entries.Skipping();
   settings.VisibleBox = impl.Entries.VisibleBox();
   settings.IsosurfaceCount = static_cast<int>(impl.DrawnIsosurfaces.size());
