@@ -1078,13 +1078,19 @@ bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ah
 /// or, with skipping, has crossed more than invisibleCellLimit cells outside the visible region in a
 /// row (the next peel's entry faces pick it up where the region starts again). Returns where the
 /// next peel should pick the ray up (noExit: nowhere).
-/// Where the ray leaves the box [low, high] for good (-noExit if it never meets it).
+/// Where the ray leaves the box [low, high] for good (-noExit where it runs beside the box). No
+/// division by zero: GLSL leaves its result undefined.
 float BoxExit(vec3 origin, vec3 direction, vec3 low, vec3 high)
 {
-  vec3 inverse = 1.0 / direction; // an axis the ray runs along gives +-infinity: that slab never ends it
-  vec3 a = (low - origin) * inverse, b = (high - origin) * inverse;
-  vec3 far = max(a, b);
-  return min(min(far.x, far.y), far.z);
+  float exitT = noExit;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (direction[i] != 0.0)
+      exitT = min(exitT, max((low[i] - origin[i]) / direction[i], (high[i] - origin[i]) / direction[i]));
+    else if (origin[i] < low[i] || origin[i] > high[i])
+      exitT = -noExit; // parallel to this slab and outside it
+  }
+  return exitT;
 }
 
 float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, float t)
