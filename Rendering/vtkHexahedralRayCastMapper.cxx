@@ -44,8 +44,7 @@ vtkStandardNewMacro(vtkHexahedralRayCastMapper);
 
 namespace
 {
-/// With skipping, how many cells outside the visible region a ray walks through before it leaves the
-/// ray to the next peel's entry faces. Not zero: where a ray only grazes an edge or a corner of an
+/// The automatic InvisibleRunLimit. Not zero: where a ray only grazes an edge or a corner of an
 /// invisible cell between visible ones, the region's faces fold, and rasterising the fold's edge may
 /// round either way, so no entry face would pick the ray up again. Not a few either: every peel adds
 /// two passes over the screen and restarts each ray, which costs more than walking the gaps between
@@ -368,7 +367,7 @@ struct TraversalSettings
   bool ExactEnds = true;
   float OpacityThreshold = 0.999f;
   int MaximumCells = 0; // bounds the walk (and any cycle in it)
-  std::size_t MeshCells = 0;
+  int InvisibleRunLimit = 16; // with skipping: invisible cells in a row before the next peel
   std::array<float, 6> VisibleBox{}; // with skipping: past it an invisible cell ends the ray
   int StartCell = -1;   // where the first peel's rays start (RayStartCell), or -1
   int IsosurfaceCount = 0;
@@ -478,7 +477,7 @@ private:
     if (settings.SkipInvisibleCells)
     {
       program->SetUniformi("invisibleCellLimit",
-        settings.LastPeel ? settings.MaximumCells : InvisibleCellsWalked(settings.MeshCells));
+        settings.LastPeel ? settings.MaximumCells : settings.InvisibleRunLimit);
       program->SetUniform3f("visibleLow", settings.VisibleBox.data());
       program->SetUniform3f("visibleHigh", settings.VisibleBox.data() + 3);
     }
@@ -678,6 +677,7 @@ void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FixedSteps: " << this->FixedSteps << "\n";
   os << indent << "ExactSegmentEnds: " << this->ExactSegmentEnds << "\n";
   os << indent << "MaximumPeels: " << this->MaximumPeels << "\n";
+  os << indent << "InvisibleRunLimit: " << this->InvisibleRunLimit << "\n";
   os << indent << "DelegateTetrahedralMeshes: " << this->DelegateTetrahedralMeshes << "\n";
 }
 
@@ -821,7 +821,8 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.ExactEnds = this->ExactSegmentEnds;
   settings.OpacityThreshold = static_cast<float>(this->OpacityThreshold);
   settings.MaximumCells = static_cast<int>(std::min<std::size_t>(impl.Mesh.CellCount() + 8, 1 << 20));
-  settings.MeshCells = impl.Mesh.CellCount();
+  settings.InvisibleRunLimit =
+    this->InvisibleRunLimit > 0 ? this->InvisibleRunLimit : InvisibleCellsWalked(impl.Mesh.CellCount());
   settings.SkipInvisibleCells = impl.Entries.Skipping();
   settings.VisibleBox = impl.Entries.VisibleBox();
   settings.IsosurfaceCount = static_cast<int>(impl.DrawnIsosurfaces.size());

@@ -109,10 +109,19 @@ public:
   ///@}
 
   ///@{
-  /// Depth-peeling passes at most (non-convex meshes, holes); default 8. With skipping each run of
-  /// visible cells along a ray takes one: raise it where rays cross more runs than that.
+  /// Depth-peeling passes at most (non-convex meshes, holes); default 8. With skipping, each run of
+  /// visible cells along a ray after a gap longer than InvisibleRunLimit takes one too: raise it
+  /// where rays cross more of those than that.
   vtkSetClampMacro(MaximumPeels, int, 1, 64);
   vtkGetMacro(MaximumPeels, int);
+  ///@}
+
+  ///@{
+  /// With skipping, how many invisible cells in a row a ray walks through before it leaves the rest
+  /// of its path to the next peel's entry faces. 0 (default): the cells across the mesh (the cube
+  /// root of the count, at least 16), since a peel costs more than walking a shorter gap.
+  vtkSetClampMacro(InvisibleRunLimit, int, 0, VTK_INT_MAX);
+  vtkGetMacro(InvisibleRunLimit, int);
   ///@}
 
   ///@{
@@ -175,6 +184,7 @@ protected:
   int FixedSteps = 8;
   bool ExactSegmentEnds = true;
   int MaximumPeels = 8;
+  int InvisibleRunLimit = 0;
   bool DelegateTetrahedralMeshes = true;
 
 private:

@@ -602,13 +602,17 @@ class SkippingTests(SceneTestCase):
 
     def test_sparse_transfer_function_on_a_twisted_grid(self):
         mesh = analytic_hexahedra(10, distortion=vtkAnalyticMeshSource.TWIST)
-        mapper = self.compare(mesh, six_spikes(0.05), camera_for(mesh))
-        self.assertLess(mapper.GetNumberOfVisibleCells(), mapper.GetNumberOfCells())
-        self.assertGreater(mapper.GetNumberOfPeels(), 1)  # rays leapt over invisible runs
+        # The automatic run limit, and a peel after every invisible cell: both the full walk's image.
+        for limit in (0, 1):
+            with self.subTest(limit=limit):
+                mapper = self.compare(mesh, six_spikes(0.05), camera_for(mesh), InvisibleRunLimit=limit)
+                self.assertLess(mapper.GetNumberOfVisibleCells(), mapper.GetNumberOfCells())
+                self.assertGreater(mapper.GetNumberOfPeels(), 1)  # rays leapt over invisible runs
 
     def test_the_last_peel_walks_on_through_invisible_runs(self):
-        # Columns of visible matter across a convex grid: most rays cross several, each a peel with
-        # skipping (three here), one without; fewer peels allowed must still give the whole image.
+        # Columns of visible matter across a convex grid. Walking at most 4 invisible cells in a row,
+        # most rays cross several columns, each a peel, where one pass does without skipping; fewer
+        # peels allowed must still give the whole image. By default the gaps are walked: fewer peels.
         mesh = analytic_hexahedra(24)
         points, bounds = mesh.GetPoints(), mesh.GetBounds()
         columns = vtkDoubleArray()
@@ -619,10 +623,14 @@ class SkippingTests(SceneTestCase):
             columns.InsertNextValue(math.cos(4 * math.pi * u) * math.cos(4 * math.pi * v))
         mesh.GetPointData().SetScalars(columns)
         low, high = columns.GetRange()
+        prop = sparse_property(low, high, 0.05, 0.8)
+        short_runs = self.compare(mesh, prop, camera_for(mesh), InvisibleRunLimit=4).GetNumberOfPeels()
+        walked = self.compare(mesh, prop, camera_for(mesh)).GetNumberOfPeels()
+        self.assertGreaterEqual(short_runs, 3, "peels with runs of 4 cells at most")
+        self.assertLess(walked, short_runs, f"peels walking the gaps, against {short_runs}")
         for peels in (1, 2):
             with self.subTest(peels=peels):
-                mapper = self.compare(mesh, sparse_property(low, high, 0.05, 0.8), camera_for(mesh),
-                                      MaximumPeels=peels)
+                mapper = self.compare(mesh, prop, camera_for(mesh), MaximumPeels=peels, InvisibleRunLimit=4)
                 self.assertEqual(mapper.GetNumberOfPeels(), peels)
 
     def test_eye_in_an_invisible_cell(self):
