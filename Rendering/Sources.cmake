@@ -21,7 +21,7 @@ set(uv_rendering_private_headers)
 foreach (header IN ITEMS
     uvBarycentricShell uvCellVisibility uvChebyshevSeries uvCurvedCell uvLatticeBasis uvHexahedralMesh uvHexahedronRay uvVisibleRegion
     uvImageErrorMetrics
-    uvIsosurfaceList uvNonConformingFaces uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry
+    uvIsosurfaceList uvNonConformingFaces uvOpticalModel uvPreIntegration uvProjectedTetrahedron uvRayCellGeometry uvShaderComposer
     uvCoincidentCells uvContentFingerprint uvMeshIntegrity uvFaceAdjacencyOrder uvScalarNormalisation uvScreenRectangle uvShellBuckets uvTetrahedronSegmentTable uvTransferFunctionSimplification uvVisibilitySort
     vtkHexahedralRayCastPrograms vtkPreIntegratedTetrahedraPrograms
     vtkPreIntegratedTetrahedraWalk uvTetrahedralWalk

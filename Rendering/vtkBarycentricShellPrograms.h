@@ -13,15 +13,8 @@
 
 #include "uvBarycentricCellListVS.h"
 #include "uvBarycentricPullVS.h"
-#include "uvBarycentricRayLib.h"
 #include "uvBarycentricShellGS.h"
-#include "uvBarycentricShellRecordLib.h"
-#include "uvBarycentricTetrahedronLib.h"
 #include "uvFullScreenTriangleVS.h"
-#include "uvPhongLib.h"
-#include "uvSegmentIntegrationLib.h"
-#include "uvSegmentLengthTableLib.h"
-#include "uvTransferFunctionLib.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
 #include "vtkOpenGLRenderWindow.h"
@@ -114,13 +107,10 @@ public:
     : Cache(window->GetShaderCache())
     , Defines(std::move(defines))
   {
-    const std::initializer_list<std::pair<const char*, const char*>> tetrahedron = {
-      { "//UV::BarycentricTetrahedron", uvBarycentricTetrahedronLib }
-    };
     this->CellVertex =
-      uvgl::ShaderSource(pulling ? uvBarycentricPullVS : uvBarycentricCellListVS, this->Defines, tetrahedron);
+      uvgl::ShaderSource(pulling ? uvBarycentricPullVS : uvBarycentricCellListVS, this->Defines);
     if (!pulling)
-      this->CellGeometry = uvgl::ShaderSource(uvBarycentricShellGS, this->Defines, tetrahedron);
+      this->CellGeometry = uvgl::ShaderSource(uvBarycentricShellGS, this->Defines);
     this->ScreenVertex = uvgl::ShaderSource(uvFullScreenTriangleVS, this->Defines);
   }
 
@@ -137,10 +127,7 @@ public:
 private:
   vtkShaderProgram* Ready(const std::string& vertex, const char* fragment, const std::string& geometry) const
   {
-    const std::string fragmentSource = uvgl::ShaderSource(fragment, this->Defines,
-      { { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
-        { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib },
-        { "//UV::SegmentLengthTable", uvSegmentLengthTableLib }, { "//UV::ShellRecord", uvBarycentricShellRecordLib } });
+    const std::string fragmentSource = uvgl::ShaderSource(fragment, this->Defines);
     return this->Cache->ReadyShaderProgram(vertex.c_str(), fragmentSource.c_str(), geometry.c_str());
   }
 

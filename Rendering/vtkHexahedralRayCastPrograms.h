@@ -12,15 +12,10 @@
 #ifndef vtkHexahedralRayCastPrograms_h
 #define vtkHexahedralRayCastPrograms_h
 
-#include "uvBilinearFaceLib.h"
-#include "uvEyeRayLib.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvHexahedralEntryFS.h"
 #include "uvHexahedralEntryVS.h"
 #include "uvHexahedralTraverseFS.h"
-#include "uvHexahedronLib.h"
-#include "uvPhongLib.h"
-#include "uvTransferFunctionLib.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
 #include <string>
@@ -50,12 +45,8 @@ struct vtkHexahedralRayCastPrograms
   static uvgl::ProgramSources Entry()
   {
     uvgl::ProgramSources sources;
-    // The hexahedron library holds the eye-ray library's marker: it goes in first.
-    sources.Vertex = uvgl::ShaderSource(
-      uvHexahedralEntryVS, "", { { "//UV::Hexahedron", uvHexahedronLib }, { "//UV::EyeRay", uvEyeRayLib } });
-    sources.Fragment = uvgl::ShaderSource(uvHexahedralEntryFS, "",
-      { { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib },
-        { "//UV::EyeRay", uvEyeRayLib } });
+    sources.Vertex = uvgl::ShaderSource(uvHexahedralEntryVS, "");
+    sources.Fragment = uvgl::ShaderSource(uvHexahedralEntryFS, "");
     return sources;
   }
 
@@ -77,10 +68,7 @@ struct vtkHexahedralRayCastPrograms
       defines += "#define UV_ALL_CELLS_CONVEX\n"; // no bilinear face to solve
     if (options.CellGeometry >= 2)
       defines += "#define UV_ALL_PARALLELEPIPEDS\n"; // no collapsed or curved cell either
-    sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines,
-      { { "//UV::TransferFunction", uvTransferFunctionLib }, { "//UV::Phong", uvPhongLib },
-        { "//UV::BilinearFace", uvBilinearFaceLib }, { "//UV::Hexahedron", uvHexahedronLib },
-        { "//UV::EyeRay", uvEyeRayLib } });
+    sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines);
     return sources;
   }
 

@@ -10,20 +10,11 @@
 #define vtkPreIntegratedTetrahedraPrograms_h
 
 #include "uvBarycentricPullVS.h"
-#include "uvBarycentricRayLib.h"
-#include "uvBarycentricTetrahedronLib.h"
-#include "uvEyeRayLib.h"
 #include "uvFullScreenTriangleVS.h"
-#include "uvPhongLib.h"
 #include "uvPreIntegratedTetrahedraFS.h"
 #include "uvPreIntegratedTetrahedraGS.h"
 #include "uvPreIntegratedTetrahedraVS.h"
-#include "uvProjectedTetrahedronLib.h"
-#include "uvSegmentIntegrationLib.h"
-#include "uvSegmentLengthTableLib.h"
 #include "uvTetrahedralWalkFS.h"
-#include "uvTetrahedralWalkLib.h"
-#include "uvTransferFunctionLib.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
 #include <string>
@@ -79,30 +70,19 @@ struct vtkPreIntegratedTetrahedraPrograms
     {
       // At the far plane: the walk's depth test against the entry depth skips pixels no ray enters.
       sources.Vertex = uvgl::ShaderSource(uvFullScreenTriangleVS, "#define UV_AT_FAR_PLANE\n");
-      sources.Fragment = uvgl::ShaderSource(uvTetrahedralWalkFS, defines,
-        { { "//UV::EyeRay", uvEyeRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
-          { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib },
-          { "//UV::SegmentLengthTable", uvSegmentLengthTableLib },
-          { "//UV::TetrahedralWalk", uvTetrahedralWalkLib } });
+      sources.Fragment = uvgl::ShaderSource(uvTetrahedralWalkFS, defines);
       return sources;
     }
     if (options.VertexPulling)
     {
-      sources.Vertex = uvgl::ShaderSource(
-        uvBarycentricPullVS, defines, { { "//UV::BarycentricTetrahedron", uvBarycentricTetrahedronLib } });
+      sources.Vertex = uvgl::ShaderSource(uvBarycentricPullVS, defines);
     }
     else
     {
-      const std::initializer_list<std::pair<const char*, const char*>> projection = {
-        { "//UV::ProjectedTetrahedron", uvProjectedTetrahedronLib }
-      };
-      sources.Vertex = uvgl::ShaderSource(uvPreIntegratedTetrahedraVS, defines, projection);
-      sources.Geometry = uvgl::ShaderSource(uvPreIntegratedTetrahedraGS, defines, projection);
+      sources.Vertex = uvgl::ShaderSource(uvPreIntegratedTetrahedraVS, defines);
+      sources.Geometry = uvgl::ShaderSource(uvPreIntegratedTetrahedraGS, defines);
     }
-    sources.Fragment = uvgl::ShaderSource(uvPreIntegratedTetrahedraFS, defines,
-      { { "//UV::BarycentricRay", uvBarycentricRayLib }, { "//UV::TransferFunction", uvTransferFunctionLib },
-        { "//UV::Phong", uvPhongLib }, { "//UV::SegmentIntegration", uvSegmentIntegrationLib },
-        { "//UV::SegmentLengthTable", uvSegmentLengthTableLib } });
+    sources.Fragment = uvgl::ShaderSource(uvPreIntegratedTetrahedraFS, defines);
     return sources;
   }
 

@@ -18,12 +18,10 @@
 #ifndef vtkPreIntegratedTetrahedraWalk_h
 #define vtkPreIntegratedTetrahedraWalk_h
 
-#include "uvEyeRayLib.h"
 #include "uvFaceAdjacencyOrder.h"
 #include "uvTetrahedralWalk.h"
 #include "uvTetrahedralWalkEntryFS.h"
 #include "uvTetrahedralWalkEntryVS.h"
-#include "uvTetrahedralWalkLib.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
@@ -190,8 +188,7 @@ public:
   static uvgl::ProgramSources EntrySources()
   {
     return { uvgl::ShaderSource(uvTetrahedralWalkEntryVS, ""),
-      uvgl::ShaderSource(uvTetrahedralWalkEntryFS, "",
-        { { "//UV::EyeRay", uvEyeRayLib }, { "//UV::TetrahedralWalk", uvTetrahedralWalkLib } }),
+      uvgl::ShaderSource(uvTetrahedralWalkEntryFS, ""),
       "" };
   }
 

@@ -8,7 +8,19 @@
 #include "uvCompositePremultipliedFS.h"
 #include "uvFullScreenTriangleVS.h"
 #include "uvOpticalModel.h"
+#include "uvBarycentricRayLib.h"
+#include "uvBarycentricShellRecordLib.h"
+#include "uvBarycentricTetrahedronLib.h"
+#include "uvBilinearFaceLib.h"
+#include "uvEyeRayLib.h"
+#include "uvHexahedronLib.h"
 #include "uvPhongLib.h"
+#include "uvProjectedTetrahedronLib.h"
+#include "uvSegmentIntegrationLib.h"
+#include "uvSegmentLengthTableLib.h"
+#include "uvShaderComposer.h"
+#include "uvTetrahedralWalkLib.h"
+#include "uvTransferFunctionLib.h"
 #include "uvPreIntegration.h"
 
 #include "vtkLight.h"
@@ -338,23 +350,33 @@ inline void SetTransferFunctionUniforms(vtkShaderProgram* program, const std::ve
   program->SetUniformi("psiTable", psiTable->GetTextureUnit());
 }
 
-/// Embedded GLSL made ready to compile: `defines` inserted after VTK's version marker, and each
-/// (marker, library) pair's marker replaced by the library's text.
-inline std::string ShaderSource(const char* source, const std::string& defines,
-  std::initializer_list<std::pair<const char*, const char*>> libraries = {})
+/// Every GLSL library of Shaders/, by the name its marker line gives ("//UV::Name"), with the
+/// libraries whose code it uses.
+inline const std::vector<uv::ShaderLibrary>& ShaderLibraries()
 {
-  std::string text(source);
-  const std::string version = "//VTK::System::Dec\n";
-  const auto at = text.find(version);
-  if (at != std::string::npos)
-    text.insert(at + version.size(), defines);
-  for (const auto& [marker, library] : libraries)
-  {
-    const auto where = text.find(marker);
-    if (where != std::string::npos)
-      text.replace(where, std::string(marker).size(), library);
-  }
-  return text;
+  static const std::vector<uv::ShaderLibrary> libraries = {
+    { "BarycentricRay", uvBarycentricRayLib, {} },
+    { "BarycentricTetrahedron", uvBarycentricTetrahedronLib, {} },
+    { "BilinearFace", uvBilinearFaceLib, {} },
+    { "EyeRay", uvEyeRayLib, {} },
+    { "Hexahedron", uvHexahedronLib, {} }, // holds the eye-ray library's marker where it needs it
+    { "Phong", uvPhongLib, {} },
+    { "ProjectedTetrahedron", uvProjectedTetrahedronLib, {} },
+    { "SegmentIntegration", uvSegmentIntegrationLib, { "TransferFunction", "Phong" } },
+    { "SegmentLengthTable", uvSegmentLengthTableLib, {} },
+    { "ShellRecord", uvBarycentricShellRecordLib, {} },
+    { "TetrahedralWalk", uvTetrahedralWalkLib, {} },
+    { "TransferFunction", uvTransferFunctionLib, {} },
+  };
+  return libraries;
+}
+
+/// Embedded GLSL made ready to compile: `defines` inserted after VTK's version marker, and every
+/// library marker replaced from ShaderLibraries() (uv::ComposeShader; one without a library turns
+/// into an #error that names it).
+inline std::string ShaderSource(const char* source, const std::string& defines)
+{
+  return uv::ComposeShader(source, defines, ShaderLibraries()).Text;
 }
 
 /// The eye rays of uvEyeRayLib.glsl: the near-plane point and the direction (far minus near point)
