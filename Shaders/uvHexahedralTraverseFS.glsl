@@ -1073,11 +1073,6 @@ bool Relocate(vec3 origin, vec3 direction, float t, inout int cell, out float ah
   return located;
 }
 
-/// Walks the ray from parameter t in `cell` (entered through `enterFace`, -1: none) cell by cell,
-/// integrating each, until it is opaque enough, meets opaque geometry (opaqueT), leaves the mesh,
-/// or, with skipping, has crossed more than invisibleCellLimit cells outside the visible region in a
-/// row (the next peel's entry faces pick it up where the region starts again). Returns where the
-/// next peel should pick the ray up (noExit: nowhere).
 /// Where the ray leaves the box [low, high] for good (-noExit where it runs beside the box). No
 /// division by zero: GLSL leaves its result undefined.
 float BoxExit(vec3 origin, vec3 direction, vec3 low, vec3 high)
@@ -1093,6 +1088,12 @@ float BoxExit(vec3 origin, vec3 direction, vec3 low, vec3 high)
   return exitT;
 }
 
+/// Walks the ray from parameter t in `cell` (entered through `enterFace`, -1: none) cell by cell,
+/// integrating each, until it is opaque enough, meets opaque geometry (opaqueT), leaves the mesh,
+/// or, with skipping, has crossed more than invisibleCellLimit cells outside the visible region in a
+/// row (the next peel's entry faces pick it up where the region starts again) or meets an invisible
+/// cell past the visible cells' box. Returns where the next peel should pick the ray up (noExit:
+/// nowhere).
 float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, float t)
 {
   float exitParameter = noExit;
