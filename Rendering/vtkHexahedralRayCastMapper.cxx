@@ -177,7 +177,7 @@ public:
   /// With skipping, the region's cells, one bit each (32 to a word), for the GPU copy.
   const std::vector<std::uint32_t>& VisibleCellBits() const { return this->VisibleBits; }
   bool Skipping() const { return this->Skip; }
-  /// With skipping, a box holding every visible cell (low xyz, high xyz; empty: low above high).
+  /// With skipping, a box holding every visible cell (low xyz, high xyz; none visible: a point).
   const std::array<float, 6>& VisibleBox() const { return this->Box; }
   /// (Before any frame, or after frames handed to the tetrahedra mapper only, none.)
   std::size_t VisibleCells() const
