@@ -4,7 +4,7 @@
 #include "uvPolyhedronSplit.h"
 #include "vtkHigherOrderSubdivision.h"
 #include "vtkUnstructuredVolumeCompatibility.h"
-#include "vtkUnstructuredVolumeMeshIntegrity.h"
+#include "vtkuvMeshIntegrity.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -725,7 +725,7 @@ int vtkHexahedraToTetrahedra::RequestData(
   output->Initialize();
   if (auto* cells = vtkUnstructuredGridBase::SafeDownCast(input))
   {
-    const std::string broken = uvvtk::FindBrokenCellsError(cells, "The output is empty.");
+    const std::string broken = vtkuv::FindBrokenCellsError(cells, "The output is empty.");
     if (!broken.empty())
     {
       vtkErrorMacro(<< broken);

@@ -3,7 +3,7 @@
 #include "uvCellGradient.h"
 #include "uvLinearCellSplit.h"
 #include "uvVertexCellLinks.h"
-#include "vtkUnstructuredVolumeMeshIntegrity.h"
+#include "vtkuvMeshIntegrity.h"
 
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -268,7 +268,7 @@ int vtkVertexGradientFilter::RequestData(
   }
   if (auto* cells = vtkUnstructuredGridBase::SafeDownCast(input))
   {
-    const std::string broken = uvvtk::FindBrokenCellsError(cells, "The output is empty.");
+    const std::string broken = vtkuv::FindBrokenCellsError(cells, "The output is empty.");
     if (!broken.empty())
     {
       vtkErrorMacro(<< broken);

@@ -4,8 +4,8 @@
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
-#include "vtkUnstructuredVolumeScalar.h"
-#include "vtkUnstructuredVolumeVertexGradients.h"
+#include "vtkuvRenderedScalar.h"
+#include "vtkuvVertexGradientCache.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
@@ -186,9 +186,9 @@ vtkImageData* vtkUnstructuredVolumeMapper::GetFloatImage()
 }
 
 bool vtkUnstructuredVolumeMapper::FindScalar(
-  vtkDataSet* data, vtkVolumeProperty* property, uvvtk::RenderedScalar& scalar)
+  vtkDataSet* data, vtkVolumeProperty* property, vtkuv::RenderedScalar& scalar)
 {
-  scalar = uvvtk::FindRenderedScalar(
+  scalar = vtkuv::FindRenderedScalar(
     data, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, property);
   if (!scalar)
   {
@@ -200,7 +200,7 @@ bool vtkUnstructuredVolumeMapper::FindScalar(
 }
 
 bool vtkUnstructuredVolumeMapper::WarnCellScalarLimits(
-  const uvvtk::RenderedScalar& scalar, bool shade, bool facesBetweenCells)
+  const vtkuv::RenderedScalar& scalar, bool shade, bool facesBetweenCells)
 {
   if (!scalar.OnCells)
   {
@@ -429,8 +429,8 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ValueRefreshes: " << this->MeshUpdates.ValueRefreshes << "\n";
 }
 
-void vtkUnstructuredVolumeMapper::UpdateVertexGradients(uvvtk::VertexGradientCache& gradients, vtkDataSet* cells,
-  const uvvtk::RenderedScalar& scalar, std::uint64_t meshVersion)
+void vtkUnstructuredVolumeMapper::UpdateVertexGradients(vtkuv::VertexGradientCache& gradients, vtkDataSet* cells,
+  const vtkuv::RenderedScalar& scalar, std::uint64_t meshVersion)
 {
   bool ignoredArray = false;
   gradients.Update(cells, scalar, meshVersion, this->GradientArrayName, ignoredArray);

@@ -45,7 +45,7 @@ namespace uv
 {
 class IsosurfaceList;
 }
-namespace uvvtk
+namespace vtkuv
 {
 struct RenderedScalar;
 struct VertexGradientCache;
@@ -265,13 +265,13 @@ protected:
   /// The scalar the mapper is set to render on `data`: a point or cell array by scalar mode, array
   /// access, id or name; magnitude or a component by `property`'s colour function (VTK's vector
   /// mode). False after reporting why there is none.
-  bool FindScalar(vtkDataSet* data, vtkVolumeProperty* property, uvvtk::RenderedScalar& scalar);
+  bool FindScalar(vtkDataSet* data, vtkVolumeProperty* property, vtkuv::RenderedScalar& scalar);
 
   /// For a cell scalar (constant in each cell): says once that shading, which needs a field varying
   /// inside cells, is off, and that isosurfaces are not drawn unless the mapper draws a cell scalar's
   /// (`facesBetweenCells`: the faces between cells on either side of the value). Returns true when
   /// the scalar is on cells.
-  bool WarnCellScalarLimits(const uvvtk::RenderedScalar& scalar, bool shade, bool facesBetweenCells);
+  bool WarnCellScalarLimits(const vtkuv::RenderedScalar& scalar, bool shade, bool facesBetweenCells);
 
   ///@{
   /// Delegation: a mapper that hands some inputs to a mapper of another kind, which draws them
@@ -307,8 +307,8 @@ protected:
 
   /// Brings `gradients` to the mesh of version `meshVersion`, built from `cells` and its rendered
   /// `scalar`: GradientArrayName's array, else computed. Warns when that array has not 3 components.
-  void UpdateVertexGradients(uvvtk::VertexGradientCache& gradients, vtkDataSet* cells,
-    const uvvtk::RenderedScalar& scalar, std::uint64_t meshVersion);
+  void UpdateVertexGradients(vtkuv::VertexGradientCache& gradients, vtkDataSet* cells,
+    const vtkuv::RenderedScalar& scalar, std::uint64_t meshVersion);
 
   bool KeepFloatImage = false;
   double ImageSampleDistance = 1.0;

@@ -1,5 +1,5 @@
 // vtkUnstructuredVolumeReferenceRenderer against closed forms and against itself.
-#include "vtkUnstructuredVolumeTransferFunction.h"
+#include "vtkuvNormalisedTransferFunction.h"
 #include "uvTestMeshChecks.h"
 #include "vtkAnalyticMeshSource.h"
 #include "vtkHexahedraToTetrahedra.h"
@@ -422,7 +422,7 @@ TEST(ReferenceRenderer, CurvedTransferFunctionsAreFollowedWithNodesWhereTheyBend
   opacity->AddPoint(1.0, 0.4);
   property->SetColor(colors);
   property->SetScalarOpacity(opacity);
-  EXPECT_EQ(uvvtk::TransferFunctionNodes(property).size(), 4u); // RGB: the nodes' union alone
+  EXPECT_EQ(vtkuv::TransferFunctionNodes(property).size(), 4u); // RGB: the nodes' union alone
 
   colors->SetColorSpaceToDiverging();
   auto colourError = [&](const std::vector<uv::TransferFunction::Node>& nodes) {
@@ -438,9 +438,9 @@ TEST(ReferenceRenderer, CurvedTransferFunctionsAreFollowedWithNodesWhereTheyBend
     }
     return worst;
   };
-  const auto uniform = uvvtk::TransferFunctionNodes(property, 32, 0.0); // every interval in 32
-  const auto adaptive = uvvtk::TransferFunctionNodes(property);         // tolerance 2e-3
-  const auto finer = uvvtk::TransferFunctionNodes(property, 32, 1e-4);
+  const auto uniform = vtkuv::TransferFunctionNodes(property, 32, 0.0); // every interval in 32
+  const auto adaptive = vtkuv::TransferFunctionNodes(property);         // tolerance 2e-3
+  const auto finer = vtkuv::TransferFunctionNodes(property, 32, 1e-4);
   std::printf("Diverging colour map: uniform %zu nodes, error %.2e; adaptive %zu nodes, error %.2e; "
               "tolerance 1e-4: %zu nodes\n", uniform.size(), colourError(uniform), adaptive.size(),
     colourError(adaptive), finer.size());

@@ -9,7 +9,7 @@
 #ifndef vtkBarycentricShellCellProjectionPass_h
 #define vtkBarycentricShellCellProjectionPass_h
 
-#include "vtkBarycentricShellCellDrawer.h"
+#include "vtkUnstructuredVolumeCellDrawer.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 
 #include "vtkOpenGLRenderWindow.h"
@@ -31,7 +31,7 @@ public:
   }
 
   /// Draws the first `count` tetrahedra of the order with `program` (bound, its uniforms set).
-  void Run(vtkOpenGLState* state, vtkShaderProgram* program, vtkBarycentricShellCellDrawer& drawer, std::size_t count)
+  void Run(vtkOpenGLState* state, vtkShaderProgram* program, vtkUnstructuredVolumeCellDrawer& drawer, std::size_t count)
   {
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);

@@ -1,7 +1,7 @@
 // The mesh checks of uvMeshIntegrity.h on a VTK grid: the one error a mapper, the reference or a
 // filter gives for a mesh whose ids or coordinates cannot be used, before anything reads through them.
-#ifndef vtkUnstructuredVolumeMeshIntegrity_h
-#define vtkUnstructuredVolumeMeshIntegrity_h
+#ifndef vtkuvMeshIntegrity_h
+#define vtkuvMeshIntegrity_h
 
 #include "uvMeshIntegrity.h"
 #include "vtkUnstructuredVolumeCompatibility.h"
@@ -27,7 +27,7 @@
 #include <sstream>
 #include <string>
 
-namespace uvvtk
+namespace vtkuv
 {
 namespace integrity
 {
@@ -245,6 +245,6 @@ inline std::string IndexRangeError(const char* what, std::int64_t count, std::in
   return error.str();
 }
 
-} // namespace uvvtk
+} // namespace vtkuv
 
 #endif

@@ -2,8 +2,8 @@
 // array selection pick a point or a cell array (vtkAbstractMapper::GetScalars), and the colour
 // transfer function's vector mode picks what of a multi-component array is rendered: its magnitude or
 // one component (ParaView's "Magnitude" / "X" entries set exactly that). Reads VTK data only.
-#ifndef vtkUnstructuredVolumeScalar_h
-#define vtkUnstructuredVolumeScalar_h
+#ifndef vtkuvRenderedScalar_h
+#define vtkuvRenderedScalar_h
 
 #include "vtkAbstractMapper.h"
 #include "vtkColorTransferFunction.h"
@@ -18,7 +18,7 @@
 #include <cmath>
 #include <string>
 
-namespace uvvtk
+namespace vtkuv
 {
 
 struct RenderedScalar
@@ -109,6 +109,6 @@ inline RenderedScalar FindRenderedScalar(vtkDataSet* data, int scalarMode, int a
   return scalar;
 }
 
-} // namespace uvvtk
+} // namespace vtkuv
 
 #endif

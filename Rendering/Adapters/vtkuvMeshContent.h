@@ -2,11 +2,11 @@
 // (a reader's next time step of a static mesh) are recognised as no change, and a time step tells
 // which of cells, points and values changed. Same array and modification time: unchanged at no cost;
 // otherwise its bytes are fingerprinted (uvContentFingerprint.h).
-#ifndef vtkUnstructuredVolumeMeshContent_h
-#define vtkUnstructuredVolumeMeshContent_h
+#ifndef vtkuvMeshContent_h
+#define vtkuvMeshContent_h
 
 #include "uvContentFingerprint.h"
-#include "vtkUnstructuredVolumeScalar.h"
+#include "vtkuvRenderedScalar.h"
 #include "vtkUnstructuredVolumeCompatibility.h"
 
 #include "vtkCellArray.h"
@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <string>
 
-namespace uvvtk
+namespace vtkuv
 {
 
 class ArrayContent
@@ -142,6 +142,6 @@ private:
   vtkMTimeType OtherTime = 0;
 };
 
-} // namespace uvvtk
+} // namespace vtkuv
 
 #endif

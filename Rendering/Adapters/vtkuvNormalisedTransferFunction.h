@@ -1,7 +1,7 @@
 // The project's transfer function (uvOpticalModel.h) from a vtkVolumeProperty: one place, so the
 // reference renderer and every mapper read a property the same way.
-#ifndef vtkUnstructuredVolumeTransferFunction_h
-#define vtkUnstructuredVolumeTransferFunction_h
+#ifndef vtkuvNormalisedTransferFunction_h
+#define vtkuvNormalisedTransferFunction_h
 
 #include "uvOpticalModel.h"
 #include "uvTransferFunctionSimplification.h"
@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-namespace uvvtk
+namespace vtkuv
 {
 
 /// Nodes: the union of the colour and opacity nodes. Where VTK's functions are not linear between
@@ -212,6 +212,6 @@ private:
   double Offset = std::numeric_limits<double>::quiet_NaN(), Scale = std::numeric_limits<double>::quiet_NaN();
 };
 
-} // namespace uvvtk
+} // namespace vtkuv
 
 #endif

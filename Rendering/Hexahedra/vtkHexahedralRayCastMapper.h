@@ -19,7 +19,8 @@
  * - ACCURATE: Gauss-Legendre on each piece, exact optical depth (the paper's Hexa_ACC);
  * - FAST: the scalar linear between split points, pre-integrated with the Psi table (Hexa_FAST);
  * - FIXED_STEPS: FixedSteps constant steps per cell (Hexa_CONST), for comparison.
- * The math is uvHexahedronRay.h (unit-tested); Shaders/uvHexahedralTraverseFS.glsl is its GPU twin.
+ * The math is uvHexahedronRay.h (unit-tested); Shaders/Hexahedra/uvHexahedralTraverseFS.glsl is its GPU
+ * twin.
  *
  * Isosurfaces (any number, each with a colour and opacity) are further split points: where the
  * cubic crosses an isovalue the surface is composited, Phong-lit from the vtkVolumeProperty and the
@@ -191,9 +192,9 @@ private:
   vtkHexahedralRayCastMapper(const vtkHexahedralRayCastMapper&) = delete;
   void operator=(const vtkHexahedralRayCastMapper&) = delete;
 
-  bool UpdateMesh(vtkDataSet* input, const uvvtk::RenderedScalar& scalar);
+  bool UpdateMesh(vtkDataSet* input, const vtkuv::RenderedScalar& scalar);
   bool UpdateTransferFunction(vtkVolumeProperty* property);
-  bool HandsOver(vtkDataSet* input, const uvvtk::RenderedScalar& scalar);
+  bool HandsOver(vtkDataSet* input, const vtkuv::RenderedScalar& scalar);
 
   class Internals;
   std::unique_ptr<Internals> Impl;

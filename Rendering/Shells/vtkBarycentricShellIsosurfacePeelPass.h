@@ -11,7 +11,7 @@
 #ifndef vtkBarycentricShellIsosurfacePeelPass_h
 #define vtkBarycentricShellIsosurfacePeelPass_h
 
-#include "vtkBarycentricShellCellDrawer.h"
+#include "vtkUnstructuredVolumeCellDrawer.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 
@@ -64,7 +64,7 @@ public:
   /// returns the layers that found a crossing and adds the tetrahedra drawn to `drawn`. Calls
   /// `checkGLErrors(pass)` after each layer (the mapper's GL-error debug mode).
   template <typename CheckGLErrors>
-  int Run(vtkOpenGLState* state, vtkShaderProgram* program, vtkBarycentricShellCellDrawer& drawer, std::size_t cells,
+  int Run(vtkOpenGLState* state, vtkShaderProgram* program, vtkUnstructuredVolumeCellDrawer& drawer, std::size_t cells,
     vtkIdType& drawn, const CheckGLErrors& checkGLErrors)
   {
     this->PreviousLayer->Activate();

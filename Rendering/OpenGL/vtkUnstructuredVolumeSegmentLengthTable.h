@@ -16,7 +16,7 @@
 #define vtkUnstructuredVolumeSegmentLengthTable_h
 
 #include "uvTetrahedronSegmentTable.h"
-#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+#include "vtkuvTetrahedralMesh.h"
 #include "vtkUnstructuredVolumeTexture3D.h"
 
 #include "vtkSMPThreadLocal.h"
@@ -39,7 +39,7 @@ public:
 
   /// Brings the table up to date with `nodes` and the longest segment `mesh` can hold in eye space;
   /// false (nothing built) for a mesh without extent.
-  bool Update(const uvvtk::TetrahedralMesh& mesh, const std::vector<uv::TransferFunction::Node>& nodes,
+  bool Update(const vtkuv::TetrahedralMesh& mesh, const std::vector<uv::TransferFunction::Node>& nodes,
     const glm::dmat4& modelToEye)
   {
     this->UpdateLongestEdge(mesh);
@@ -87,7 +87,7 @@ public:
   void Release() { this->Texture.Release(); }
 
 private:
-  void UpdateLongestEdge(const uvvtk::TetrahedralMesh& mesh)
+  void UpdateLongestEdge(const vtkuv::TetrahedralMesh& mesh)
   {
     if (this->LongestEdgeFor == mesh.Version)
       return;

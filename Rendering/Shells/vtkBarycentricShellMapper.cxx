@@ -15,7 +15,7 @@
 #include "vtkBarycentricShellBlendPass.h"
 #include "vtkBarycentricShellSegmentTable.h"
 #include "vtkUnstructuredVolumeSegmentLengthTable.h"
-#include "vtkBarycentricShellCellDrawer.h"
+#include "vtkUnstructuredVolumeCellDrawer.h"
 #include "vtkBarycentricShellCellProjectionPass.h"
 #include "vtkBarycentricShellImageTexture.h"
 #include "vtkBarycentricShellIsosurfacePeelPass.h"
@@ -27,9 +27,9 @@
 #include "vtkUnstructuredVolumeFrame.h"
 #include "vtkUnstructuredVolumeOpacityMask.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
-#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+#include "vtkuvTetrahedralMesh.h"
 #include "vtkUnstructuredVolumeTexture.h"
-#include "vtkUnstructuredVolumeTransferFunction.h"
+#include "vtkuvNormalisedTransferFunction.h"
 #include "vtkUnstructuredVolumeTransferFunctionTexture.h"
 
 #include "vtkImageData.h"
@@ -99,13 +99,13 @@ public:
   vtkBarycentricShellMapper* Self; // reports the GL errors of its passes (the debug mode)
 
   // ---- CPU state, each piece versioned (or compared exactly) for its GPU copy.
-  uvvtk::TetrahedralMesh Mesh;
-  uvvtk::NormalisedTransferFunction TransferFunction;
+  vtkuv::TetrahedralMesh Mesh;
+  vtkuv::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
   std::vector<double> Isovalues;
   uv::CellLists Lists;
-  uvvtk::VertexGradientCache Gradients;
-  uvvtk::VisibilityOrder Order; // cell projection
+  vtkuv::VertexGradientCache Gradients;
+  vtkuv::VisibilityOrder Order; // cell projection
   vtkUnstructuredVolumeSegmentLengthTable LengthTable; // cell projection's whole segments
   std::vector<glm::vec3> EyePoints;
   std::vector<glm::vec2> ScreenPoints; // normalised device coordinates (NaN: not in front of the eye)
@@ -128,7 +128,7 @@ public:
     vtkMTimeType Time = 0;
     std::uint64_t MeshVersion = 0, Version = 0;
   } Coordinates; // where the mesh's texture coordinates come from, and their version
-  uvvtk::MeshWarnings Warned;
+  vtkuv::MeshWarnings Warned;
   WarningsGiven Warnings;
   uv::TetrahedronFaceNeighbours CellSurfaces; // per tetrahedron, for a cell scalar's surfaces
   std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
@@ -155,7 +155,7 @@ public:
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
   vtkBarycentricShellImageTexture Image;
-  vtkBarycentricShellCellDrawer Cells;
+  vtkUnstructuredVolumeCellDrawer Cells;
   vtkBarycentricShellOpaqueDistancePass Opaque;
   vtkBarycentricShellIsosurfacePeelPass Peel;
   vtkBarycentricShellSlicePass Slices;
@@ -246,20 +246,20 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(
     return false;
   }
   this->Now.Textured = image != nullptr;
-  uvvtk::RenderedScalar scalar;
+  vtkuv::RenderedScalar scalar;
   if (this->Now.Textured)
   {
     // Any point array carries the mesh through the split: the texture coordinates will do.
-    scalar = uvvtk::FindRenderedScalar(input, self->GetScalarMode(), self->GetArrayAccessMode(),
+    scalar = vtkuv::FindRenderedScalar(input, self->GetScalarMode(), self->GetArrayAccessMode(),
       self->GetArrayId(), self->GetArrayName(), nullptr);
     if (!scalar || scalar.OnCells)
-      scalar = uvvtk::RenderedScalar{ this->TextureCoordinates, false, 0 };
+      scalar = vtkuv::RenderedScalar{ this->TextureCoordinates, false, 0 };
   }
   else if (!self->FindScalar(input, frame.Property, scalar))
   {
     return false;
   }
-  uvvtk::TetrahedralMesh::Change change;
+  vtkuv::TetrahedralMesh::Change change;
   const std::string error =
     this->Mesh.Update(input, scalar, [self](double progress) { self->UpdateProgress(progress); }, change);
   self->MeshUpdates = { this->Mesh.Builds, this->Mesh.PointRefreshes, this->Mesh.ValueRefreshes };
@@ -268,12 +268,12 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(
     vtkErrorWithObjectMacro(self, << error);
     return false;
   }
-  if (change == uvvtk::TetrahedralMesh::Change::All)
+  if (change == vtkuv::TetrahedralMesh::Change::All)
   {
     for (const std::string& warning : this->Warned.New(this->Mesh, input->GetNumberOfCells()))
       vtkWarningWithObjectMacro(self, << warning);
   }
-  if (change == uvvtk::TetrahedralMesh::Change::All)
+  if (change == vtkuv::TetrahedralMesh::Change::All)
     this->Order.Invalidate(); // new cells (the order sees moved points itself)
   return this->Mesh.Size() > 0;
 }
@@ -359,7 +359,7 @@ bool vtkBarycentricShellMapper::Internals::UpdateLists(vtkBarycentricShellMapper
   const bool widened = this->Now.CellSurfaces;
   if (this->Lists.Update(2 * this->Mesh.CellsVersion + (widened ? 1 : 0),
         widened ? this->CellSurfaces.Low : this->Mesh.ScalarLow,
-        widened ? this->CellSurfaces.High : this->Mesh.ScalarHigh, zeroSet, this->Isovalues, uvvtk::ParallelFor))
+        widened ? this->CellSurfaces.High : this->Mesh.ScalarHigh, zeroSet, this->Isovalues, vtkuv::ParallelFor))
     this->Order.Invalidate();
   return !this->Lists.Drawn.empty();
 }
@@ -412,7 +412,7 @@ bool vtkBarycentricShellMapper::Internals::UpdateShells(
   this->EyePoints.resize(pointCount);
   this->ScreenPoints.resize(pointCount);
   const glm::mat4 toEye(frame.ModelToEye(this->Mesh.Center)), toClip(frame.EyeToClip);
-  uvvtk::ParallelFor(pointCount, [&](std::size_t begin, std::size_t end) {
+  vtkuv::ParallelFor(pointCount, [&](std::size_t begin, std::size_t end) {
     for (std::size_t p = begin; p < end; ++p)
     {
       const float* x = &this->Mesh.PointData[4 * p];
@@ -432,9 +432,9 @@ bool vtkBarycentricShellMapper::Internals::UpdateShells(
       [this](std::uint32_t cell) { return this->Densities[cell] > 0.0f; });
     volume = &this->ShellCells;
   }
-  this->VolumeRanges.Update(*volume, tetrahedra, this->EyePoints, frame.Parallel, uvvtk::ParallelFor);
+  this->VolumeRanges.Update(*volume, tetrahedra, this->EyePoints, frame.Parallel, vtkuv::ParallelFor);
   this->IsosurfaceRanges.Update(
-    this->Lists.Isosurface, tetrahedra, this->EyePoints, frame.Parallel, uvvtk::ParallelFor);
+    this->Lists.Isosurface, tetrahedra, this->EyePoints, frame.Parallel, vtkuv::ParallelFor);
   if (!uv::LayoutShells(this->VolumeRanges, this->IsosurfaceRanges, this->Now.SampleDistance, self->SlicesPerShell,
         MaximumShells, this->Layout))
   {

@@ -53,7 +53,7 @@ class IsosurfaceList;
 class vtkDataSet;
 class vtkImageData;
 class vtkVolumeProperty;
-namespace uvvtk
+namespace vtkuv
 {
 struct RenderedScalar;
 }
@@ -132,7 +132,7 @@ protected:
 
 private:
   uv::IsosurfaceList* Isosurfaces;
-  uvvtk::RenderedScalar FindScalar(vtkDataSet* input);
+  vtkuv::RenderedScalar FindScalar(vtkDataSet* input);
 
   vtkUnstructuredVolumeReferenceRenderer(const vtkUnstructuredVolumeReferenceRenderer&) = delete;
   void operator=(const vtkUnstructuredVolumeReferenceRenderer&) = delete;

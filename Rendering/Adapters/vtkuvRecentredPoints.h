@@ -1,13 +1,13 @@
 // The points of any vtkDataSet as the mappers upload them, 4 floats each: the position relative to the
 // centre of the bounds, subtracted in double before the conversion to float (so meshes far from the
-// origin keep their precision), and the rendered scalar (vtkUnstructuredVolumeScalar.h) normalised
+// origin keep their precision), and the rendered scalar (vtkuvRenderedScalar.h) normalised
 // over its finite values (uvScalarNormalisation.h): with the points, or per cell for cell data.
 // Reads VTK data; the mappers' GPU code is elsewhere.
-#ifndef vtkUnstructuredVolumePointData_h
-#define vtkUnstructuredVolumePointData_h
+#ifndef vtkuvRecentredPoints_h
+#define vtkuvRecentredPoints_h
 
 #include "uvScalarNormalisation.h"
-#include "vtkUnstructuredVolumeScalar.h"
+#include "vtkuvRenderedScalar.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -17,7 +17,7 @@
 
 #include <vector>
 
-namespace uvvtk
+namespace vtkuv
 {
 
 struct RecentredPoints
@@ -74,6 +74,6 @@ struct RecentredPoints
   }
 };
 
-} // namespace uvvtk
+} // namespace vtkuv
 
 #endif

@@ -1,10 +1,10 @@
 // The tetrahedra of a mapper's input as the tetrahedral mappers upload them (vtkPreIntegratedTetrahedra-
 // Mapper, vtkBarycentricShellMapper): other linear cells split, a normalised scalar, recentred float
 // positions, per-tetrahedron scalar ranges and centroids; the cells the transfer function makes
-// invisible (vertex gradients: vtkUnstructuredVolumeVertexGradients.h). Reads VTK data; the mappers'
+// invisible (vertex gradients: vtkuvVertexGradientCache.h). Reads VTK data; the mappers'
 // GPU code is elsewhere.
-#ifndef vtkUnstructuredVolumeTetrahedralMesh_h
-#define vtkUnstructuredVolumeTetrahedralMesh_h
+#ifndef vtkuvTetrahedralMesh_h
+#define vtkuvTetrahedralMesh_h
 
 #include "uvBoundaryGapOrder.h"
 #include "uvCellVisibility.h"
@@ -13,11 +13,11 @@
 #include "uvHexahedralMesh.h"
 #include "uvOpticalModel.h"
 #include "uvVisibilitySort.h"
-#include "vtkUnstructuredVolumeMeshContent.h"
-#include "vtkUnstructuredVolumeMeshIntegrity.h"
-#include "vtkUnstructuredVolumePointData.h"
-#include "vtkUnstructuredVolumeScalar.h"
-#include "vtkUnstructuredVolumeVertexGradients.h"
+#include "vtkuvMeshContent.h"
+#include "vtkuvMeshIntegrity.h"
+#include "vtkuvRecentredPoints.h"
+#include "vtkuvRenderedScalar.h"
+#include "vtkuvVertexGradientCache.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkCellArray.h"
@@ -44,7 +44,7 @@
 #include <utility>
 #include <vector>
 
-namespace uvvtk
+namespace vtkuv
 {
 
 /// vtkSMPTools::For over [0, count) in the (begin, end) form the VTK-free helpers take.
@@ -669,6 +669,6 @@ private:
   std::uint64_t PositionsFor = 0; // the mesh's PositionsVersion sorted for
 };
 
-} // namespace uvvtk
+} // namespace vtkuv
 
 #endif

@@ -5,7 +5,7 @@
 #include "uvIsosurfaceList.h"
 #include "uvOpacityMaskFS.h"
 #include "uvFullScreenTriangleVS.h"
-#include "vtkBarycentricShellCellDrawer.h"
+#include "vtkUnstructuredVolumeCellDrawer.h"
 #include "vtkPreIntegratedTetrahedraPrograms.h"
 #include "vtkPreIntegratedTetrahedraWalk.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
@@ -14,10 +14,10 @@
 #include "vtkUnstructuredVolumeIndexBuffer.h"
 #include "vtkUnstructuredVolumeOpacityMask.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
-#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+#include "vtkuvTetrahedralMesh.h"
 #include "vtkUnstructuredVolumeTexture.h"
 #include "vtkUnstructuredVolumeSegmentLengthTable.h"
-#include "vtkUnstructuredVolumeTransferFunction.h"
+#include "vtkuvNormalisedTransferFunction.h"
 #include "vtkUnstructuredVolumeTransferFunctionTexture.h"
 
 #include "vtkObjectFactory.h"
@@ -108,14 +108,14 @@ class vtkPreIntegratedTetrahedraMapper::Internals
 {
 public:
   // CPU state, each piece versioned for the GPU copies below.
-  uvvtk::TetrahedralMesh Mesh;
-  uvvtk::VertexGradientCache Gradients;
-  uvvtk::NormalisedTransferFunction TransferFunction;
+  vtkuv::TetrahedralMesh Mesh;
+  vtkuv::VertexGradientCache Gradients;
+  vtkuv::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
   std::vector<double> Isovalues;
   uv::CellLists Visible;
-  uvvtk::VisibilityOrder Order;
-  uvvtk::MeshWarnings Warned;
+  vtkuv::VisibilityOrder Order;
+  vtkuv::MeshWarnings Warned;
   bool NeedGradients = false, Shade = false;
   // A cell scalar's isosurfaces (faces between cells): per tetrahedron the values across its faces,
   // and its scalar range widened to them, so a transparent tetrahedron whose front face holds a
@@ -133,7 +133,7 @@ public:
   // GPU state.
   vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, DrawOrder, NeighbourValues;
   vtkUnstructuredVolumeIndexBuffer OrderIndices; // geometry-shader route: one point per tetrahedron
-  vtkBarycentricShellCellDrawer Faces;            // vertex pulling: the faces of the draw order
+  vtkUnstructuredVolumeCellDrawer Faces;            // vertex pulling: the faces of the draw order
   vtkUnstructuredVolumeTransferFunctionTexture Nodes;
   vtkUnstructuredVolumeTexture Isosurfaces;
   vtkUnstructuredVolumeOpacityMask Mask;
@@ -238,7 +238,7 @@ public:
       return Clipping::None;
     const std::vector<float>& points = this->Mesh.PointData;
     std::atomic<bool> allInside(true);
-    uvvtk::ParallelFor(points.size() / 4, [&](std::size_t begin, std::size_t end) {
+    vtkuv::ParallelFor(points.size() / 4, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end && allInside.load(std::memory_order_relaxed); ++i)
         if (!inside(glm::dvec3(points[4 * i], points[4 * i + 1], points[4 * i + 2])))
           allInside = false;
@@ -264,7 +264,7 @@ public:
     const bool widened = this->DrawCellSurfaces;
     if (this->Visible.Update(2 * this->Mesh.CellsVersion + (widened ? 1 : 0),
           widened ? this->CellSurfaces.Low : this->Mesh.ScalarLow,
-          widened ? this->CellSurfaces.High : this->Mesh.ScalarHigh, zeroSet, this->Isovalues, uvvtk::ParallelFor))
+          widened ? this->CellSurfaces.High : this->Mesh.ScalarHigh, zeroSet, this->Isovalues, vtkuv::ParallelFor))
       this->Order.Invalidate();
   }
 
@@ -398,12 +398,12 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   // The mesh, when the input or its scalar changed.
   vtkUnstructuredGridBase* input = this->GetInput();
   vtkVolumeProperty* property = frame.Property;
-  uvvtk::RenderedScalar scalar;
+  vtkuv::RenderedScalar scalar;
   if (!this->FindScalar(input, property, scalar))
   {
     return false;
   }
-  uvvtk::TetrahedralMesh::Change change;
+  vtkuv::TetrahedralMesh::Change change;
   const std::string error =
     impl.Mesh.Update(input, scalar, [this](double progress) { this->UpdateProgress(progress); }, change);
   this->MeshUpdates = { impl.Mesh.Builds, impl.Mesh.PointRefreshes, impl.Mesh.ValueRefreshes };
@@ -412,9 +412,9 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
     vtkErrorMacro(<< error);
     return false;
   }
-  if (change == uvvtk::TetrahedralMesh::Change::All)
+  if (change == vtkuv::TetrahedralMesh::Change::All)
     impl.Order.Invalidate(); // moved points it sees itself; new values change it only through the list
-  if (change != uvvtk::TetrahedralMesh::Change::Nothing)
+  if (change != vtkuv::TetrahedralMesh::Change::Nothing)
   {
     for (const std::string& warning : impl.Warned.New(impl.Mesh, input->GetNumberOfCells()))
       vtkWarningMacro(<< warning);

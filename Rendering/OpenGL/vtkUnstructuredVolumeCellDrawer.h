@@ -1,5 +1,5 @@
 /**
- * @class vtkBarycentricShellCellDrawer
+ * @class vtkUnstructuredVolumeCellDrawer
  * @brief Draws the tetrahedra at a range of places of a cell list, by vtkBarycentricShellMapper's
  * chosen route (and vtkPreIntegratedTetrahedraMapper's vertex-pulling route).
  *
@@ -10,8 +10,8 @@
  * place rides in a uniform, so one pattern of ChunkSize tetrahedra serves every chunk of every list.
  * Owns that pattern. (OpenGL layer of the tetrahedral mappers; not wrapped.)
  */
-#ifndef vtkBarycentricShellCellDrawer_h
-#define vtkBarycentricShellCellDrawer_h
+#ifndef vtkUnstructuredVolumeCellDrawer_h
+#define vtkUnstructuredVolumeCellDrawer_h
 
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeIndexBuffer.h"
@@ -25,7 +25,7 @@
 #include <cstdint>
 #include <vector>
 
-class vtkBarycentricShellCellDrawer
+class vtkUnstructuredVolumeCellDrawer
 {
 public:
   static constexpr int ChunkSize = 16384; // tetrahedra per draw of the vertex-pulling route

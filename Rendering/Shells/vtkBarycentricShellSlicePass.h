@@ -10,7 +10,7 @@
 #ifndef vtkBarycentricShellSlicePass_h
 #define vtkBarycentricShellSlicePass_h
 
-#include "vtkBarycentricShellCellDrawer.h"
+#include "vtkUnstructuredVolumeCellDrawer.h"
 #include "vtkBarycentricShellPrograms.h"
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
@@ -72,7 +72,7 @@ public:
 
   /// Clears the slices to "outside", then draws the `count` cells at list place `first` into them.
   void Run(vtkOpenGLState* state, const vtkBarycentricShellPrograms& programs, vtkShaderProgram* program,
-    vtkBarycentricShellCellDrawer& drawer, std::uint32_t first, std::uint32_t count, float shellStart)
+    vtkUnstructuredVolumeCellDrawer& drawer, std::uint32_t first, std::uint32_t count, float shellStart)
   {
     this->BindTargets();
     state->vtkglClear(GL_COLOR_BUFFER_BIT);

@@ -7,12 +7,12 @@
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
-#include "vtkUnstructuredVolumeHexahedralMesh.h"
+#include "vtkuvHexahedralMesh.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 #include "vtkUnstructuredVolumeTexture.h"
-#include "vtkUnstructuredVolumeTransferFunction.h"
+#include "vtkuvNormalisedTransferFunction.h"
 #include "vtkUnstructuredVolumeTransferFunctionTexture.h"
-#include "vtkUnstructuredVolumeVertexGradients.h"
+#include "vtkuvVertexGradientCache.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -68,7 +68,7 @@ void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& m)
 class RayStartCell
 {
 public:
-  int Update(const uvvtk::HexahedralMesh& mesh, bool perspective, const glm::dvec3& eye, const glm::dvec3& nearCentre)
+  int Update(const vtkuv::HexahedralMesh& mesh, bool perspective, const glm::dvec3& eye, const glm::dvec3& nearCentre)
   {
     if (mesh.Version != this->MeshVersion || perspective != this->Perspective || eye != this->Eye ||
       nearCentre != this->NearCentre)
@@ -95,7 +95,7 @@ private:
 
   /// Whether `x` (recentred, as the cells' corners) lies in the box of the mesh's points, widened by
   /// more than the rounding of their recentred float copies.
-  static bool InBox(const uvvtk::HexahedralMesh& mesh, const glm::dvec3& x)
+  static bool InBox(const vtkuv::HexahedralMesh& mesh, const glm::dvec3& x)
   {
     const double* b = mesh.Points.Bounds;
     const glm::dvec3 low(b[0], b[2], b[4]), high(b[1], b[3], b[5]);
@@ -116,14 +116,14 @@ public:
   int RegionBuilds = 0;
 
   /// True when the faces changed.
-  bool Update(const uvvtk::HexahedralMesh& mesh, bool skip, const std::vector<uv::TransferFunction::Node>& nodes,
+  bool Update(const vtkuv::HexahedralMesh& mesh, bool skip, const std::vector<uv::TransferFunction::Node>& nodes,
     const std::vector<uv::Isosurface>& isosurfaces)
   {
     const bool widen = !mesh.CellScalars.empty() && !isosurfaces.empty();
     if (skip && (mesh.Version != this->RangesMeshVersion || widen != this->RangesWidened))
     {
       uv::HexahedralCellRanges(mesh.CellPoints, mesh.Points.Values, mesh.CellScalars, mesh.Faces.Neighbours, widen,
-        this->Low, this->High, uvvtk::ParallelFor);
+        this->Low, this->High, vtkuv::ParallelFor);
       this->RangesMeshVersion = mesh.Version;
       this->RangesWidened = widen;
       this->Classified = false;
@@ -140,7 +140,7 @@ public:
     if (skip && (!this->Classified || this->Visible.empty() || zeroSet != this->ZeroSet || isovalues != this->Isovalues))
     {
       std::vector<unsigned char> visible =
-        uv::VisibleCells(this->Low, this->High, zeroSet, isovalues, uvvtk::ParallelFor);
+        uv::VisibleCells(this->Low, this->High, zeroSet, isovalues, vtkuv::ParallelFor);
       this->Box = uv::BoxOfCells(mesh.CellPoints, mesh.Points.Values, visible);
       this->ZeroSet = std::move(zeroSet);
       this->Isovalues = std::move(isovalues);
@@ -186,7 +186,7 @@ public:
   }
 
 private:
-  const uvvtk::HexahedralMesh* Mesh = nullptr;
+  const vtkuv::HexahedralMesh* Mesh = nullptr;
   bool Skip = false;
   std::uint64_t MeshCellsVersion = 0, RangesMeshVersion = 0;
   bool RangesWidened = false, Classified = false;
@@ -503,10 +503,10 @@ public:
   vtkHexahedralRayCastMapper* Self; // reports the GL errors of its passes (the debug mode)
 
   // CPU state, versioned for the GPU copies.
-  uvvtk::HexahedralMesh Mesh;
-  uvvtk::VertexGradientCache Gradients;
+  vtkuv::HexahedralMesh Mesh;
+  vtkuv::VertexGradientCache Gradients;
   bool NeedGradients = false; // this frame lights isosurfaces with vertex gradients
-  uvvtk::NormalisedTransferFunction TransferFunction;
+  vtkuv::NormalisedTransferFunction TransferFunction;
   std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
   EntryFaces Entries;
   RayStartCell Start;
@@ -681,9 +681,9 @@ void vtkHexahedralRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DelegateTetrahedralMeshes: " << this->DelegateTetrahedralMeshes << "\n";
 }
 
-bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
+bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const vtkuv::RenderedScalar& scalar)
 {
-  uvvtk::HexahedralMesh& mesh = this->Impl->Mesh;
+  vtkuv::HexahedralMesh& mesh = this->Impl->Mesh;
   bool built = false;
   const std::string error =
     mesh.Update(input, scalar, [this](double progress) { this->UpdateProgress(progress); }, built);
@@ -730,7 +730,7 @@ bool vtkHexahedralRayCastMapper::UpdateTransferFunction(vtkVolumeProperty* prope
   return true;
 }
 
-bool vtkHexahedralRayCastMapper::HandsOver(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
+bool vtkHexahedralRayCastMapper::HandsOver(vtkDataSet* input, const vtkuv::RenderedScalar& scalar)
 {
   if (!this->DelegateTetrahedralMeshes || this->IntegrationMode == FIXED_STEPS ||
     !this->Impl->OnlyTetrahedra(input))
@@ -746,7 +746,7 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
   Internals& impl = *this->Impl;
   impl.Peels = 0;
   vtkDataSet* input = this->GetDataSetInput();
-  uvvtk::RenderedScalar scalar;
+  vtkuv::RenderedScalar scalar;
   if (!this->FindScalar(input, frame.Property, scalar))
     return false;
   impl.Delegated = this->HandsOver(input, scalar);
@@ -788,7 +788,7 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
     impl.Tetrahedra = nullptr;
   }
   vtkOpenGLRenderWindow* window = frame.Window;
-  const uvvtk::HexahedralMesh& mesh = impl.Mesh;
+  const vtkuv::HexahedralMesh& mesh = impl.Mesh;
   impl.Gpu.CellPoints.Sync(window, mesh.CellPoints, 4, mesh.CellsVersion);
   impl.Gpu.Points.Sync(window, mesh.Points.Values, 4, mesh.Version);
   impl.Gpu.Neighbours.Sync(window, mesh.Faces.Neighbours, 4, mesh.CellsVersion);

@@ -1,20 +1,20 @@
 // The cells of any vtkDataSet as vtkHexahedralRayCastMapper's passes read them: 8 point ids per
-// cell (tetrahedra, pyramids and wedges as collapsed hexahedra), the recentred points with the normalised point scalar (vtkUnstructuredVolumePointData.h) or
+// cell (tetrahedra, pyramids and wedges as collapsed hexahedra), the recentred points with the normalised point scalar (vtkuvRecentredPoints.h) or
 // one normalised value per cell for cell data, face adjacency and boundary faces (uvHexahedralMesh.h),
 // rebuilt only when the input's cells or its scalar's selection change (positions and values alone are
 // refreshed); the dataset they index, for vertex gradients. Reads VTK data through the generic cell API,
 // so no input type needs a conversion.
-#ifndef vtkUnstructuredVolumeHexahedralMesh_h
-#define vtkUnstructuredVolumeHexahedralMesh_h
+#ifndef vtkuvHexahedralMesh_h
+#define vtkuvHexahedralMesh_h
 
 #include "uvHexahedralMesh.h"
 #include "uvNonConformingFaces.h"
 #include "uvLinearCellSplit.h"
 #include "uvScalarNormalisation.h"
-#include "vtkUnstructuredVolumeMeshContent.h"
-#include "vtkUnstructuredVolumeMeshIntegrity.h"
-#include "vtkUnstructuredVolumePointData.h"
-#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+#include "vtkuvMeshContent.h"
+#include "vtkuvMeshIntegrity.h"
+#include "vtkuvRecentredPoints.h"
+#include "vtkuvTetrahedralMesh.h"
 
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -38,7 +38,7 @@
 #include <string>
 #include <vector>
 
-namespace uvvtk
+namespace vtkuv
 {
 
 /// Unstructured grids; structured grids, whose blanked cells are empty and skipped; image data and
@@ -137,8 +137,8 @@ private:
     if (changed.Points)
     {
       this->TangledCells =
-        static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
-      this->Geometry = uv::MeshCellGeometry(this->CellPoints, this->Points.Values, uvvtk::ParallelFor);
+        static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, vtkuv::ParallelFor));
+      this->Geometry = uv::MeshCellGeometry(this->CellPoints, this->Points.Values, vtkuv::ParallelFor);
       // Which faces lie against which depends on where the points are; the neighbours' GPU copy
       // follows the cells' version, so a mesh with such faces is built again.
       if (this->NonConformingFaces > 0 ||
@@ -181,10 +181,10 @@ private:
       this->Points.Values, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
     this->MergeCoincidentCells(samePoint);
     this->TangledCells =
-      static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, uvvtk::ParallelFor));
-    this->Geometry = uv::MeshCellGeometry(this->CellPoints, this->Points.Values, uvvtk::ParallelFor);
+      static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, vtkuv::ParallelFor));
+    this->Geometry = uv::MeshCellGeometry(this->CellPoints, this->Points.Values, vtkuv::ParallelFor);
     this->Faces = uv::MakeHexahedralFaces(
-      this->CellPoints, samePoint, uvvtk::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
+      this->CellPoints, samePoint, vtkuv::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
       [&progress](double fraction) { progress(0.8 * fraction); });
     this->NonConformingFaces = uv::LinkNonConformingFaces(this->CellPoints, this->Points.Values, this->Faces);
     this->Drawn = linear;
@@ -406,6 +406,6 @@ private:
   }
 };
 
-} // namespace uvvtk
+} // namespace vtkuv
 
 #endif

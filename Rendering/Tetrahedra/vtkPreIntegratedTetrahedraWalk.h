@@ -26,7 +26,7 @@
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
-#include "vtkUnstructuredVolumeTetrahedralMesh.h"
+#include "vtkuvTetrahedralMesh.h"
 
 #include "vtkNew.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -50,7 +50,7 @@ public:
 
   /// The adjacency of the mesh's tetrahedra, when they changed (faces matched by their corners'
   /// positions as the tetrahedra were built: a deforming mesh keeps it).
-  void Update(const uvvtk::TetrahedralMesh& mesh)
+  void Update(const vtkuv::TetrahedralMesh& mesh)
   {
     if (this->BuiltFor == mesh.TopologyVersion && !this->Neighbours.empty())
       return;
@@ -60,13 +60,13 @@ public:
     std::vector<std::uint32_t> corners(mesh.TetrahedronPoints.size());
     for (std::size_t i = 0; i < corners.size(); ++i)
       corners[i] = same[mesh.TetrahedronPoints[i]];
-    const std::vector<std::int32_t> adjacency = uv::MakeTetrahedronFaceAdjacency(corners, uvvtk::ParallelFor);
-    this->Neighbours = uv::PackedFaceNeighbours(adjacency, uvvtk::ParallelFor);
+    const std::vector<std::int32_t> adjacency = uv::MakeTetrahedronFaceAdjacency(corners, vtkuv::ParallelFor);
+    this->Neighbours = uv::PackedFaceNeighbours(adjacency, vtkuv::ParallelFor);
     this->Boundary = uv::BoundaryFaceRecords(this->Neighbours, corners);
     const auto position = [&mesh](std::size_t t, int k) { return glm::dvec3(mesh.Corner(t, k)); };
     this->Reentry = uv::MoveReentryFacesFirst(
-      this->Boundary, corners, adjacency, position, uvvtk::ParallelFor, MaximumHullTestFaces);
-    this->Folded = uv::FoldedFaces(corners, mesh.PointData, 4, this->Neighbours, uvvtk::ParallelFor);
+      this->Boundary, corners, adjacency, position, vtkuv::ParallelFor, MaximumHullTestFaces);
+    this->Folded = uv::FoldedFaces(corners, mesh.PointData, 4, this->Neighbours, vtkuv::ParallelFor);
     this->BuiltFor = mesh.TopologyVersion;
     ++this->Builds;
   }

@@ -1,10 +1,10 @@
 // Vertex gradients of a mapper's rendered scalar, for lighting: a 3-component point array the input
 // carries, or vtkVertexGradientFilter's, computed only when the mesh or its scalar changed. Shared
 // by every mapper that lights with them. Reads VTK data; the mappers' GPU code is elsewhere.
-#ifndef vtkUnstructuredVolumeVertexGradients_h
-#define vtkUnstructuredVolumeVertexGradients_h
+#ifndef vtkuvVertexGradientCache_h
+#define vtkuvVertexGradientCache_h
 
-#include "vtkUnstructuredVolumeScalar.h"
+#include "vtkuvRenderedScalar.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace uvvtk
+namespace vtkuv
 {
 
 /// Vertex gradients of `scalar` (a point scalar of `cells`: the rendered magnitude or component),
@@ -106,6 +106,6 @@ private:
   const void* Given = nullptr; // the array read, or null when computed (compared, never read)
 };
 
-} // namespace uvvtk
+} // namespace vtkuv
 
 #endif

@@ -9,9 +9,9 @@
 #include "uvRayCellGeometry.h"
 #include "uvScalarNormalisation.h"
 #include "uvLatticeBasis.h"
-#include "vtkUnstructuredVolumeMeshIntegrity.h"
-#include "vtkUnstructuredVolumeScalar.h"
-#include "vtkUnstructuredVolumeTransferFunction.h"
+#include "vtkuvMeshIntegrity.h"
+#include "vtkuvRenderedScalar.h"
+#include "vtkuvNormalisedTransferFunction.h"
 
 #include "vtkCamera.h"
 #include "vtkCellType.h"
@@ -355,7 +355,7 @@ struct Mesh
   bool OnCells() const { return !this->CellValues.empty(); }
 
   /// Points relative to the bounds' centre, scalars relative to `offset`.
-  void LoadPoints(vtkDataSet* input, const uvvtk::RenderedScalar& scalar, double offset)
+  void LoadPoints(vtkDataSet* input, const vtkuv::RenderedScalar& scalar, double offset)
   {
     double bounds[6];
     input->GetBounds(bounds);
@@ -867,7 +867,7 @@ void vtkUnstructuredVolumeReferenceRenderer::SetInputData(vtkDataSet* input)
   vtkSetObjectBodyMacro(Input, vtkDataSet, input);
 }
 
-uvvtk::RenderedScalar vtkUnstructuredVolumeReferenceRenderer::FindScalar(vtkDataSet* input)
+vtkuv::RenderedScalar vtkUnstructuredVolumeReferenceRenderer::FindScalar(vtkDataSet* input)
 {
   const char* name = this->ScalarArrayName;
   int mode = this->ScalarMode;
@@ -881,14 +881,14 @@ uvvtk::RenderedScalar vtkUnstructuredVolumeReferenceRenderer::FindScalar(vtkData
     mode = VTK_SCALAR_MODE_USE_POINT_DATA;
   if (!name && mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
     mode = VTK_SCALAR_MODE_USE_CELL_DATA;
-  return uvvtk::FindRenderedScalar(
+  return vtkuv::FindRenderedScalar(
     input, mode, VTK_GET_ARRAY_BY_NAME, -1, name ? name : "", this->VolumeProperty);
 }
 
 namespace
 {
 /// The least finite value of the rendered scalar (0 when there is none).
-double ScalarOffset(vtkDataSet* input, const uvvtk::RenderedScalar& scalar)
+double ScalarOffset(vtkDataSet* input, const vtkuv::RenderedScalar& scalar)
 {
   const vtkIdType count = scalar.OnCells ? input->GetNumberOfCells() : input->GetNumberOfPoints();
   return uv::ScalarNormalisation::OfFiniteValues(
@@ -924,7 +924,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   }
   if (auto* cells = vtkUnstructuredGridBase::SafeDownCast(this->Input))
   {
-    const std::string broken = uvvtk::FindMeshIntegrityError(cells);
+    const std::string broken = vtkuv::FindMeshIntegrityError(cells);
     if (!broken.empty())
     {
       vtkErrorMacro(<< broken);
@@ -935,7 +935,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   // Prisms and polyhedra as the project's conforming split defines their field (every mapper draws
   // that split too); the other cells as they are.
   const vtkSmartPointer<vtkDataSet> input = PolygonalCellsAsTetrahedra(this->Input);
-  const uvvtk::RenderedScalar scalar = this->FindScalar(input);
+  const vtkuv::RenderedScalar scalar = this->FindScalar(input);
   if (!scalar)
   {
     vtkErrorMacro("No " << (this->ScalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA ? "cell" : "point or cell")
@@ -943,7 +943,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
                         << " on the input.");
     return false;
   }
-  std::vector<uv::TransferFunction::Node> nodes = uvvtk::TransferFunctionNodes(this->VolumeProperty);
+  std::vector<uv::TransferFunction::Node> nodes = vtkuv::TransferFunctionNodes(this->VolumeProperty);
   if (nodes.empty())
   {
     vtkErrorMacro("The volume property has no scalar opacity function.");
