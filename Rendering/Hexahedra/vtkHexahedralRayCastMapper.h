@@ -19,8 +19,8 @@
  * - ACCURATE: Gauss-Legendre on each piece, exact optical depth (the paper's Hexa_ACC);
  * - FAST: the scalar linear between split points, pre-integrated with the Psi table (Hexa_FAST);
  * - FIXED_STEPS: FixedSteps constant steps per cell (Hexa_CONST), for comparison.
- * The math is uvHexahedronRay.h (unit-tested); Shaders/Hexahedra/uvHexahedralTraverseFS.glsl is its GPU
- * twin.
+ * The math is uvHexahedronRay.h (unit-tested); Shaders/Hexahedra/uvHexahedralTraverseFS.glsl (and its sections)
+ * is its GPU twin.
  *
  * Isosurfaces (any number, each with a colour and opacity) are further split points: where the
  * cubic crosses an isovalue the surface is composited, Phong-lit from the vtkVolumeProperty and the

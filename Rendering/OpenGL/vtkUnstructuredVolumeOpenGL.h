@@ -14,6 +14,10 @@
 #include "uvBilinearFaceLib.h"
 #include "uvEyeRayLib.h"
 #include "uvHexahedronLib.h"
+#include "uvHexahedralCutsLib.h"
+#include "uvHexahedralExitLib.h"
+#include "uvHexahedralLoadedCellLib.h"
+#include "uvHexahedralSegmentLib.h"
 #include "uvPhongLib.h"
 #include "uvProjectedTetrahedronLib.h"
 #include "uvSegmentIntegrationLib.h"
@@ -360,6 +364,11 @@ inline const std::vector<uv::ShaderLibrary>& ShaderLibraries()
     { "BilinearFace", uvBilinearFaceLib, {} },
     { "EyeRay", uvEyeRayLib, {} },
     { "Hexahedron", uvHexahedronLib, {} }, // holds the eye-ray library's marker where it needs it
+    // The hexahedral traversal's sections, in the order uvHexahedralTraverseFS.glsl names them.
+    { "HexahedralLoadedCell", uvHexahedralLoadedCellLib, { "Hexahedron", "BilinearFace" } },
+    { "HexahedralSegment", uvHexahedralSegmentLib, { "HexahedralLoadedCell", "Phong" } },
+    { "HexahedralCuts", uvHexahedralCutsLib, { "HexahedralSegment", "TransferFunction" } },
+    { "HexahedralExit", uvHexahedralExitLib, { "HexahedralLoadedCell" } },
     { "Phong", uvPhongLib, {} },
     { "ProjectedTetrahedron", uvProjectedTetrahedronLib, {} },
     { "SegmentIntegration", uvSegmentIntegrationLib, { "TransferFunction", "Phong" } },
