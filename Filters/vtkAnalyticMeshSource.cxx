@@ -25,6 +25,38 @@ vtkAnalyticMeshSource::vtkAnalyticMeshSource()
   this->SetNumberOfInputPorts(0);
 }
 
+namespace
+{
+/// The hexahedra of a structured grid of cells[0] x cells[1] x cells[2] cells, points in x-fastest
+/// order, into `hexahedra`.
+void GridHexahedra(const int cells[3], vtkCellArray* hexahedra)
+{
+  const vtkIdType nx = cells[0] + 1, ny = cells[1] + 1;
+  const vtkIdType numCells = static_cast<vtkIdType>(cells[0]) * cells[1] * cells[2];
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  offsets->SetNumberOfValues(numCells + 1);
+  connectivity->SetNumberOfValues(8 * numCells);
+  vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      const vtkIdType i = cell % cells[0], j = (cell / cells[0]) % cells[1],
+                      k = cell / (static_cast<vtkIdType>(cells[0]) * cells[1]);
+      const vtkIdType base = i + j * nx + k * nx * ny;
+      const vtkIdType corners[8] = { base, base + 1, base + 1 + nx, base + nx, base + nx * ny,
+        base + 1 + nx * ny, base + 1 + nx + nx * ny, base + nx + nx * ny };
+      for (int v = 0; v < 8; ++v)
+      {
+        connectivity->SetValue(8 * cell + v, corners[v]);
+      }
+      offsets->SetValue(cell, 8 * cell);
+    }
+  });
+  offsets->SetValue(numCells, 8 * numCells);
+  hexahedra->SetData(offsets, connectivity);
+}
+} // namespace
+
 int vtkAnalyticMeshSource::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -97,29 +129,8 @@ int vtkAnalyticMeshSource::RequestData(
 
   if (this->CellKind == HEXAHEDRA)
   {
-    const vtkIdType numCells = static_cast<vtkIdType>(cells[0]) * cells[1] * cells[2];
-    vtkNew<vtkIdTypeArray> offsets;
-    vtkNew<vtkIdTypeArray> connectivity;
-    offsets->SetNumberOfValues(numCells + 1);
-    connectivity->SetNumberOfValues(8 * numCells);
-    vtkSMPTools::For(0, numCells, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType cell = begin; cell < end; ++cell)
-      {
-        const vtkIdType i = cell % cells[0], j = (cell / cells[0]) % cells[1],
-                        k = cell / (static_cast<vtkIdType>(cells[0]) * cells[1]);
-        const vtkIdType base = i + j * nx + k * nx * ny;
-        const vtkIdType corners[8] = { base, base + 1, base + 1 + nx, base + nx, base + nx * ny,
-          base + 1 + nx * ny, base + 1 + nx + nx * ny, base + nx + nx * ny };
-        for (int v = 0; v < 8; ++v)
-        {
-          connectivity->SetValue(8 * cell + v, corners[v]);
-        }
-        offsets->SetValue(cell, 8 * cell);
-      }
-    });
-    offsets->SetValue(numCells, 8 * numCells);
     vtkNew<vtkCellArray> hexahedra;
-    hexahedra->SetData(offsets, connectivity);
+    GridHexahedra(cells, hexahedra);
     output->SetPoints(points);
     output->SetCells(VTK_HEXAHEDRON, hexahedra);
     output->GetPointData()->ShallowCopy(grid->GetPointData());

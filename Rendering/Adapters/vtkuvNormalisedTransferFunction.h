@@ -20,6 +20,70 @@
 namespace vtkuv
 {
 
+namespace detail
+{
+/// The sorted distinct scalars of the opacity and colour nodes; `curved` tells whether VTK's
+/// functions bend between them (a midpoint other than 0.5, a sharpness, a colour space not RGB).
+inline std::vector<double> NodeScalars(
+  vtkPiecewiseFunction* opacity, vtkColorTransferFunction* color, bool& curved)
+{
+  std::vector<double> scalars;
+  curved = false;
+  double node[6];
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    opacity->GetNodeValue(i, node);
+    scalars.push_back(node[0]);
+    curved = curved || node[2] != 0.5 || node[3] != 0.0;
+  }
+  if (color)
+  {
+    curved = curved || color->GetColorSpace() != VTK_CTF_RGB;
+    for (int i = 0; i < color->GetSize(); ++i)
+    {
+      color->GetNodeValue(i, node);
+      scalars.push_back(node[0]);
+      curved = curved || node[4] != 0.5 || node[5] != 0.0;
+    }
+  }
+  std::sort(scalars.begin(), scalars.end());
+  scalars.erase(std::unique(scalars.begin(), scalars.end()), scalars.end());
+  return scalars;
+}
+
+/// `scalars` with each interval halved, depth first, until `straight(a, b)` holds on every piece or
+/// a piece is a `maximumSubdivisions`-th of its interval.
+template <typename Straight>
+std::vector<double> RefinedWhereCurved(
+  const std::vector<double>& scalars, int maximumSubdivisions, const Straight& straight)
+{
+  std::vector<double> refined;
+  for (std::size_t i = 0; i + 1 < scalars.size(); ++i)
+  {
+    // `pieces` is how many of the interval's finest pieces one spans.
+    std::vector<std::pair<double, int>> pending{ { scalars[i], maximumSubdivisions } };
+    const double step = (scalars[i + 1] - scalars[i]) / maximumSubdivisions;
+    while (!pending.empty())
+    {
+      const auto [start, pieces] = pending.back();
+      pending.pop_back();
+      const double end = start + pieces * step;
+      if (pieces == 1 || straight(start, end))
+      {
+        refined.push_back(start);
+      }
+      else
+      {
+        pending.push_back({ start + (pieces / 2) * step, pieces - pieces / 2 });
+        pending.push_back({ start, pieces / 2 });
+      }
+    }
+  }
+  refined.push_back(scalars.back());
+  return refined;
+}
+} // namespace detail
+
 /// Nodes: the union of the colour and opacity nodes. Where VTK's functions are not linear between
 /// their nodes (a midpoint other than 0.5, a non-zero sharpness, or a colour space other than RGB),
 /// each interval is halved until the straight line between its ends is within `tolerance` of VTK's
@@ -47,95 +111,46 @@ inline std::vector<uv::TransferFunction::Node> TransferFunctionNodes(
   vtkColorTransferFunction* color = gray ? nullptr : property->GetRGBTransferFunction(0);
   vtkPiecewiseFunction* grayFunction = gray ? property->GetGrayTransferFunction(0) : nullptr;
   const double unitDistance = property->GetScalarOpacityUnitDistance(0);
-
-  std::vector<double> scalars;
-  bool curved = false;
-  double node[6];
-  for (int i = 0; i < opacity->GetSize(); ++i)
-  {
-    opacity->GetNodeValue(i, node);
-    scalars.push_back(node[0]);
-    curved = curved || node[2] != 0.5 || node[3] != 0.0;
-  }
-  if (color)
-  {
-    curved = curved || color->GetColorSpace() != VTK_CTF_RGB;
-    for (int i = 0; i < color->GetSize(); ++i)
-    {
-      color->GetNodeValue(i, node);
-      scalars.push_back(node[0]);
-      curved = curved || node[4] != 0.5 || node[5] != 0.0;
-    }
-  }
-  std::sort(scalars.begin(), scalars.end());
-  scalars.erase(std::unique(scalars.begin(), scalars.end()), scalars.end());
-  if (curved && scalars.size() > 1 && maximumSubdivisions > 1)
-  {
-    // VTK's colour and opacity at s, as one vector.
-    auto sample = [&](double s) {
-      std::array<double, 4> value{ 1.0, 1.0, 1.0, opacity->GetValue(s) };
-      if (color)
-      {
-        color->GetColor(s, value.data());
-      }
-      else if (grayFunction)
-      {
-        value[0] = value[1] = value[2] = grayFunction->GetValue(s);
-      }
-      return value;
-    };
-    auto straight = [&](double a, double b) {
-      const std::array<double, 4> va = sample(a), vb = sample(b);
-      for (double f : { 0.25, 0.5, 0.75 })
-      {
-        const std::array<double, 4> v = sample(a + f * (b - a));
-        for (int c = 0; c < 4; ++c)
-        {
-          if (std::abs(v[c] - ((1.0 - f) * va[c] + f * vb[c])) > tolerance)
-          {
-            return false;
-          }
-        }
-      }
-      return true;
-    };
-    std::vector<double> refined;
-    for (std::size_t i = 0; i + 1 < scalars.size(); ++i)
-    {
-      // Depth-first halving; `pieces` is how many of the interval's finest pieces one spans.
-      std::vector<std::pair<double, int>> pending{ { scalars[i], maximumSubdivisions } };
-      const double step = (scalars[i + 1] - scalars[i]) / maximumSubdivisions;
-      while (!pending.empty())
-      {
-        const auto [start, pieces] = pending.back();
-        pending.pop_back();
-        const double end = start + pieces * step;
-        if (pieces == 1 || straight(start, end))
-        {
-          refined.push_back(start);
-        }
-        else
-        {
-          pending.push_back({ start + (pieces / 2) * step, pieces - pieces / 2 });
-          pending.push_back({ start, pieces / 2 });
-        }
-      }
-    }
-    refined.push_back(scalars.back());
-    scalars = refined;
-  }
-  for (double s : scalars)
-  {
-    glm::dvec3 rgb(1.0);
+  // VTK's colour and opacity at s, as one vector.
+  auto sample = [&](double s) {
+    std::array<double, 4> value{ 1.0, 1.0, 1.0, opacity->GetValue(s) };
     if (color)
     {
-      color->GetColor(s, &rgb.x);
+      color->GetColor(s, value.data());
     }
     else if (grayFunction)
     {
-      rgb = glm::dvec3(grayFunction->GetValue(s));
+      value[0] = value[1] = value[2] = grayFunction->GetValue(s);
     }
-    nodes.push_back({ s, rgb, uv::ExtinctionFromOpacity(opacity->GetValue(s), unitDistance) });
+    return value;
+  };
+  auto straight = [&](double a, double b) {
+    const std::array<double, 4> va = sample(a), vb = sample(b);
+    for (double f : { 0.25, 0.5, 0.75 })
+    {
+      const std::array<double, 4> v = sample(a + f * (b - a));
+      for (int c = 0; c < 4; ++c)
+      {
+        if (std::abs(v[c] - ((1.0 - f) * va[c] + f * vb[c])) > tolerance)
+        {
+          return false;
+        }
+      }
+    }
+    return true;
+  };
+
+  bool curved = false;
+  std::vector<double> scalars = detail::NodeScalars(opacity, color, curved);
+  if (curved && scalars.size() > 1 && maximumSubdivisions > 1)
+  {
+    scalars = detail::RefinedWhereCurved(scalars, maximumSubdivisions, straight);
+  }
+  for (double s : scalars)
+  {
+    const std::array<double, 4> value = sample(s);
+    const glm::dvec3 rgb(value[0], value[1], value[2]);
+    nodes.push_back({ s, rgb, uv::ExtinctionFromOpacity(value[3], unitDistance) });
   }
   return nodes;
 }

@@ -407,6 +407,115 @@ inline void PairsAlongRay(std::vector<GapCrossing>::iterator begin, std::vector<
   }
 }
 
+/// Face k of tetrahedron t (corners from `position(t, corner)`) made ready for GapConstraints: its
+/// corners, outward normal, screen bounds and projection, and its plane's terms along `rays`.
+template <typename Position>
+GapFace PreparedGapFace(std::uint32_t t, int k, Position&& position, const PixelGrid& grid, const PixelRays& rays)
+{
+  GapFace face;
+  face.Tetrahedron = t;
+  for (int j = 0; j < 3; ++j)
+    face.P[j] = position(t, (k + 1 + j) % 4);
+  face.Outward = glm::cross(face.P[1] - face.P[0], face.P[2] - face.P[0]);
+  if (glm::dot(face.Outward, position(t, k) - face.P[0]) > 0.0)
+    face.Outward = -face.Outward;
+  if (!ScreenBounds(grid, face.P, face.X0, face.X1, face.Y0, face.Y1))
+    face.X0 = 0, face.X1 = -1, face.Y0 = 0, face.Y1 = -1;
+  else
+    face.Projected = ProjectTriangle(grid, face.P, face.Screen);
+  face.Base = glm::dot(face.Outward, face.P[0]);
+  face.OriginDot = glm::dvec3(glm::dot(face.Outward, rays.Origin0), glm::dot(face.Outward, rays.OriginX),
+    glm::dot(face.Outward, rays.OriginY));
+  face.StepDot = glm::dvec3(
+    glm::dot(face.Outward, rays.Step0), glm::dot(face.Outward, rays.StepX), glm::dot(face.Outward, rays.StepY));
+  return face;
+}
+
+/// Bands of image rows, and the faces whose screen bounds reach each (a counting sort): band b's
+/// faces are Faces[First[b], First[b + 1]).
+struct FacesByBand
+{
+  FacesByBand(const std::vector<GapFace>& faces, int height)
+  {
+    constexpr int TargetBands = 64;
+    this->Rows = std::max(1, (height + TargetBands - 1) / TargetBands);
+    this->Count = (height + this->Rows - 1) / this->Rows;
+    this->First.assign(this->Count + 1, 0);
+    for (const GapFace& face : faces)
+      for (int b = face.Y0 / this->Rows; face.Y0 <= face.Y1 && b <= face.Y1 / this->Rows; ++b)
+        ++this->First[b + 1];
+    for (int b = 0; b < this->Count; ++b)
+      this->First[b + 1] += this->First[b];
+    this->Faces.resize(this->First.back());
+    std::vector<std::uint32_t> next(this->First.begin(), this->First.end() - 1);
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      for (int b = faces[f].Y0 / this->Rows; faces[f].Y0 <= faces[f].Y1 && b <= faces[f].Y1 / this->Rows; ++b)
+        this->Faces[next[b]++] = static_cast<std::uint32_t>(f);
+  }
+  int Rows = 1, Count = 0;
+  std::vector<std::uint32_t> First, Faces;
+};
+
+/// The crossings of `face` with the rays of rows [rowBegin, rowEnd), pixels numbered from the
+/// band's first row, appended to `crossings`.
+inline void FaceCrossingsInRows(const GapFace& face, const PixelGrid& grid, const PixelRays& rays, int rowBegin,
+  int rowEnd, std::vector<GapCrossing>& crossings)
+{
+  // Pixels this far outside a face's projection are passed over: far beyond the rounding of the
+  // projection and of the exact test's edge slack.
+  constexpr double PrefilterMargin = 0.01;
+  for (int y = std::max(face.Y0, rowBegin); y <= std::min(face.Y1, rowEnd - 1); ++y)
+  {
+    int x0 = face.X0, x1 = face.X1;
+    if (face.Projected)
+      NarrowToRow(face.Screen, y + 0.5, PrefilterMargin, x0, x1);
+    for (int x = x0; x <= x1; ++x)
+    {
+      const double clearance = face.Projected ? face.Screen.Clearance(x + 0.5, y + 0.5) : 0.0;
+      if (clearance < -PrefilterMargin)
+        continue;
+      const std::uint32_t pixel = static_cast<std::uint32_t>((y - rowBegin) * grid.Width + x);
+      if (clearance > PrefilterMargin)
+      {
+        // Well inside the projection: the ray meets the face wherever the exact test would say
+        // so, where it meets the face's plane.
+        const glm::dvec3 pixelTerms(1.0, double(x), double(y));
+        const double along = glm::dot(face.StepDot, pixelTerms);
+        const double at = (face.Base - glm::dot(face.OriginDot, pixelTerms)) / along;
+        if (at >= 0.0)
+          crossings.push_back({ pixel, face.Tetrahedron, at, along > 0.0 });
+        continue;
+      }
+      glm::dvec3 origin, step;
+      rays.At(x, y, origin, step);
+      double at;
+      if (RayMeetsTriangle(origin, step, face.P, at))
+        crossings.push_back({ pixel, face.Tetrahedron, at, glm::dot(face.Outward, step) > 0.0 });
+    }
+  }
+}
+
+/// The pairs of a band of `pixels` pixels from its crossings: grouped by pixel (a counting sort),
+/// then each pixel's few crossings taken along its ray. Sorted, each once. `first`, `grouped` and
+/// `left` are scratch.
+inline void PairsOfBand(const std::vector<GapCrossing>& crossings, std::size_t pixels, std::vector<std::uint32_t>& first,
+  std::vector<GapCrossing>& grouped, std::vector<std::uint32_t>& left,
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs)
+{
+  first.assign(pixels + 1, 0);
+  for (const GapCrossing& c : crossings)
+    ++first[c.Pixel + 1];
+  for (std::size_t i = 1; i < first.size(); ++i)
+    first[i] += first[i - 1];
+  grouped.resize(crossings.size());
+  for (const GapCrossing& c : crossings)
+    grouped[first[c.Pixel]++] = c; // first[p] ends at pixel p's end, its start is first[p - 1]
+  for (std::size_t pixel = 0; pixel + 1 < first.size(); ++pixel)
+    PairsAlongRay(grouped.begin() + (pixel == 0 ? 0 : first[pixel - 1]), grouped.begin() + first[pixel], left, pairs);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+}
+
 /// The order constraints a non-convex mesh's gaps add for the rays of `grid`: pairs (front, behind),
 /// each once, sorted, meaning a ray through the image leaves the mesh from `front` and enters it
 /// again next at `behind`, which must then be drawn first. `faces` from BoundaryFaces, or only those
@@ -425,104 +534,20 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> GapConstraints(
   std::vector<GapFace> ready(faces.size());
   parallelFor(faces.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f)
-    {
-      GapFace& face = ready[f];
-      const std::uint32_t t = faces[f].first;
-      const int k = faces[f].second;
-      face.Tetrahedron = t;
-      for (int j = 0; j < 3; ++j)
-        face.P[j] = position(t, (k + 1 + j) % 4);
-      face.Outward = glm::cross(face.P[1] - face.P[0], face.P[2] - face.P[0]);
-      if (glm::dot(face.Outward, position(t, k) - face.P[0]) > 0.0)
-        face.Outward = -face.Outward;
-      if (!ScreenBounds(grid, face.P, face.X0, face.X1, face.Y0, face.Y1))
-        face.X0 = 0, face.X1 = -1, face.Y0 = 0, face.Y1 = -1;
-      else
-        face.Projected = ProjectTriangle(grid, face.P, face.Screen);
-      face.Base = glm::dot(face.Outward, face.P[0]);
-      face.OriginDot = glm::dvec3(glm::dot(face.Outward, rays.Origin0), glm::dot(face.Outward, rays.OriginX),
-        glm::dot(face.Outward, rays.OriginY));
-      face.StepDot = glm::dvec3(
-        glm::dot(face.Outward, rays.Step0), glm::dot(face.Outward, rays.StepX), glm::dot(face.Outward, rays.StepY));
-    }
+      ready[f] = PreparedGapFace(faces[f].first, faces[f].second, position, grid, rays);
   });
-
-  // Bands of rows, and the faces whose bounds reach each (a counting sort).
-  constexpr int TargetBands = 64;
-  const int bandRows = std::max(1, (grid.Height + TargetBands - 1) / TargetBands);
-  const int bands = (grid.Height + bandRows - 1) / bandRows;
-  std::vector<std::uint32_t> bandFirst(bands + 1, 0), bandFaces;
-  for (const GapFace& face : ready)
-    for (int b = face.Y0 / bandRows; face.Y0 <= face.Y1 && b <= face.Y1 / bandRows; ++b)
-      ++bandFirst[b + 1];
-  for (int b = 0; b < bands; ++b)
-    bandFirst[b + 1] += bandFirst[b];
-  bandFaces.resize(bandFirst.back());
-  {
-    std::vector<std::uint32_t> next(bandFirst.begin(), bandFirst.end() - 1);
-    for (std::size_t f = 0; f < ready.size(); ++f)
-      for (int b = ready[f].Y0 / bandRows; ready[f].Y0 <= ready[f].Y1 && b <= ready[f].Y1 / bandRows; ++b)
-        bandFaces[next[b]++] = static_cast<std::uint32_t>(f);
-  }
-
-  // Pixels this far outside a face's projection are passed over: far beyond the rounding of the
-  // projection and of the exact test's edge slack.
-  constexpr double PrefilterMargin = 0.01;
-  std::vector<std::vector<Pair>> bandPairs(bands);
-  parallelFor(static_cast<std::size_t>(bands), [&](std::size_t begin, std::size_t end) {
+  const FacesByBand bands(ready, grid.Height);
+  std::vector<std::vector<Pair>> bandPairs(bands.Count);
+  parallelFor(static_cast<std::size_t>(bands.Count), [&](std::size_t begin, std::size_t end) {
     std::vector<GapCrossing> crossings, grouped;
     std::vector<std::uint32_t> first, left;
     for (std::size_t b = begin; b < end; ++b)
     {
-      const int rowBegin = static_cast<int>(b) * bandRows, rowEnd = std::min(grid.Height, rowBegin + bandRows);
+      const int rowBegin = static_cast<int>(b) * bands.Rows, rowEnd = std::min(grid.Height, rowBegin + bands.Rows);
       crossings.clear();
-      for (std::uint32_t i = bandFirst[b]; i < bandFirst[b + 1]; ++i)
-      {
-        const GapFace& face = ready[bandFaces[i]];
-        for (int y = std::max(face.Y0, rowBegin); y <= std::min(face.Y1, rowEnd - 1); ++y)
-        {
-          int x0 = face.X0, x1 = face.X1;
-          if (face.Projected)
-            NarrowToRow(face.Screen, y + 0.5, PrefilterMargin, x0, x1);
-          for (int x = x0; x <= x1; ++x)
-          {
-            const double clearance = face.Projected ? face.Screen.Clearance(x + 0.5, y + 0.5) : 0.0;
-            if (clearance < -PrefilterMargin)
-              continue;
-            const std::uint32_t pixel = static_cast<std::uint32_t>((y - rowBegin) * grid.Width + x);
-            if (clearance > PrefilterMargin)
-            {
-              // Well inside the projection: the ray meets the face wherever the exact test would say
-              // so, where it meets the face's plane.
-              const glm::dvec3 pixelTerms(1.0, double(x), double(y));
-              const double along = glm::dot(face.StepDot, pixelTerms);
-              const double at = (face.Base - glm::dot(face.OriginDot, pixelTerms)) / along;
-              if (at >= 0.0)
-                crossings.push_back({ pixel, face.Tetrahedron, at, along > 0.0 });
-              continue;
-            }
-            glm::dvec3 origin, step;
-            rays.At(x, y, origin, step);
-            double at;
-            if (RayMeetsTriangle(origin, step, face.P, at))
-              crossings.push_back({ pixel, face.Tetrahedron, at, glm::dot(face.Outward, step) > 0.0 });
-          }
-        }
-      }
-      // Grouped by pixel (counting sort), then each pixel's few crossings along its ray.
-      first.assign(std::size_t(rowEnd - rowBegin) * grid.Width + 1, 0);
-      for (const GapCrossing& c : crossings)
-        ++first[c.Pixel + 1];
-      for (std::size_t i = 1; i < first.size(); ++i)
-        first[i] += first[i - 1];
-      grouped.resize(crossings.size());
-      for (const GapCrossing& c : crossings)
-        grouped[first[c.Pixel]++] = c; // first[p] ends at pixel p's end, its start is first[p - 1]
-      std::vector<Pair>& pairs = bandPairs[b];
-      for (std::size_t pixel = 0; pixel + 1 < first.size(); ++pixel)
-        PairsAlongRay(grouped.begin() + (pixel == 0 ? 0 : first[pixel - 1]), grouped.begin() + first[pixel], left, pairs);
-      std::sort(pairs.begin(), pairs.end());
-      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+      for (std::uint32_t i = bands.First[b]; i < bands.First[b + 1]; ++i)
+        FaceCrossingsInRows(ready[bands.Faces[i]], grid, rays, rowBegin, rowEnd, crossings);
+      PairsOfBand(crossings, std::size_t(rowEnd - rowBegin) * grid.Width, first, grouped, left, bandPairs[b]);
     }
   });
   std::vector<Pair> pairs;

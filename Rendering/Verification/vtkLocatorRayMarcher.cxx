@@ -828,33 +828,45 @@ void vtkLocatorRayMarcher::UpdateLocator()
 }
 
 //------------------------------------------------------------------------------
-bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rgba)
+vtkDataArray* vtkLocatorRayMarcher::ValidatedScalars(vtkIdTypeArray* pixels, vtkFloatArray* rgba)
 {
   if (!pixels || !rgba)
   {
     vtkErrorMacro("MarchPixels needs a pixel array and an output array.");
-    return false;
+    return nullptr;
   }
   if (!this->Input)
   {
     vtkErrorMacro("No input.");
-    return false;
+    return nullptr;
   }
   if (!this->Camera)
   {
     vtkErrorMacro("No camera.");
-    return false;
+    return nullptr;
   }
   if (!this->VolumeProperty)
   {
     vtkErrorMacro("No volume property.");
-    return false;
+    return nullptr;
   }
   const int width = this->ImageSize[0], height = this->ImageSize[1];
   if (width < 1 || height < 1)
   {
     vtkErrorMacro("Bad image size " << width << "x" << height << ".");
-    return false;
+    return nullptr;
+  }
+  if (pixels->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro("The pixel array must have one component.");
+    return nullptr;
+  }
+  const vtkIdType outside = FirstPixelOutside(pixels, width, height);
+  if (outside >= 0)
+  {
+    vtkErrorMacro("Pixel index " << pixels->GetValue(outside) << " is outside the " << width << "x" << height
+                                 << " image.");
+    return nullptr;
   }
   vtkDataSetAttributes* attributes = this->CellScalars
     ? static_cast<vtkDataSetAttributes*>(this->Input->GetCellData())
@@ -866,7 +878,7 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
   {
     vtkErrorMacro("The input has no " << where << " array "
       << (this->ScalarArrayName ? this->ScalarArrayName : "(active scalars)") << ".");
-    return false;
+    return nullptr;
   }
   const vtkIdType expected = this->CellScalars ? this->Input->GetNumberOfCells() : this->Input->GetNumberOfPoints();
   if (array->GetNumberOfTuples() != expected || array->GetNumberOfComponents() <= this->ScalarComponent)
@@ -874,6 +886,17 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
     vtkErrorMacro("The scalar array has " << array->GetNumberOfTuples() << " tuples of "
       << array->GetNumberOfComponents() << " components for " << expected << " " << where << "s (component "
       << this->ScalarComponent << " asked for).");
+    return nullptr;
+  }
+  return array;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rgba)
+{
+  vtkDataArray* array = this->ValidatedScalars(pixels, rgba);
+  if (!array)
+  {
     return false;
   }
   OpticalModel model;
@@ -883,19 +906,8 @@ bool vtkLocatorRayMarcher::MarchPixels(vtkIdTypeArray* pixels, vtkFloatArray* rg
     vtkErrorMacro(<< reason);
     return false;
   }
+  const int width = this->ImageSize[0], height = this->ImageSize[1];
   const vtkIdType numberOfPixels = pixels->GetNumberOfTuples();
-  if (pixels->GetNumberOfComponents() != 1)
-  {
-    vtkErrorMacro("The pixel array must have one component.");
-    return false;
-  }
-  const vtkIdType outside = FirstPixelOutside(pixels, width, height);
-  if (outside >= 0)
-  {
-    vtkErrorMacro("Pixel index " << pixels->GetValue(outside) << " is outside the " << width << "x" << height
-                                 << " image.");
-    return false;
-  }
   rgba->SetNumberOfComponents(4);
   rgba->SetNumberOfTuples(numberOfPixels);
   if (numberOfPixels == 0)

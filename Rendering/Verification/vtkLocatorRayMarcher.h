@@ -43,6 +43,7 @@
 
 class vtkCamera;
 class vtkDataSet;
+class vtkDataArray;
 class vtkFloatArray;
 class vtkIdTypeArray;
 class vtkStaticCellLocator;
@@ -107,6 +108,9 @@ protected:
 
   /// Builds the locator and the cell bounds when the input changed.
   void UpdateLocator();
+  /// The scalar array to march once every setting and argument checks out; null (with an error)
+  /// otherwise.
+  vtkDataArray* ValidatedScalars(vtkIdTypeArray* pixels, vtkFloatArray* rgba);
 
   vtkSmartPointer<vtkDataSet> Input;
   vtkSmartPointer<vtkVolumeProperty> VolumeProperty;

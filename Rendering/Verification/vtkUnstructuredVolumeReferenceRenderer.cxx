@@ -895,6 +895,40 @@ double ScalarOffset(vtkDataSet* input, const vtkuv::RenderedScalar& scalar)
     static_cast<std::size_t>(count), [&](std::size_t i) { return scalar(static_cast<vtkIdType>(i)); })
     .Offset;
 }
+
+/// Makes `image` a width x height image of transparent premultiplied RGBA: its "RGBA" array.
+vtkFloatArray* TransparentImage(vtkImageData* image, int width, int height)
+{
+  image->Initialize();
+  image->SetDimensions(width, height, 1);
+  vtkNew<vtkFloatArray> rgba;
+  rgba->SetName("RGBA");
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  rgba->Fill(0.0);
+  image->GetPointData()->SetScalars(rgba);
+  return rgba;
+}
+
+/// Each pixel's ray integrated into `rgba` (premultiplied colour, opacity), pixels in parallel.
+void IntegratePixels(const RayIntegrator& integrator, const PixelRays& rays, vtkFloatArray* rgba)
+{
+  float* pixels = rgba->GetPointer(0);
+  vtkSMPThreadLocal<RayScratch> threadScratch;
+  vtkSMPTools::For(0, rgba->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+    RayScratch& scratch = threadScratch.Local();
+    for (vtkIdType pixel = begin; pixel < end; ++pixel)
+    {
+      const uv::RayAccumulator accumulator = integrator.Integrate(rays(pixel), scratch);
+      float* out = pixels + 4 * pixel;
+      out[0] = static_cast<float>(accumulator.Color.x);
+      out[1] = static_cast<float>(accumulator.Color.y);
+      out[2] = static_cast<float>(accumulator.Color.z);
+      out[3] = static_cast<float>(accumulator.Opacity());
+    }
+  });
+  rgba->Modified();
+}
 } // namespace
 
 bool vtkUnstructuredVolumeReferenceRenderer::Render()
@@ -910,14 +944,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
     vtkErrorMacro("A camera and a volume property are required.");
     return false;
   }
-  this->Output->Initialize();
-  this->Output->SetDimensions(width, height, 1);
-  vtkNew<vtkFloatArray> rgba;
-  rgba->SetName("RGBA");
-  rgba->SetNumberOfComponents(4);
-  rgba->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
-  rgba->Fill(0.0);
-  this->Output->GetPointData()->SetScalars(rgba);
+  vtkFloatArray* rgba = TransparentImage(this->Output, width, height);
   if (!this->Input || this->Input->GetNumberOfCells() == 0)
   {
     return true; // nothing to render: a transparent image
@@ -995,21 +1022,7 @@ bool vtkUnstructuredVolumeReferenceRenderer::Render()
   const RayIntegrator integrator(mesh, hierarchy, transfer, this->Tolerance, surfaces);
   const PixelRays rays(this->Camera, mesh.Centre, width, height);
 
-  float* pixels = rgba->GetPointer(0);
-  vtkSMPThreadLocal<RayScratch> threadScratch;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(width) * height, [&](vtkIdType begin, vtkIdType end) {
-    RayScratch& scratch = threadScratch.Local();
-    for (vtkIdType pixel = begin; pixel < end; ++pixel)
-    {
-      const uv::RayAccumulator accumulator = integrator.Integrate(rays(pixel), scratch);
-      float* out = pixels + 4 * pixel;
-      out[0] = static_cast<float>(accumulator.Color.x);
-      out[1] = static_cast<float>(accumulator.Color.y);
-      out[2] = static_cast<float>(accumulator.Color.z);
-      out[3] = static_cast<float>(accumulator.Opacity());
-    }
-  });
-  rgba->Modified();
+  IntegratePixels(integrator, rays, rgba);
   return true;
 }
 

@@ -158,6 +158,29 @@ vec4 HitColour(ivec2 pixel, int layer)
   return texelFetch(isosurfaceColor, ivec3(pixel, layer), 0);
 }
 
+/// The segment [near, far] between two samples inside the mesh: the scalar linear between them, cut
+/// at each hit inside it (hits from `hit` on, up to hitCount; `hit` moves past them). Where the two
+/// samples lie in cells of different densities (the segment crosses their face), each counts for
+/// half.
+void AddInsideSegment(ivec2 pixel, float previous, float next, float near, float far, inout int hit, int hitCount)
+{
+  const vec3 zero = vec3(0.0), toEye = vec3(0.0, 0.0, 1.0); // the volume is not lit here
+  vec2 front = ScalarAndDensity(previous), back = ScalarAndDensity(next);
+  float a = front.x, b = back.x, density = 0.5 * (front.y + back.y), from = 0.0;
+  for (; hit < hitCount && HitDistance(pixel, hit) < far; ++hit)
+  {
+    float to = clamp((HitDistance(pixel, hit) - near) / sampleDistance, from, 1.0);
+    Add(IntegrateSegment(
+      mix(a, b, from), mix(a, b, to), zero, zero, density * (to - from) * sampleDistance, toEye));
+    Add(HitColour(pixel, hit));
+    from = to;
+  }
+  if (from == 0.0)
+    Add(WholeSegment(a, b, density));
+  else
+    Add(IntegrateSegment(mix(a, b, from), b, zero, zero, density * (1.0 - from) * sampleDistance, toEye));
+}
+
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -202,7 +225,6 @@ void main()
     hit += distance < shellStart ? 1 : 0; // composited by an earlier shell
     hitCount += distance < 1e37 ? 1 : 0;
   }
-  const vec3 zero = vec3(0.0), toEye = vec3(0.0, 0.0, 1.0); // the volume is not lit here
   float previous = slice[0].x;
   for (int k = 0; k + 1 < UV_SLICES; ++k)
   {
@@ -211,23 +233,7 @@ void main()
     bool previousInside = previous > 0.9, nextInside = next > 0.9;
     if (previousInside && nextInside)
     {
-      // The scalar linear between the samples; cut at each hit inside the segment. Where the two
-      // samples lie in cells of different densities (the segment crosses their face), each counts
-      // for half.
-      vec2 front = ScalarAndDensity(previous), back = ScalarAndDensity(next);
-      float a = front.x, b = back.x, density = 0.5 * (front.y + back.y), from = 0.0;
-      for (; hit < hitCount && HitDistance(pixel, hit) < far; ++hit)
-      {
-        float to = clamp((HitDistance(pixel, hit) - near) / sampleDistance, from, 1.0);
-        Add(IntegrateSegment(
-          mix(a, b, from), mix(a, b, to), zero, zero, density * (to - from) * sampleDistance, toEye));
-        Add(HitColour(pixel, hit));
-        from = to;
-      }
-      if (from == 0.0)
-        Add(WholeSegment(a, b, density));
-      else
-        Add(IntegrateSegment(mix(a, b, from), b, zero, zero, density * (1.0 - from) * sampleDistance, toEye));
+      AddInsideSegment(pixel, previous, next, near, far, hit, hitCount);
     }
     else if (!previousInside && !nextInside)
     {

@@ -117,6 +117,86 @@ vec4 FrontFaceSurfaces(vec3 front, vec3 direction, vec3 toEye)
 }
 #endif
 
+#if !defined(UV_FACES) && defined(UV_NEAR_PLANE_CUTS)
+/// A tetrahedron too near to project (rayCastTetrahedron): the ray's segment through it, from its
+/// four faces; false where the ray misses it.
+bool RayCastSegment(vec3 origin, vec3 direction, out vec3 frontPoint, out vec3 backPoint, out float frontScalar,
+  out float backScalar, out vec3 frontGradient, out vec3 backGradient)
+{
+  uvec4 ids = texelFetch(tetrahedronPoints, rayCastTetrahedron);
+  vec3 p[4];
+  float s[4];
+  vec3 g[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    vec4 data = texelFetch(pointData, int(ids[k]));
+    p[k] = (modelToEye * vec4(data.xyz, 1.0)).xyz;
+    s[k] = data.w;
+#ifdef UV_GRADIENTS
+    g[k] = modelToEyeNormals * texelFetch(pointGradients, int(ids[k])).xyz;
+#else
+    g[k] = vec3(0.0);
+#endif
+  }
+  // Ray parameter: eye depth (direction.z = -1); the ray begins on the near plane, as in the
+  // reference, so matter between the eye and that plane is not seen.
+  float enter = nearDepth, leave = 3.0e38;
+  for (int k = 0; k < 4; ++k)
+  {
+    vec3 a = p[(k + 1) % 4], b = p[(k + 2) % 4], c = p[(k + 3) % 4];
+    vec3 n = cross(b - a, c - a);
+    n = dot(n, p[k] - a) > 0.0 ? -n : n; // outward
+    float along = dot(n, direction);
+    float at = dot(n, origin - a);
+    if (along < 0.0)
+      enter = max(enter, -at / along);
+    else if (along > 0.0)
+      leave = min(leave, -at / along);
+    else if (at > 0.0)
+      return false;
+  }
+  if (!(enter < leave))
+  {
+    return false;
+  }
+  frontPoint = origin + enter * direction;
+  backPoint = origin + leave * direction;
+  // Barycentric weights of both points give scalar and gradient.
+  mat3 edges = mat3(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
+  mat3 toLocal = inverse(edges);
+  vec3 lf = toLocal * (frontPoint - p[0]), lb = toLocal * (backPoint - p[0]);
+  vec4 wf = vec4(1.0 - lf.x - lf.y - lf.z, lf), wb = vec4(1.0 - lb.x - lb.y - lb.z, lb);
+  frontScalar = dot(wf, vec4(s[0], s[1], s[2], s[3]));
+  backScalar = dot(wb, vec4(s[0], s[1], s[2], s[3]));
+  frontGradient = wf.x * g[0] + wf.y * g[1] + wf.z * g[2] + wf.w * g[3];
+  backGradient = wb.x * g[0] + wb.y * g[1] + wb.z * g[2] + wb.w * g[3];
+  return true;
+}
+#endif
+
+#if defined(UV_OPAQUE_DEPTH) && !defined(UV_FACES)
+/// Opaque geometry: nothing behind it; a segment it cuts ends there. False when the segment lies
+/// wholly behind it.
+bool EndAtOpaqueGeometry(vec3 frontPoint, float frontScalar, vec3 frontGradient, inout vec3 backPoint,
+  inout float backScalar, inout vec3 backGradient, inout float segmentLength)
+{
+  float opaqueZ = -OpaqueEyeDepth();
+  if (frontPoint.z <= opaqueZ)
+  {
+    return false;
+  }
+  if (backPoint.z < opaqueZ)
+  {
+    float u = (frontPoint.z - opaqueZ) / (frontPoint.z - backPoint.z);
+    backPoint = mix(frontPoint, backPoint, u);
+    backScalar = mix(frontScalar, backScalar, u);
+    backGradient = mix(frontGradient, backGradient, u);
+    segmentLength *= u;
+  }
+  return true;
+}
+#endif
+
 void main()
 {
   vec3 frontPoint, backPoint;
@@ -167,54 +247,11 @@ void main()
   // body in every fragment, taken or not.
   if (rayCastTetrahedron >= 0)
   {
-    // A tetrahedron too near to project: intersect the ray with its four faces.
-    uvec4 ids = texelFetch(tetrahedronPoints, rayCastTetrahedron);
-    vec3 p[4];
-    float s[4];
-    vec3 g[4];
-    for (int k = 0; k < 4; ++k)
-    {
-      vec4 data = texelFetch(pointData, int(ids[k]));
-      p[k] = (modelToEye * vec4(data.xyz, 1.0)).xyz;
-      s[k] = data.w;
-#ifdef UV_GRADIENTS
-      g[k] = modelToEyeNormals * texelFetch(pointGradients, int(ids[k])).xyz;
-#else
-      g[k] = vec3(0.0);
-#endif
-    }
-    // Ray parameter: eye depth (direction.z = -1); the ray begins on the near plane, as in the
-    // reference, so matter between the eye and that plane is not seen.
-    float enter = nearDepth, leave = 3.0e38;
-    for (int k = 0; k < 4; ++k)
-    {
-      vec3 a = p[(k + 1) % 4], b = p[(k + 2) % 4], c = p[(k + 3) % 4];
-      vec3 n = cross(b - a, c - a);
-      n = dot(n, p[k] - a) > 0.0 ? -n : n; // outward
-      float along = dot(n, direction);
-      float at = dot(n, origin - a);
-      if (along < 0.0)
-        enter = max(enter, -at / along);
-      else if (along > 0.0)
-        leave = min(leave, -at / along);
-      else if (at > 0.0)
-        discard;
-    }
-    if (!(enter < leave))
+    if (!RayCastSegment(origin, direction, frontPoint, backPoint, frontScalar, backScalar, frontGradient,
+          backGradient))
     {
       discard;
     }
-    frontPoint = origin + enter * direction;
-    backPoint = origin + leave * direction;
-    // Barycentric weights of both points give scalar and gradient.
-    mat3 edges = mat3(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
-    mat3 toLocal = inverse(edges);
-    vec3 lf = toLocal * (frontPoint - p[0]), lb = toLocal * (backPoint - p[0]);
-    vec4 wf = vec4(1.0 - lf.x - lf.y - lf.z, lf), wb = vec4(1.0 - lb.x - lb.y - lb.z, lb);
-    frontScalar = dot(wf, vec4(s[0], s[1], s[2], s[3]));
-    backScalar = dot(wb, vec4(s[0], s[1], s[2], s[3]));
-    frontGradient = wf.x * g[0] + wf.y * g[1] + wf.z * g[2] + wf.w * g[3];
-    backGradient = wb.x * g[0] + wb.y * g[1] + wb.z * g[2] + wb.w * g[3];
   }
   else
 #endif
@@ -234,20 +271,12 @@ void main()
 #endif
 
 #if defined(UV_OPAQUE_DEPTH) && !defined(UV_FACES)
-  // Opaque geometry: nothing behind it; a segment it cuts ends there. (Only compiled in where the
-  // scene may have drawn some: the read and unprojection are a large share of a cheap fragment.)
-  float opaqueZ = -OpaqueEyeDepth();
-  if (frontPoint.z <= opaqueZ)
+  // (Only compiled in where the scene may have drawn opaque geometry: the read and unprojection are
+  // a large share of a cheap fragment.)
+  if (!EndAtOpaqueGeometry(frontPoint, frontScalar, frontGradient, backPoint, backScalar, backGradient,
+        segmentLength))
   {
     discard;
-  }
-  if (backPoint.z < opaqueZ)
-  {
-    float u = (frontPoint.z - opaqueZ) / (frontPoint.z - backPoint.z);
-    backPoint = mix(frontPoint, backPoint, u);
-    backScalar = mix(frontScalar, backScalar, u);
-    backGradient = mix(frontGradient, backGradient, u);
-    segmentLength *= u;
   }
 #endif
 #ifdef UV_SEGMENT_TABLE

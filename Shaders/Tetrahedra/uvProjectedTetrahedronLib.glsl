@@ -172,6 +172,64 @@ void NearClippedBounds(out vec2 low, out vec2 high)
   high = clamp(high + margin, vec2(-1.0), vec2(1.0));
 }
 
+/// The projected outline's vertices in order, by the projection's class (see
+/// uvProjectedTetrahedron.h), from each vertex's side of the affine dependency (+1, -1, 0).
+void OutlineByClass(float sides[4], int positives, int negatives, out int hull[4])
+{
+  float lone = positives <= negatives ? 1.0 : -1.0;
+  int loneCount = min(positives, negatives), otherCount = max(positives, negatives);
+  int loneVertex = -1, zeroA = -1, zeroB = -1, otherA = -1, otherB = -1, otherC = -1;
+  for (int k = 3; k >= 0; --k)
+  {
+    if (sides[k] == 0.0)
+    {
+      zeroB = zeroA;
+      zeroA = k;
+    }
+    else if (sides[k] == lone)
+    {
+      loneVertex = loneVertex < 0 ? k : loneVertex;
+    }
+    else
+    {
+      otherC = otherB;
+      otherB = otherA;
+      otherA = k;
+    }
+  }
+  if (loneCount == 1 && otherCount == 3)
+  {
+    hull = int[4](otherA, otherB, otherC, otherC); // class 1: the others' triangle
+  }
+  else if (loneCount == 2)
+  {
+    // Class 2: the outline alternates sides (its diagonals join equal sides).
+    int plusA = -1, plusB = -1, minusA = -1, minusB = -1;
+    for (int k = 3; k >= 0; --k)
+    {
+      if (sides[k] > 0.0)
+      {
+        plusB = plusA;
+        plusA = k;
+      }
+      else
+      {
+        minusB = minusA;
+        minusA = k;
+      }
+    }
+    hull = int[4](plusA, minusA, plusB, minusB);
+  }
+  else if (otherCount == 2)
+  {
+    hull = int[4](otherA, otherB, zeroA, zeroA); // class 3: (T on the edge), the zero vertex
+  }
+  else
+  {
+    hull = int[4](loneVertex, zeroA, zeroB, zeroB); // class 4: T on the lone vertex
+  }
+}
+
 Projection Project()
 {
   Projection result;
@@ -238,59 +296,7 @@ Projection Project()
   result.thickFront = plusInFront ? plus : minus;
   result.thickBack = plusInFront ? minus : plus;
 
-  // The outline in order, by class (see uvProjectedTetrahedron.h).
-  float lone = positives <= negatives ? 1.0 : -1.0;
-  int loneCount = min(positives, negatives), otherCount = max(positives, negatives);
-  int loneVertex = -1, zeroA = -1, zeroB = -1, otherA = -1, otherB = -1, otherC = -1;
-  for (int k = 3; k >= 0; --k)
-  {
-    if (sides[k] == 0.0)
-    {
-      zeroB = zeroA;
-      zeroA = k;
-    }
-    else if (sides[k] == lone)
-    {
-      loneVertex = loneVertex < 0 ? k : loneVertex;
-    }
-    else
-    {
-      otherC = otherB;
-      otherB = otherA;
-      otherA = k;
-    }
-  }
-  if (loneCount == 1 && otherCount == 3)
-  {
-    result.hull = int[4](otherA, otherB, otherC, otherC); // class 1: the others' triangle
-  }
-  else if (loneCount == 2)
-  {
-    // Class 2: the outline alternates sides (its diagonals join equal sides).
-    int plusA = -1, plusB = -1, minusA = -1, minusB = -1;
-    for (int k = 3; k >= 0; --k)
-    {
-      if (sides[k] > 0.0)
-      {
-        plusB = plusA;
-        plusA = k;
-      }
-      else
-      {
-        minusB = minusA;
-        minusA = k;
-      }
-    }
-    result.hull = int[4](plusA, minusA, plusB, minusB);
-  }
-  else if (otherCount == 2)
-  {
-    result.hull = int[4](otherA, otherB, zeroA, zeroA); // class 3: (T on the edge), the zero vertex
-  }
-  else
-  {
-    result.hull = int[4](loneVertex, zeroA, zeroB, zeroB); // class 4: T on the lone vertex
-  }
+  OutlineByClass(sides, positives, negatives, result.hull);
   result.mode = 1;
   return result;
 }

@@ -378,7 +378,26 @@ def machine_info(args):
                       f"{args.memory_cap_gb:g} GB resident a run, {args.budget_minutes:g} minutes in all"}
 
 
-def main():
+def resumed_run(args, results_path, run_path):
+    """The rows already run (with --resume) and the run's record, written back to run_path."""
+    rows, run = [], None
+    if args.resume and os.path.exists(results_path):
+        with open(results_path) as saved:
+            rows = json.load(saved)
+        if os.path.exists(run_path):
+            with open(run_path) as saved:
+                run = json.load(saved)
+            run["resumed"] = list(dict.fromkeys(run.get("resumed", []) + [benchmark.run_command()]))
+    if run is None:
+        # What the page says of the run: the first command's, not a resumption's.
+        run = {"command": benchmark.run_command(), "started": time.strftime("%Y-%m-%d %H:%M %Z"),
+               "machine": machine_info(args), "resumed": []}
+    with open(run_path, "w") as out:
+        json.dump(run, out, indent=1)
+    return rows, run
+
+
+def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--output", default=os.path.join(ROOT, "out", "scale"))
     parser.add_argument("--timeout", type=float, default=900, help="seconds a run may take")
@@ -398,30 +417,22 @@ def main():
                              "into SCALE.md's limit section (--resume adds to it)")
     parser.add_argument("--run", nargs=3, metavar=("KIND", "R", "MAPPER"), help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.limit and args.output == parser.get_default("output"):
+        args.output += "-limit"
+    args.large_timeout = args.large_timeout or args.timeout
+    return args
+
+
+def main():
+    args = parse_arguments()
     if args.run:
         half = int(args.run[1])
         views = 1 if half >= LIMIT_HALF else 4
         print("RESULT " + json.dumps(run_one(args.run[0], half, args.run[2], views)), flush=True)
         return
-    if args.limit and args.output == parser.get_default("output"):
-        args.output += "-limit"
-    args.large_timeout = args.large_timeout or args.timeout
     os.makedirs(os.path.join(args.output, "logs"), exist_ok=True)
     results_path, run_path = os.path.join(args.output, "results.json"), os.path.join(args.output, "run.json")
-    rows, run = [], None
-    if args.resume and os.path.exists(results_path):
-        with open(results_path) as saved:
-            rows = json.load(saved)
-        if os.path.exists(run_path):
-            with open(run_path) as saved:
-                run = json.load(saved)
-            run["resumed"] = list(dict.fromkeys(run.get("resumed", []) + [benchmark.run_command()]))
-    if run is None:
-        # What the page says of the run: the first command's, not a resumption's.
-        run = {"command": benchmark.run_command(), "started": time.strftime("%Y-%m-%d %H:%M %Z"),
-               "machine": machine_info(args), "resumed": []}
-    with open(run_path, "w") as out:
-        json.dump(run, out, indent=1)
+    rows, run = resumed_run(args, results_path, run_path)
     done = {(r["kind"], r["half"], r["mapper"]) for r in rows}
     deadline = time.monotonic() + 60 * args.budget_minutes
     wanted = args.mappers.split(",") if args.mappers else None
