@@ -6,6 +6,7 @@ set(uv_rendering_folders Core OpenGL Adapters Tetrahedra Hexahedra Shells Verifi
 # Wrapped VTK classes: the mapper base, the three mappers and the verification tools.
 set(uv_rendering_classes
   vtkUnstructuredVolumeMapper
+  vtkUnstructuredVolumeFrameStatistics
   Tetrahedra/vtkPreIntegratedTetrahedraMapper
   Hexahedra/vtkHexahedralRayCastMapper
   Shells/vtkBarycentricShellMapper

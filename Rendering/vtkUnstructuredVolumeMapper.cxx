@@ -3,7 +3,9 @@
 #include "uvIsosurfaceList.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
+#include "vtkUnstructuredVolumeFrameStatistics.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
+#include "vtkuvNormalisedTransferFunction.h"
 #include "vtkuvRenderedScalar.h"
 #include "vtkuvVertexGradientCache.h"
 
@@ -11,6 +13,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkImageData.h"
+#include "vtkNew.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -25,6 +28,7 @@
 #include <cstring>
 #include <new>
 #include <stdexcept>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -89,7 +93,8 @@ struct vtkUnstructuredVolumeMapper::Shared
   vtkUnstructuredVolumeFloatTarget Target;
   vtkSmartPointer<vtkImageData> FloatImage;
   vtkOpenGLRenderWindow* Context = nullptr;
-  bool WarnedMultisample = false, WarnedCellScalarLimits = false;
+  std::set<std::string> WarningsGiven; // the keys of WarnOnce
+  vtkNew<vtkUnstructuredVolumeFrameStatistics> Statistics;
 };
 
 vtkUnstructuredVolumeMapper::vtkUnstructuredVolumeMapper()
@@ -207,16 +212,61 @@ bool vtkUnstructuredVolumeMapper::WarnCellScalarLimits(
     return false;
   }
   const bool isosurfaces = this->GetNumberOfIsosurfaces() > 0 && !facesBetweenCells;
-  if ((isosurfaces || shade) && !this->Base->WarnedCellScalarLimits)
+  if (isosurfaces || shade)
   {
-    vtkWarningMacro("rendering the " << scalar.Describe() << ", constant in each cell: "
-                                     << (isosurfaces ? "isosurfaces are not drawn" : "")
-                                     << (isosurfaces && shade ? " and " : "")
-                                     << (shade ? "volume shading is off" : "")
-                                     << " (" << (isosurfaces && shade ? "both need" : "it needs")
-                                     << " a field that varies inside cells)");
-    this->Base->WarnedCellScalarLimits = true;
+    std::ostringstream message;
+    message << "rendering the " << scalar.Describe() << ", constant in each cell: "
+            << (isosurfaces ? "isosurfaces are not drawn" : "") << (isosurfaces && shade ? " and " : "")
+            << (shade ? "volume shading is off" : "") << " (" << (isosurfaces && shade ? "both need" : "it needs")
+            << " a field that varies inside cells)";
+    this->WarnOnce("cell scalar limits", message.str());
   }
+  return true;
+}
+
+vtkUnstructuredVolumeFrameStatistics* vtkUnstructuredVolumeMapper::GetFrameStatistics()
+{
+  this->Base->Statistics->Clear();
+  this->ReportStatistics(this->Base->Statistics);
+  return this->Base->Statistics;
+}
+
+void vtkUnstructuredVolumeMapper::ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics)
+{
+  statistics->SetValue("MeshBuilds", this->MeshUpdates.Builds);
+  statistics->SetValue("PointRefreshes", this->MeshUpdates.PointRefreshes);
+  statistics->SetValue("ValueRefreshes", this->MeshUpdates.ValueRefreshes);
+  statistics->SetValue("TransferFunctionNodes", this->NumberOfTransferFunctionNodes);
+  statistics->SetValue("CyclesBroken", static_cast<double>(this->NumberOfCyclesBroken));
+  statistics->SetValue("GapConstraints", static_cast<double>(this->NumberOfGapConstraints));
+}
+
+bool vtkUnstructuredVolumeMapper::CommitTransferFunction(vtkVolumeProperty* property, double offset,
+  double scale, vtkuv::NormalisedTransferFunction& transferFunction, std::vector<uv::Isosurface>& drawnIsosurfaces,
+  std::size_t maximumNodes)
+{
+  if (transferFunction.Update(property, offset, scale, this->TransferFunctionTolerance, maximumNodes) &&
+    transferFunction.Resampled)
+  {
+    vtkWarningMacro("more than " << maximumNodes << " transfer-function nodes: resampled to that many");
+  }
+  this->NumberOfTransferFunctionNodes = static_cast<int>(transferFunction.Nodes.size());
+  if (transferFunction.Nodes.empty())
+  {
+    vtkErrorMacro("the volume property has no scalar opacity function");
+    return false;
+  }
+  drawnIsosurfaces = this->GetIsosurfaces().Drawn(offset, scale);
+  return true;
+}
+
+bool vtkUnstructuredVolumeMapper::WarnOnce(const std::string& key, const std::string& message)
+{
+  if (!this->Base->WarningsGiven.insert(key).second)
+  {
+    return false;
+  }
+  vtkWarningMacro(<< message);
   return true;
 }
 
@@ -331,10 +381,10 @@ bool vtkUnstructuredVolumeMapper::DrawAndComposite(const vtkUnstructuredVolumeFr
 {
   vtkUnstructuredVolumeFloatTarget& target = this->Base->Target;
   target.Resize(frame.Window, frame.Width, frame.Height, frame.TileWidth, frame.TileHeight);
-  if (frame.OpaqueDepth && !target.CopySceneDepth(frame.OriginX, frame.OriginY) && !this->Base->WarnedMultisample)
+  if (frame.OpaqueDepth && !target.CopySceneDepth(frame.OriginX, frame.OriginY))
   {
-    vtkWarningMacro("multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
-    this->Base->WarnedMultisample = true;
+    this->WarnOnce("multisample",
+      "multisampled render window: opaque geometry does not clip the volume (set MultiSamples to 0)");
   }
   // Every state a mapper's passes may change is restored when this scope ends.
   vtkOpenGLState* state = frame.Window->GetState();

@@ -33,6 +33,8 @@
 #include <cstdint>    // for std::uint64_t
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
+#include <string>     // for std::string
+#include <vector>     // for std::vector
 
 class vtkDataArray;
 class vtkDataSet;
@@ -40,13 +42,16 @@ class vtkImageData;
 class vtkOpenGLRenderWindow;
 class vtkVolumeProperty;
 class vtkUnstructuredVolumeFloatTarget;
+class vtkUnstructuredVolumeFrameStatistics;
 struct vtkUnstructuredVolumeFrame;
 namespace uv
 {
+struct Isosurface;
 class IsosurfaceList;
 }
 namespace vtkuv
 {
+class NormalisedTransferFunction;
 struct RenderedScalar;
 struct VertexGradientCache;
 }
@@ -120,10 +125,9 @@ public:
   /// colour within it in each channel and extinction within it relatively, at every scalar, so a
   /// segment's colour and opacity change by at most about twice it. A sampled colour map (256 nodes)
   /// then costs what its curvature needs. Default 1e-3, under a display's 1/255; 0 keeps every node
-  /// (reference-grade images). GetNumberOfTransferFunctionNodes: the nodes the last frame used.
+  /// (reference-grade images). The statistic TransferFunctionNodes: the nodes the last frame used.
   vtkSetClampMacro(TransferFunctionTolerance, double, 0.0, 0.1);
   vtkGetMacro(TransferFunctionTolerance, double);
-  vtkGetMacro(NumberOfTransferFunctionNodes, int);
   ///@}
 
   enum SegmentIntegrations
@@ -164,14 +168,12 @@ public:
   /// (uvBoundaryGapOrder.h): exact along every pixel's ray unless the constraints form a cycle. It
   /// costs a face adjacency (16 bytes per tetrahedron, built once per mesh), a serial sweep per
   /// view and, on a non-convex mesh, the rays through its boundary faces per view.
-  /// GetNumberOfCyclesBroken: the tetrahedra drawn before a neighbour behind them because the
-  /// constraints formed a cycle. GetNumberOfGapConstraints: the pairs across gaps in the last order.
+  /// The statistics CyclesBroken: the tetrahedra drawn before a neighbour behind them because the
+  /// constraints formed a cycle; GapConstraints: the pairs across gaps in the last order.
   vtkSetClampMacro(VisibilityOrder, int, CENTROID_ORDER, FACE_ORDER);
   vtkGetMacro(VisibilityOrder, int);
   void SetVisibilityOrderToCentroidOrder() { this->SetVisibilityOrder(CENTROID_ORDER); }
   void SetVisibilityOrderToFaceOrder() { this->SetVisibilityOrder(FACE_ORDER); }
-  vtkGetMacro(NumberOfCyclesBroken, vtkIdType);
-  vtkGetMacro(NumberOfGapConstraints, vtkIdType);
   ///@}
 
   enum GradientModes
@@ -208,15 +210,14 @@ public:
   vtkGetMacro(OpacityThreshold, double);
   ///@}
 
-  ///@{
-  /// What the mapper redid for its input's changes, recognised by content (a reader's time steps are
-  /// new objects): full builds of its mesh (new cells, another array), refreshes of the positions
-  /// alone (same cells, the points moved) and of the scalar's values (same cells; the points may
-  /// have moved too), which keep the cells' split, adjacency and what depends on them.
-  int GetNumberOfMeshBuilds() { return this->MeshUpdates.Builds; }
-  int GetNumberOfPointRefreshes() { return this->MeshUpdates.PointRefreshes; }
-  int GetNumberOfValueRefreshes() { return this->MeshUpdates.ValueRefreshes; }
-  ///@}
+  /// What the mapper did in its last frame and since its mesh was built, as named numbers, for
+  /// tests and the benchmark (filled when asked; owned by the mapper). Every mapper reports what
+  /// its input's changes made it redo, recognised by content (a reader's time steps are new
+  /// objects): MeshBuilds (new cells, another array), PointRefreshes (same cells, the points moved)
+  /// and ValueRefreshes (same cells, new values; the points may have moved too), which keep the
+  /// cells' split, adjacency and what depends on them; and TransferFunctionNodes, CyclesBroken and
+  /// GapConstraints (above). Each mapper's header names what it adds.
+  vtkUnstructuredVolumeFrameStatistics* GetFrameStatistics();
 
   /// Bytes of GPU buffers the mesh takes (not the screen-sized images), as of the last frame.
   virtual vtkIdType GetMeshMemoryInBytes() = 0;
@@ -272,6 +273,23 @@ protected:
   /// (`facesBetweenCells`: the faces between cells on either side of the value). Returns true when
   /// the scalar is on cells.
   bool WarnCellScalarLimits(const vtkuv::RenderedScalar& scalar, bool shade, bool facesBetweenCells);
+
+  /// Adds the mapper's statistics to `statistics` (GetFrameStatistics); an override adds its own
+  /// after the superclass's.
+  virtual void ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics);
+
+  /// The commit step of every Prepare, once its mesh knows the scalar's normalisation (a value v is
+  /// drawn as (v - offset) * scale): the transfer function's nodes and the drawn isosurfaces,
+  /// normalised alike, and NumberOfTransferFunctionNodes. `maximumNodes` (0: any number) bounds the
+  /// nodes for a shader that reads them from uniforms (a warning when they are resampled). False,
+  /// after an error, when the volume property has no scalar opacity function.
+  bool CommitTransferFunction(vtkVolumeProperty* property, double offset, double scale,
+    vtkuv::NormalisedTransferFunction& transferFunction, std::vector<uv::Isosurface>& drawnIsosurfaces,
+    std::size_t maximumNodes = 0);
+
+  /// Warns with `message` the first time this mapper is asked to under `key`, and never again under
+  /// it: a render loop would repeat a warning every frame. True when it warned.
+  bool WarnOnce(const std::string& key, const std::string& message);
 
   ///@{
   /// Delegation: a mapper that hands some inputs to a mapper of another kind, which draws them

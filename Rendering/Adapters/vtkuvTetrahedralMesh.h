@@ -415,30 +415,25 @@ private:
   }
 };
 
-/// The warnings a mesh update owes the user, each once per mapper: cells split into tetrahedra and
-/// tetrahedra left out for a NaN scalar.
-struct MeshWarnings
+/// The warnings a mesh update owes the user as (key, message), for a mapper to give once per key:
+/// cells split into tetrahedra and tetrahedra left out for a NaN scalar.
+inline std::vector<std::pair<std::string, std::string>> MeshUpdateWarnings(
+  const TetrahedralMesh& mesh, vtkIdType inputCells)
 {
-  bool Split = false, NaN = false;
-
-  std::vector<std::string> New(const TetrahedralMesh& mesh, vtkIdType inputCells)
+  std::vector<std::pair<std::string, std::string>> messages;
+  if (mesh.SplitCells > 0)
   {
-    std::vector<std::string> messages;
-    if (mesh.SplitCells > 0 && !this->Split)
-    {
-      messages.push_back(std::to_string(mesh.SplitCells) + " of " + std::to_string(inputCells) +
+    messages.emplace_back("split cells", std::to_string(mesh.SplitCells) + " of " + std::to_string(inputCells) +
         " cells are not tetrahedra: splitting them with vtkHexahedraToTetrahedra (once per data change; "
         "split upstream to skip this)");
-      this->Split = true;
-    }
-    if (mesh.NaNTetrahedra > 0 && !this->NaN)
-    {
-      messages.push_back(std::to_string(mesh.NaNTetrahedra) + " tetrahedra touch a NaN scalar and are not drawn");
-      this->NaN = true;
-    }
-    return messages;
   }
-};
+  if (mesh.NaNTetrahedra > 0)
+  {
+    messages.emplace_back(
+      "NaN cells", std::to_string(mesh.NaNTetrahedra) + " tetrahedra touch a NaN scalar and are not drawn");
+  }
+  return messages;
+}
 
 /// Tetrahedra in back-to-front order of their centroids' distance from the eye (along the view under
 /// parallel projection; parallel radix sort), and with `exact`, that order changed where the faces

@@ -7,8 +7,10 @@
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
+#include "vtkUnstructuredVolumeFrameStatistics.h"
 #include "vtkuvHexahedralMesh.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
+#include "vtkUnstructuredVolumePeelImages.h"
 #include "vtkUnstructuredVolumeTexture.h"
 #include "vtkuvNormalisedTransferFunction.h"
 #include "vtkUnstructuredVolumeTransferFunctionTexture.h"
@@ -221,58 +223,7 @@ struct GpuResources
   }
 };
 
-/// The screen-sized images of the peels besides the float target, on one framebuffer: the entry
-/// (ray parameter, boundary face) with its depth, the exit (where each traversal left the mesh), and
-/// a second accumulation image the traversals alternate with the target's colour.
-class PeelImages
-{
-public:
-  vtkNew<vtkTextureObject> Entry, EntryDepth, Exit, Accumulation;
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
-
-  void Resize(vtkOpenGLRenderWindow* window, int width, int height)
-  {
-    if (window == this->Context && width == this->Width && height == this->Height)
-    {
-      return;
-    }
-    for (vtkTextureObject* texture : { this->Entry.Get(), this->Exit.Get(), this->Accumulation.Get() })
-      uvgl::AllocateFloatImage(texture, window, width, height, 4);
-    this->EntryDepth->SetContext(window);
-    this->EntryDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    this->Framebuffer->SetContext(window);
-    this->Context = window;
-    this->Width = width;
-    this->Height = height;
-  }
-
-  /// Copies Accumulation into the target's colour; the framebuffer must be bound.
-  void CopyAccumulationInto(vtkUnstructuredVolumeFloatTarget& target)
-  {
-    this->Framebuffer->AddColorAttachment(0, this->Accumulation);
-    this->Framebuffer->ActivateReadBuffer(0);
-    target.GetFramebuffer()->Bind(GL_DRAW_FRAMEBUFFER);
-    const int w = this->Width, h = this->Height;
-    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST); // float to float: exact
-  }
-
-  void Release()
-  {
-    if (this->Context)
-    {
-      for (vtkTextureObject* texture : { this->Entry.Get(), this->EntryDepth.Get(), this->Exit.Get(),
-             this->Accumulation.Get() })
-        texture->ReleaseGraphicsResources(this->Context);
-      this->Framebuffer->ReleaseGraphicsResources(this->Context);
-    }
-    this->Context = nullptr;
-    this->Width = this->Height = 0;
-  }
-
-private:
-  vtkOpenGLRenderWindow* Context = nullptr;
-  int Width = 0, Height = 0;
-};
+using PeelImages = vtkUnstructuredVolumePeelImages;
 
 /// What both passes of a frame read: the camera in the mesh's recentred model space and the
 /// frame's GL objects.
@@ -511,7 +462,6 @@ public:
   EntryFaces Entries;
   RayStartCell Start;
   int StartCellOfFrame = -1; // where the first peel's rays start (RayStartCell), or -1
-  bool WarnedNaN = false;
   int Peels = 0;
 
   // Meshes of tetrahedra alone go to the tetrahedra mapper (DelegateTetrahedralMeshes).
@@ -550,7 +500,7 @@ public:
 
   // GPU state.
   GpuResources Gpu;
-  PeelImages Images;
+  PeelImages Images{ true }; // with the second accumulation image
   EntryPass Entry;
   TraversePass Traverse;
 
@@ -599,33 +549,19 @@ vtkHexahedralRayCastMapper::vtkHexahedralRayCastMapper()
 
 vtkHexahedralRayCastMapper::~vtkHexahedralRayCastMapper() = default;
 
-vtkIdType vtkHexahedralRayCastMapper::GetNumberOfCells()
+void vtkHexahedralRayCastMapper::ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics)
 {
-  return static_cast<vtkIdType>(this->Impl->Mesh.CellCount());
-}
-vtkIdType vtkHexahedralRayCastMapper::GetNumberOfVisibleCells()
-{
-  return static_cast<vtkIdType>(this->Impl->Entries.VisibleCells());
-}
-vtkIdType vtkHexahedralRayCastMapper::GetNumberOfEntryFaces()
-{
-  return static_cast<vtkIdType>(this->Impl->Entries.BoundaryCount());
-}
-int vtkHexahedralRayCastMapper::GetNumberOfVisibleRegionBuilds()
-{
-  return this->Impl->Entries.RegionBuilds;
-}
-vtkIdType vtkHexahedralRayCastMapper::GetNumberOfBoundaryFaces()
-{
-  return static_cast<vtkIdType>(this->Impl->Mesh.BoundaryCount());
-}
-int vtkHexahedralRayCastMapper::GetNumberOfPeels()
-{
-  return this->Impl->Peels;
-}
-vtkIdType vtkHexahedralRayCastMapper::GetNumberOfTangledCells()
-{
-  return this->Impl->Mesh.TangledCells;
+  this->Superclass::ReportStatistics(statistics);
+  const Internals& impl = *this->Impl;
+  statistics->SetValue("Delegated", impl.Delegated ? 1.0 : 0.0);
+  statistics->SetValue("Cells", static_cast<double>(impl.Mesh.CellCount()));
+  statistics->SetValue("TangledCells", static_cast<double>(impl.Mesh.TangledCells));
+  statistics->SetValue("BoundaryFaces", static_cast<double>(impl.Mesh.BoundaryCount()));
+  statistics->SetValue("Peels", impl.Peels);
+  statistics->SetValue("GradientComputations", impl.Gradients.Computations);
+  statistics->SetValue("VisibleCells", static_cast<double>(impl.Entries.VisibleCells()));
+  statistics->SetValue("EntryFaces", static_cast<double>(impl.Entries.BoundaryCount()));
+  statistics->SetValue("VisibleRegionBuilds", impl.Entries.RegionBuilds);
 }
 vtkIdType vtkHexahedralRayCastMapper::GetMeshMemoryInBytes()
 {
@@ -633,11 +569,6 @@ vtkIdType vtkHexahedralRayCastMapper::GetMeshMemoryInBytes()
     return this->Impl->Tetrahedra->GetMeshMemoryInBytes();
   return static_cast<vtkIdType>(this->Impl->Mesh.Bytes() + sizeof(float) * this->Impl->Gradients.Values.size());
 }
-int vtkHexahedralRayCastMapper::GetNumberOfGradientComputations()
-{
-  return this->Impl->Gradients.Computations;
-}
-
 void vtkHexahedralRayCastMapper::SetInputData(vtkDataSet* input)
 {
   this->SetInputDataInternal(0, input);
@@ -647,11 +578,6 @@ int vtkHexahedralRayCastMapper::FillInputPortInformation(int, vtkInformation* in
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   return 1;
-}
-
-bool vtkHexahedralRayCastMapper::GetLastFrameDelegated()
-{
-  return this->Impl->Delegated;
 }
 
 void vtkHexahedralRayCastMapper::ForgetMesh()
@@ -702,32 +628,12 @@ bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const vtkuv::Rend
   {
     vtkWarningMacro(<< mesh.FlatCells << " cells are not 3D (vertices, lines, polygons) and are left out");
   }
-  if (built && mesh.NaNCells > 0 && !this->Impl->WarnedNaN)
+  if (built && mesh.NaNCells > 0)
   {
-    vtkWarningMacro(<< mesh.NaNCells << " cells touch a NaN scalar and are left out (holes in the mesh)");
-    this->Impl->WarnedNaN = true;
+    this->WarnOnce("NaN cells",
+      std::to_string(mesh.NaNCells) + " cells touch a NaN scalar and are left out (holes in the mesh)");
   }
   return mesh.CellCount() > 0 && mesh.BoundaryCount() > 0;
-}
-
-bool vtkHexahedralRayCastMapper::UpdateTransferFunction(vtkVolumeProperty* property)
-{
-  Internals& impl = *this->Impl;
-  const uv::ScalarNormalisation& normalisation = impl.Mesh.Points.Normalisation;
-  // The traversal reads its nodes from uniforms only.
-  if (impl.TransferFunction.Update(property, normalisation.Offset, normalisation.Scale,
-        this->TransferFunctionTolerance, static_cast<std::size_t>(uvgl::MaximumUniformNodes)) &&
-    impl.TransferFunction.Resampled)
-  {
-    vtkWarningMacro("more than " << uvgl::MaximumUniformNodes << " transfer-function nodes: resampled to that many");
-  }
-  this->NumberOfTransferFunctionNodes = static_cast<int>(impl.TransferFunction.Nodes.size());
-  if (impl.TransferFunction.Nodes.empty())
-  {
-    vtkErrorMacro("the volume property has no scalar opacity function");
-    return false;
-  }
-  return true;
 }
 
 bool vtkHexahedralRayCastMapper::HandsOver(vtkDataSet* input, const vtkuv::RenderedScalar& scalar)
@@ -752,10 +658,13 @@ bool vtkHexahedralRayCastMapper::Prepare(const vtkUnstructuredVolumeFrame& frame
   impl.Delegated = this->HandsOver(input, scalar);
   if (impl.Delegated)
     return this->PrepareThrough(impl.TetrahedraMapper(), frame);
-  if (!this->UpdateMesh(input, scalar) || !this->UpdateTransferFunction(frame.Property))
+  if (!this->UpdateMesh(input, scalar))
     return false;
+  // The traversal reads its nodes from uniforms only.
   const uv::ScalarNormalisation& normalisation = impl.Mesh.Points.Normalisation;
-  impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(normalisation.Offset, normalisation.Scale);
+  if (!this->CommitTransferFunction(frame.Property, normalisation.Offset, normalisation.Scale, impl.TransferFunction,
+        impl.DrawnIsosurfaces, static_cast<std::size_t>(uvgl::MaximumUniformNodes)))
+    return false;
   // A cell scalar's isosurfaces are faces between cells (the walk draws them as it crosses); the
   // volume is unlit anyway (the shader lights only isosurfaces).
   this->WarnCellScalarLimits(scalar, false, true);

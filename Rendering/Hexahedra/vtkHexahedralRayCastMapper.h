@@ -133,33 +133,11 @@ public:
   /// own), a cell scalar's isosurfaces (drawn here as faces between cells) and isosurfaces lit by
   /// CELL_GRADIENTS (that mapper lights with vertex gradients). The mapper's input, scalar
   /// selection, isosurfaces and base settings go with the mesh; IntegrationMode, FixedSteps,
-  /// ExactSegmentEnds and MaximumPeels do not apply (SegmentIntegration does). GetLastFrameDelegated
-  /// tells whether the last frame was handed over; the counters below then describe no frame.
+  /// ExactSegmentEnds and MaximumPeels do not apply (SegmentIntegration does). The statistic
+  /// Delegated tells whether the last frame was handed over; the others then describe no frame.
   vtkSetMacro(DelegateTetrahedralMeshes, bool);
   vtkGetMacro(DelegateTetrahedralMeshes, bool);
   vtkBooleanMacro(DelegateTetrahedralMeshes, bool);
-  bool GetLastFrameDelegated();
-  ///@}
-
-  ///@{
-  /// What the last frame did: cells in the mesh, boundary faces, peels run, mesh builds, and the
-  /// cells found tangled (folded over themselves; warned about once per mesh build).
-  vtkIdType GetNumberOfCells();
-  vtkIdType GetNumberOfTangledCells();
-  vtkIdType GetNumberOfBoundaryFaces();
-  int GetNumberOfPeels();
-  ///@}
-
-  /// Times vtkVertexGradientFilter ran since creation (VERTEX_GRADIENTS without a gradient array).
-  int GetNumberOfGradientComputations();
-
-  ///@{
-  /// Skipping (SkipInvisibleCells): the cells the walk takes (every cell when off), the faces rays
-  /// enter them by (the visible region's boundary, or the mesh's), and how often the region was
-  /// rebuilt (only when a transfer-function or isovalue edit changes which cells are visible).
-  vtkIdType GetNumberOfVisibleCells();
-  vtkIdType GetNumberOfEntryFaces();
-  int GetNumberOfVisibleRegionBuilds();
   ///@}
 
   /// Cells, points, adjacency, boundary faces and vertex gradients (not the screen-sized images).
@@ -170,6 +148,15 @@ public:
   void SetInputData(vtkDataSet* input) override;
 
 protected:
+  /// The statistics (GetFrameStatistics) the caster adds: Delegated (above); of the last frame,
+  /// Cells in the mesh, BoundaryFaces, Peels run and TangledCells (folded over themselves; warned
+  /// about once per mesh build); GradientComputations, the times vtkVertexGradientFilter ran since
+  /// creation (VERTEX_GRADIENTS without a gradient array); and with skipping (SkipInvisibleCells)
+  /// VisibleCells the walk takes (every cell when off), EntryFaces rays enter them by (the visible
+  /// region's boundary, or the mesh's) and VisibleRegionBuilds (only when a transfer-function or
+  /// isovalue edit changes which cells are visible).
+  void ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics) override;
+
   vtkHexahedralRayCastMapper();
   ~vtkHexahedralRayCastMapper() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
@@ -193,7 +180,6 @@ private:
   void operator=(const vtkHexahedralRayCastMapper&) = delete;
 
   bool UpdateMesh(vtkDataSet* input, const vtkuv::RenderedScalar& scalar);
-  bool UpdateTransferFunction(vtkVolumeProperty* property);
   bool HandsOver(vtkDataSet* input, const vtkuv::RenderedScalar& scalar);
 
   class Internals;

@@ -25,6 +25,7 @@
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
+#include "vtkUnstructuredVolumeFrameStatistics.h"
 #include "vtkUnstructuredVolumeOpacityMask.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
 #include "vtkuvTetrahedralMesh.h"
@@ -49,11 +50,11 @@
 
 
 #include <algorithm>
-#include <bitset>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,28 +66,6 @@ namespace
 constexpr int MaximumShells = 4096;  // beyond it the sample distance is widened (with a warning)
 constexpr float InsideTolerance = 1e-5f; // barycentric slack: no cracks between neighbours
 
-/// Warnings a mapper gives once (a render loop would repeat them every frame).
-class WarningsGiven
-{
-public:
-  enum Kind
-  {
-    WidenedSampleDistance,
-    TextureLimits,
-    CellSurfacesByProjection,
-    Kinds
-  };
-  /// True the first time `kind` is asked for.
-  bool First(Kind kind)
-  {
-    const bool first = !this->Given.test(kind);
-    this->Given.set(kind);
-    return first;
-  }
-
-private:
-  std::bitset<Kinds> Given;
-};
 } // namespace
 
 class vtkBarycentricShellMapper::Internals
@@ -128,8 +107,6 @@ public:
     vtkMTimeType Time = 0;
     std::uint64_t MeshVersion = 0, Version = 0;
   } Coordinates; // where the mesh's texture coordinates come from, and their version
-  vtkuv::MeshWarnings Warned;
-  WarningsGiven Warnings;
   uv::TetrahedronFaceNeighbours CellSurfaces; // per tetrahedron, for a cell scalar's surfaces
   std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
   // Per tetrahedron, the coincident copies it stands for (uv::CoincidentCellDensities; 0: merged
@@ -270,8 +247,8 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(
   }
   if (change == vtkuv::TetrahedralMesh::Change::All)
   {
-    for (const std::string& warning : this->Warned.New(this->Mesh, input->GetNumberOfCells()))
-      vtkWarningWithObjectMacro(self, << warning);
+    for (const auto& [key, warning] : vtkuv::MeshUpdateWarnings(this->Mesh, input->GetNumberOfCells()))
+      self->WarnOnce(key, warning);
   }
   if (change == vtkuv::TetrahedralMesh::Change::All)
     this->Order.Invalidate(); // new cells (the order sees moved points itself)
@@ -292,23 +269,18 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
     this->Now.ScalarOffset = range[0];
     this->Now.ScalarScale = range[1] > range[0] ? 1.0 / (range[1] - range[0]) : 1.0;
   }
-  this->TransferFunction.Update(
-    frame.Property, this->Now.ScalarOffset, this->Now.ScalarScale, self->GetTransferFunctionTolerance());
-  self->NumberOfTransferFunctionNodes = static_cast<int>(this->TransferFunction.Nodes.size());
-  if (this->TransferFunction.Nodes.empty())
+  if (!self->CommitTransferFunction(frame.Property, this->Now.ScalarOffset, this->Now.ScalarScale,
+        this->TransferFunction, this->DrawnIsosurfaces))
   {
-    vtkErrorWithObjectMacro(self, "the volume property has no scalar opacity function");
     return false;
   }
-  this->DrawnIsosurfaces = self->GetIsosurfaces().Drawn(this->Now.ScalarOffset, this->Now.ScalarScale);
   if (!this->Now.Textured)
     self->WarnCellScalarLimits(this->Mesh.Scalar, frame.Property->GetShade() != 0, true);
   if (this->Now.Textured && (!this->DrawnIsosurfaces.empty() || self->RenderMode == CELL_PROJECTION))
   {
     // The field inside a cell is the image's, not linear: no closed-form crossings or whole segments.
-    if (this->Warnings.First(WarningsGiven::TextureLimits))
-      vtkWarningWithObjectMacro(self, "with a texture image only the shells are drawn: isosurfaces and cell "
-                                      "projection need the mesh's own linear scalar");
+    self->WarnOnce("texture limits", "with a texture image only the shells are drawn: isosurfaces and cell "
+                                     "projection need the mesh's own linear scalar");
     this->DrawnIsosurfaces.clear();
   }
   this->Isovalues.clear();
@@ -319,9 +291,9 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
   this->Now.CellSurfaces = !this->Now.Textured && this->Mesh.OnCells() && !this->Isovalues.empty();
   if (this->Now.CellSurfaces)
     this->UpdateNeighbourValues();
-  if (this->Now.CellSurfaces && self->RenderMode == SHELLS && this->Warnings.First(WarningsGiven::CellSurfacesByProjection))
-    vtkWarningWithObjectMacro(self, "isosurfaces of a cell scalar lie on the faces between cells: drawn by cell "
-                                    "projection (exact for a cell scalar), not by shells");
+  if (this->Now.CellSurfaces && self->RenderMode == SHELLS)
+    self->WarnOnce("cell surfaces by projection", "isosurfaces of a cell scalar lie on the faces between cells: "
+                                                  "drawn by cell projection (exact for a cell scalar), not by shells");
   return true;
 }
 
@@ -440,10 +412,12 @@ bool vtkBarycentricShellMapper::Internals::UpdateShells(
   {
     return false;
   }
-  if (this->Layout.Widened && this->Warnings.First(WarningsGiven::WidenedSampleDistance))
+  if (this->Layout.Widened)
   {
-    vtkWarningWithObjectMacro(self, "the sample distance would need more than " << MaximumShells
-                                    << " shells here: widened to " << this->Layout.SampleDistance);
+    std::ostringstream message;
+    message << "the sample distance would need more than " << MaximumShells << " shells here: widened to "
+            << this->Layout.SampleDistance;
+    self->WarnOnce("widened sample distance", message.str());
   }
   this->Now.SampleDistance = this->Layout.SampleDistance;
   this->Buckets.Update(this->Layout, this->VolumeRanges, this->IsosurfaceRanges,
@@ -780,37 +754,18 @@ vtkImageData* vtkBarycentricShellMapper::GetTextureImage()
   return this->Impl->TextureImage;
 }
 
-int vtkBarycentricShellMapper::GetNumberOfShells()
+void vtkBarycentricShellMapper::ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics)
 {
-  return this->Impl->Shells;
-}
-int vtkBarycentricShellMapper::GetNumberOfDrawnIsosurfaceLayers()
-{
-  return this->Impl->IsosurfaceLayers;
-}
-int vtkBarycentricShellMapper::GetNumberOfSkippedShells()
-{
-  return this->Impl->SkippedShells;
-}
-vtkIdType vtkBarycentricShellMapper::GetNumberOfDrawnTetrahedra()
-{
-  return this->Impl->DrawnTetrahedra;
-}
-double vtkBarycentricShellMapper::GetLastSampleDistance()
-{
-  return this->Impl->LastSampleDistance;
-}
-int vtkBarycentricShellMapper::GetNumberOfSegmentTableBuilds()
-{
-  return this->Impl->Table.Builds;
-}
-int vtkBarycentricShellMapper::GetNumberOfSorts()
-{
-  return this->Impl->Order.Sorts;
-}
-int vtkBarycentricShellMapper::GetNumberOfGradientComputations()
-{
-  return this->Impl->Gradients.Computations;
+  this->Superclass::ReportStatistics(statistics);
+  const Internals& impl = *this->Impl;
+  statistics->SetValue("Shells", impl.Shells);
+  statistics->SetValue("DrawnIsosurfaceLayers", impl.IsosurfaceLayers);
+  statistics->SetValue("SkippedShells", impl.SkippedShells);
+  statistics->SetValue("DrawnTetrahedra", static_cast<double>(impl.DrawnTetrahedra));
+  statistics->SetValue("SampleDistance", impl.LastSampleDistance);
+  statistics->SetValue("SegmentTableBuilds", impl.Table.Builds);
+  statistics->SetValue("Sorts", impl.Order.Sorts);
+  statistics->SetValue("GradientComputations", impl.Gradients.Computations);
 }
 
 vtkIdType vtkBarycentricShellMapper::GetMeshMemoryInBytes()

@@ -109,27 +109,18 @@ public:
   vtkImageData* GetTextureImage();
   ///@}
 
-  ///@{
-  /// What the last frame did, for tests: shells processed and skipped (empty), isosurface layers
-  /// drawn (passes that found a crossing), tetrahedra drawn summed over passes, the sample distance
-  /// used; and since creation: segment tables built, vertex-gradient computations, visibility sorts
-  /// (cell projection: only when the view, the points or the drawn cells change), full mesh builds,
-  /// point-only refreshes (deformation).
-  int GetNumberOfShells();
-  int GetNumberOfDrawnIsosurfaceLayers();
-  int GetNumberOfSkippedShells();
-  vtkIdType GetNumberOfDrawnTetrahedra();
-  double GetLastSampleDistance();
-  int GetNumberOfSegmentTableBuilds();
-  int GetNumberOfGradientComputations();
-  int GetNumberOfSorts();
-  ///@}
-
   /// Tetrahedra, points, gradients, texture coordinates and the cell lists on the GPU (not the
   /// screen-sized images), as of the last frame.
   vtkIdType GetMeshMemoryInBytes() override;
 
 protected:
+  /// The statistics (GetFrameStatistics) the shells add: of the last frame, Shells processed and
+  /// SkippedShells (empty), DrawnIsosurfaceLayers (passes that found a crossing), DrawnTetrahedra
+  /// summed over passes, the SampleDistance used; since creation, SegmentTableBuilds,
+  /// GradientComputations (vertex gradients) and Sorts (cell projection: only when the view, the
+  /// points or the drawn cells change).
+  void ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics) override;
+
   vtkBarycentricShellMapper();
   ~vtkBarycentricShellMapper() override;
 

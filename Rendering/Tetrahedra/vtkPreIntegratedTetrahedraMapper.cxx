@@ -11,6 +11,7 @@
 #include "vtkUnstructuredVolumeBufferTexture.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
+#include "vtkUnstructuredVolumeFrameStatistics.h"
 #include "vtkUnstructuredVolumeIndexBuffer.h"
 #include "vtkUnstructuredVolumeOpacityMask.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
@@ -115,7 +116,6 @@ public:
   std::vector<double> Isovalues;
   uv::CellLists Visible;
   vtkuv::VisibilityOrder Order;
-  vtkuv::MeshWarnings Warned;
   bool NeedGradients = false, Shade = false;
   // A cell scalar's isosurfaces (faces between cells): per tetrahedron the values across its faces,
   // and its scalar range widened to them, so a transparent tetrahedron whose front face holds a
@@ -288,65 +288,25 @@ vtkPreIntegratedTetrahedraMapper::vtkPreIntegratedTetrahedraMapper()
 
 vtkPreIntegratedTetrahedraMapper::~vtkPreIntegratedTetrahedraMapper() = default;
 
-vtkIdType vtkPreIntegratedTetrahedraMapper::GetNumberOfDrawnTetrahedra()
+void vtkPreIntegratedTetrahedraMapper::ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics)
 {
-  return this->Impl->DrawnTetrahedra;
-}
-int vtkPreIntegratedTetrahedraMapper::GetNumberOfSorts()
-{
-  return this->Impl->Order.Sorts;
-}
-int vtkPreIntegratedTetrahedraMapper::GetNumberOfGradientComputations()
-{
-  return this->Impl->Gradients.Computations;
-}
-int vtkPreIntegratedTetrahedraMapper::GetNumberOfMeshUploads()
-{
-  return this->Impl->MeshUploads;
-}
-int vtkPreIntegratedTetrahedraMapper::GetNumberOfTransferFunctionUploads()
-{
-  return this->Impl->TransferFunctionUploads;
-}
-int vtkPreIntegratedTetrahedraMapper::GetNumberOfVisibleListBuilds()
-{
-  return this->Impl->Visible.Builds;
-}
-double vtkPreIntegratedTetrahedraMapper::GetOpaquePixelShare()
-{
-  return this->Impl->OpaqueShare;
-}
-bool vtkPreIntegratedTetrahedraMapper::GetDrewFrontToBack()
-{
-  return this->Impl->FrontToBack;
-}
-int vtkPreIntegratedTetrahedraMapper::GetNumberOfOpacityMaskRefreshes()
-{
-  return this->Impl->MaskRefreshes;
-}
-bool vtkPreIntegratedTetrahedraMapper::GetUsedRayCasting()
-{
-  return this->Impl->RayCasting;
-}
-int vtkPreIntegratedTetrahedraMapper::GetNumberOfPeels()
-{
-  return this->Impl->RayCasting ? this->Impl->Peels : 0;
-}
-bool vtkPreIntegratedTetrahedraMapper::GetUsedSegmentTable()
-{
-  return this->Impl->UseTable;
-}
-int vtkPreIntegratedTetrahedraMapper::GetNumberOfSegmentTableBuilds()
-{
-  return this->Impl->Table.Builds;
-}
-double vtkPreIntegratedTetrahedraMapper::GetSegmentTableError()
-{
-  return this->Impl->Table.Builds > 0 ? this->Impl->Table.Error : -1.0;
-}
-vtkIdType vtkPreIntegratedTetrahedraMapper::GetNumberOfShadedFragments()
-{
-  return static_cast<vtkIdType>(this->Impl->ShadedFragments);
+  this->Superclass::ReportStatistics(statistics);
+  const Internals& impl = *this->Impl;
+  statistics->SetValue("UsedRayCasting", impl.RayCasting ? 1.0 : 0.0);
+  statistics->SetValue("Peels", impl.RayCasting ? impl.Peels : 0);
+  statistics->SetValue("DrawnTetrahedra", static_cast<double>(impl.DrawnTetrahedra));
+  statistics->SetValue("Sorts", impl.Order.Sorts);
+  statistics->SetValue("GradientComputations", impl.Gradients.Computations);
+  statistics->SetValue("MeshUploads", impl.MeshUploads);
+  statistics->SetValue("TransferFunctionUploads", impl.TransferFunctionUploads);
+  statistics->SetValue("VisibleListBuilds", impl.Visible.Builds);
+  statistics->SetValue("UsedSegmentTable", impl.UseTable ? 1.0 : 0.0);
+  statistics->SetValue("SegmentTableBuilds", impl.Table.Builds);
+  statistics->SetValue("SegmentTableError", impl.Table.Builds > 0 ? impl.Table.Error : -1.0);
+  statistics->SetValue("DrewFrontToBack", impl.FrontToBack ? 1.0 : 0.0);
+  statistics->SetValue("OpaquePixelShare", impl.OpaqueShare);
+  statistics->SetValue("OpacityMaskRefreshes", impl.MaskRefreshes);
+  statistics->SetValue("ShadedFragments", static_cast<double>(impl.ShadedFragments));
 }
 
 vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
@@ -416,8 +376,8 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
     impl.Order.Invalidate(); // moved points it sees itself; new values change it only through the list
   if (change != vtkuv::TetrahedralMesh::Change::Nothing)
   {
-    for (const std::string& warning : impl.Warned.New(impl.Mesh, input->GetNumberOfCells()))
-      vtkWarningMacro(<< warning);
+    for (const auto& [key, warning] : vtkuv::MeshUpdateWarnings(impl.Mesh, input->GetNumberOfCells()))
+      this->WarnOnce(key, warning);
   }
   if (impl.Mesh.Size() == 0)
   {
@@ -427,15 +387,11 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   // Transfer function and isosurfaces, normalised like the scalar (a cell scalar's are faces between
   // cells).
   const bool onCells = this->WarnCellScalarLimits(scalar, property->GetShade() != 0, true);
-  impl.TransferFunction.Update(
-    property, impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale, this->TransferFunctionTolerance);
-  this->NumberOfTransferFunctionNodes = static_cast<int>(impl.TransferFunction.Nodes.size());
-  if (impl.TransferFunction.Nodes.empty())
+  if (!this->CommitTransferFunction(property, impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale,
+        impl.TransferFunction, impl.DrawnIsosurfaces))
   {
-    vtkErrorMacro("the volume property has no scalar opacity function");
     return false;
   }
-  impl.DrawnIsosurfaces = this->GetIsosurfaces().Drawn(impl.Mesh.Normalisation.Offset, impl.Mesh.Normalisation.Scale);
   impl.Isovalues.clear();
   for (const uv::Isosurface& s : impl.DrawnIsosurfaces)
     impl.Isovalues.push_back(s.Value);

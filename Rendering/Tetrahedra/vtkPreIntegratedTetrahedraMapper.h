@@ -122,49 +122,20 @@ public:
   /// tetrahedra number at least half the viewport's pixels and none overlap (a folded face: tangled
   /// input cells, which the optical model adds up and a walk would see one of), and projects the
   /// rest. Frames that draw a cell scalar's isosurfaces, or whose near plane may cut the mesh's
-  /// bounds, are projected whatever the mode. GetUsedRayCasting: what the last frame did.
+  /// bounds, are projected whatever the mode. The statistic UsedRayCasting: what the last frame did;
+  /// Peels: with ray casting, the walk passes the last frame ran (one per run of the mesh along the
+  /// rays that cross it most often: a convex mesh takes one).
   vtkSetClampMacro(RenderMode, int, PROJECTION, AUTOMATIC);
   vtkGetMacro(RenderMode, int);
   void SetRenderModeToProjection() { this->SetRenderMode(PROJECTION); }
   void SetRenderModeToRayCasting() { this->SetRenderMode(RAY_CASTING); }
   void SetRenderModeToAutomatic() { this->SetRenderMode(AUTOMATIC); }
-  bool GetUsedRayCasting();
-  /// Ray casting: the walk passes the last frame ran (one per run of the mesh along the rays that
-  /// cross it most often: a convex mesh takes one).
-  int GetNumberOfPeels();
   ///@}
 
   ///@{
-  /// What the last frames did, for tests: tetrahedra drawn in the last frame, visibility sorts,
-  /// gradient computations, uploads of the mesh and of the transfer function, visible-list builds.
-  vtkIdType GetNumberOfDrawnTetrahedra();
-  int GetNumberOfSorts();
-  int GetNumberOfGradientComputations();
-  int GetNumberOfMeshUploads();
-  int GetNumberOfTransferFunctionUploads();
-  int GetNumberOfVisibleListBuilds();
-  ///@}
-
-  ///@{
-  /// The segment table (SegmentIntegration): whether the last frame read it, its builds, and its
-  /// largest error against the exact segments as last built (any channel of premultiplied colour
-  /// and opacity; -1 before the first build).
-  bool GetUsedSegmentTable();
-  int GetNumberOfSegmentTableBuilds();
-  double GetSegmentTableError();
-  ///@}
-
-  ///@{
-  /// Early termination (see the class description): whether the last frame composited front to
-  /// back, the share of covered pixels the last measured frame left opaque (what the next frame's
-  /// order is chosen by; -1 where the order is not chosen; measured every frame from half the share
-  /// that turns the order on, else every eighth frame), the opacity-mask refreshes it ran, and, with
-  /// CountShadedFragments on (default off: an occlusion query per batch, each waited for), the
-  /// fragments that passed the mask and were not discarded.
-  bool GetDrewFrontToBack();
-  double GetOpaquePixelShare();
-  int GetNumberOfOpacityMaskRefreshes();
-  vtkIdType GetNumberOfShadedFragments();
+  /// With CountShadedFragments on (default off: an occlusion query per batch, each waited for), the
+  /// statistic ShadedFragments counts the fragments that passed the opacity mask and were not
+  /// discarded.
   vtkSetMacro(CountShadedFragments, bool);
   vtkGetMacro(CountShadedFragments, bool);
   ///@}
@@ -179,6 +150,18 @@ public:
   vtkIdType GetHostMemoryInBytes();
 
 protected:
+  /// The statistics (GetFrameStatistics) the mapper adds besides UsedRayCasting and Peels (above):
+  /// DrawnTetrahedra in the last frame; since creation, visibility Sorts, GradientComputations,
+  /// MeshUploads, TransferFunctionUploads and VisibleListBuilds; the segment table's
+  /// (SegmentIntegration) UsedSegmentTable (the last frame read it), SegmentTableBuilds and
+  /// SegmentTableError, its largest error against the exact segments as last built (any channel of
+  /// premultiplied colour and opacity; -1 before the first build); early termination's (see the
+  /// class description) DrewFrontToBack, OpaquePixelShare (the share of covered pixels the last
+  /// measured frame left opaque, which the next frame's order is chosen by; -1 where the order is
+  /// not chosen; measured every frame from half the share that turns the order on, else every
+  /// eighth frame), OpacityMaskRefreshes and ShadedFragments.
+  void ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics) override;
+
   vtkPreIntegratedTetrahedraMapper();
   ~vtkPreIntegratedTetrahedraMapper() override;
 

@@ -26,6 +26,7 @@
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
 #include "vtkUnstructuredVolumeOpenGL.h"
+#include "vtkUnstructuredVolumePeelImages.h"
 #include "vtkuvTetrahedralMesh.h"
 
 #include "vtkNew.h"
@@ -78,19 +79,7 @@ public:
   }
 
   /// Entry (boundary face, ray parameter), its depth and the walk's exit, at the frame's size.
-  void Resize(vtkOpenGLRenderWindow* window, int width, int height)
-  {
-    if (window == this->Context && width == this->Width && height == this->Height)
-      return;
-    for (vtkTextureObject* texture : { this->Entry.Get(), this->Exit.Get() })
-      uvgl::AllocateFloatImage(texture, window, width, height, 4);
-    this->EntryDepth->SetContext(window);
-    this->EntryDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    this->Framebuffer->SetContext(window);
-    this->Context = window;
-    this->Width = width;
-    this->Height = height;
-  }
+  void Resize(vtkOpenGLRenderWindow* window, int width, int height) { this->Images.Resize(window, width, height); }
 
   /// The entry pass of one peel into Entry; returns the samples that passed (0: no ray enters
   /// again), or -1 when the program failed. Leaves the target bound.
@@ -100,10 +89,10 @@ public:
     const glm::dvec3 bounds[2], bool firstPeel)
   {
     vtkOpenGLState* state = frame.Window->GetState();
-    this->Framebuffer->Bind();
-    this->Framebuffer->AddColorAttachment(0, this->Entry);
-    this->Framebuffer->AddDepthAttachment(this->EntryDepth);
-    this->Framebuffer->ActivateDrawBuffers(1);
+    this->Images.Framebuffer->Bind();
+    this->Images.Framebuffer->AddColorAttachment(0, this->Images.Entry);
+    this->Images.Framebuffer->AddDepthAttachment(this->Images.EntryDepth);
+    this->Images.Framebuffer->ActivateDrawBuffers(1);
     state->vtkglDisable(GL_BLEND);
     state->vtkglClearColor(0.0f, -1.0f, 0.0f, 0.0f); // green < 0: no entry
     state->vtkglDepthMask(GL_TRUE);
@@ -118,8 +107,8 @@ public:
       this->BoundaryTexture.Bind(program, "boundaryFaces");
       tetrahedronPoints.Bind(program, "tetrahedronPoints");
       points.Bind(program, "pointData");
-      this->Exit->Activate();
-      program->SetUniformi("previousExit", this->Exit->GetTextureUnit());
+      this->Images.Exit->Activate();
+      program->SetUniformi("previousExit", this->Images.Exit->GetTextureUnit());
       program->SetUniformi("firstPeel", firstPeel ? 1 : 0);
       const glm::dmat4 modelToClip = frame.ModelToClip(center);
       uvgl::SetUniformMatrix(program, "modelToClip", modelToClip);
@@ -134,12 +123,12 @@ public:
       const std::size_t faces = firstPeel ? this->Boundary.size() : this->Reentry;
       samples = uvgl::SamplesPassed([&] { uvgl::DrawItemsInChunks(program, "faceOffset", GL_TRIANGLES, faces, 3); });
       target.GetNoAttributes()->Release();
-      this->Exit->Deactivate();
+      this->Images.Exit->Deactivate();
       this->BoundaryTexture.Unbind();
       tetrahedronPoints.Unbind();
       points.Unbind();
     }
-    this->Framebuffer->RemoveDepthAttachment();
+    this->Images.Framebuffer->RemoveDepthAttachment();
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);
     target.GetFramebuffer()->Bind();
@@ -154,7 +143,7 @@ public:
   {
     vtkOpenGLState* state = frame.Window->GetState();
     vtkOpenGLFramebufferObject* framebuffer = target.GetFramebuffer();
-    framebuffer->AddColorAttachment(1, this->Exit);
+    framebuffer->AddColorAttachment(1, this->Images.Exit);
     framebuffer->ActivateDrawBuffers(2);
     const float done[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     glClearBufferfv(GL_COLOR, 1, done);
@@ -162,12 +151,12 @@ public:
     state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
     // Only pixels the entry pass wrote (depth below 1) are walked: the others fail the test before
     // their fragments are shaded.
-    target.AttachDepth(this->EntryDepth);
+    target.AttachDepth(this->Images.EntryDepth);
     state->vtkglEnable(GL_DEPTH_TEST);
     state->vtkglDepthFunc(GL_GREATER);
     state->vtkglDepthMask(GL_FALSE);
-    this->Entry->Activate();
-    program->SetUniformi("entry", this->Entry->GetTextureUnit());
+    this->Images.Entry->Activate();
+    program->SetUniformi("entry", this->Images.Entry->GetTextureUnit());
     this->BoundaryTexture.Bind(program, "boundaryFaces");
     this->NeighbourTexture.Bind(program, "faceNeighbours");
     program->SetUniformi("maximumSteps", maximumSteps);
@@ -175,7 +164,7 @@ public:
     target.GetNoAttributes()->Bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     target.GetNoAttributes()->Release();
-    this->Entry->Deactivate();
+    this->Images.Entry->Deactivate();
     this->BoundaryTexture.Unbind();
     this->NeighbourTexture.Unbind();
     state->vtkglDisable(GL_DEPTH_TEST);
@@ -209,14 +198,7 @@ public:
   {
     this->NeighbourTexture.Release();
     this->BoundaryTexture.Release();
-    if (this->Context)
-    {
-      for (vtkTextureObject* texture : { this->Entry.Get(), this->EntryDepth.Get(), this->Exit.Get() })
-        texture->ReleaseGraphicsResources(this->Context);
-      this->Framebuffer->ReleaseGraphicsResources(this->Context);
-    }
-    this->Context = nullptr;
-    this->Width = this->Height = 0;
+    this->Images.Release();
   }
 
 private:
@@ -230,10 +212,7 @@ private:
   std::size_t Folded = 0;
   int Builds = 0;
   vtkUnstructuredVolumeBufferTexture NeighbourTexture, BoundaryTexture;
-  vtkNew<vtkTextureObject> Entry, EntryDepth, Exit;
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkOpenGLRenderWindow* Context = nullptr;
-  int Width = 0, Height = 0;
+  vtkUnstructuredVolumePeelImages Images{ false }; // no second accumulation: the walk blends into the target
 };
 
 #endif

@@ -461,12 +461,14 @@ def work_done(mapper, window, renderer, camera):
         renderer.SetActiveCamera(camera)
         window.Render()
         mapper.SetCountShadedFragments(False)
-        return {"tetrahedra drawn": mapper.GetNumberOfDrawnTetrahedra(),
-                "fragments shaded": mapper.GetNumberOfShadedFragments()}
-    if hasattr(mapper, "GetNumberOfVisibleCells"):
-        return {"cells walked": mapper.GetNumberOfVisibleCells()}
-    if hasattr(mapper, "GetNumberOfDrawnTetrahedra"):
-        return {"tetrahedra drawn": mapper.GetNumberOfDrawnTetrahedra()}
+        statistics = mapper.GetFrameStatistics()
+        return {"tetrahedra drawn": int(statistics.GetValue("DrawnTetrahedra")),
+                "fragments shaded": int(statistics.GetValue("ShadedFragments"))}
+    statistics = mapper.GetFrameStatistics() if hasattr(mapper, "GetFrameStatistics") else None
+    if statistics and statistics.HasValue("VisibleCells"):
+        return {"cells walked": int(statistics.GetValue("VisibleCells"))}
+    if statistics and statistics.HasValue("DrawnTetrahedra"):
+        return {"tetrahedra drawn": int(statistics.GetValue("DrawnTetrahedra"))}
     return {}
 
 
@@ -780,7 +782,56 @@ def settle_allocator():
     del block
 
 
-def main():
+def view_errors(images, references):
+    """Each view's errors against its reference (RMSE, covered RMSE, PSNR, maximum, 99th percentile),
+    and the first view's error image."""
+    errors, heat = [], None
+    for k, (image, reference) in enumerate(zip(images, references)):
+        metrics = vtkVolumeImageErrorMetrics()
+        metrics.SetChannels(3)  # RGB over black = premultiplied colour; VTK's alpha varies by mapper
+        if not metrics.Compare(image, reference):
+            raise RuntimeError("image comparison failed")
+        errors.append((metrics.GetRMSE(), metrics.GetCoveredRMSE(), metrics.GetPSNR(),
+                       metrics.GetMaximumError(), metrics.GetPercentile99Error()))
+        if k == 0:
+            heat = vtkImageData()
+            heat.DeepCopy(metrics.GetErrorImage())
+    return errors, heat
+
+
+def result_row(scene, name, mesh, size, views, preparation, frames, memory, mesh_bytes, host_bytes, errors, work):
+    """One mapper's row of the results on one scene."""
+    quartiles = statistics.quantiles(frames, n=4) if len(frames) > 1 else [frames[0]] * 3
+    return {
+        "scene": scene, "mapper": name, "cells": mesh.GetNumberOfCells(), "size": size, "views": views,
+        "preparation_s": preparation, "median_s": statistics.median(frames),
+        "p25_s": quartiles[0], "p75_s": quartiles[2], "min_s": min(frames), "max_s": max(frames),
+        "memory_mb": memory,
+        # GPU buffers of the mesh per cell of the scene's mesh (a hexahedron, or its tetrahedra).
+        "gpu_bytes_per_cell": None if mesh_bytes is None else mesh_bytes / mesh.GetNumberOfCells(),
+        # What the mapper keeps in host memory beside its input (where it counts it).
+        "host_bytes_per_cell": None if host_bytes is None else host_bytes / mesh.GetNumberOfCells(),
+        "rmse": statistics.mean(e[0] for e in errors), "rmse_covered": statistics.mean(e[1] for e in errors),
+        "psnr": statistics.mean(min(e[2], 200.0) for e in errors), "max_error": max(e[3] for e in errors),
+        "p99_error": statistics.mean(e[4] for e in errors),
+        "work": work,
+    }
+
+
+def write_results(rows, output):
+    """results.json, results.csv and results.md in `output`."""
+    with open(os.path.join(output, "results.json"), "w") as out:
+        json.dump(rows, out, indent=1)
+    with open(os.path.join(output, "results.csv"), "w", newline="") as out:
+        writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    with open(os.path.join(output, "results.md"), "w") as out:
+        out.write(markdown_table(rows))
+        out.write("\n" + skipping_table(rows))
+
+
+def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true", help="two small scenes, 128 px, 4 views (a smoke test)")
     parser.add_argument("--size", type=int, default=None)
@@ -790,7 +841,11 @@ def main():
     parser.add_argument("--mappers", default=None, help="comma-separated substrings of mapper names (default: all)")
     parser.add_argument("--write-readme", nargs="?", const=README_PATH, default=None, metavar="PATH",
                         help=f"also write this run's README (default path: {os.path.relpath(README_PATH, ROOT)})")
-    args = parser.parse_args()
+    return parser.parse_args()
+
+
+def main():
+    args = parse_arguments()
     settle_allocator()
     started = time.strftime("%Y-%m-%d %H:%M %Z")
     if args.write_readme:
@@ -842,34 +897,11 @@ def main():
             preparation, frames, memory, images, (mesh_bytes, host_bytes), work = run_mapper(
                 name, factory, {"tets": tets, "hexahedra": drawn, "image": scene_image, "any": drawn}[takes], scalar,
                 prop, cameras, size)
-            errors = []
-            for k, (image, reference) in enumerate(zip(images, references)):
-                metrics = vtkVolumeImageErrorMetrics()
-                metrics.SetChannels(3)  # RGB over black = premultiplied colour; VTK's alpha varies by mapper
-                if not metrics.Compare(image, reference):
-                    raise RuntimeError("image comparison failed")
-                errors.append((metrics.GetRMSE(), metrics.GetCoveredRMSE(), metrics.GetPSNR(),
-                               metrics.GetMaximumError(), metrics.GetPercentile99Error()))
-                if k == 0:
-                    first_views.append(over_background(image))
-                    heat = vtkImageData()
-                    heat.DeepCopy(metrics.GetErrorImage())
-                    heat_maps.append(heat)
-            quartiles = statistics.quantiles(frames, n=4) if len(frames) > 1 else [frames[0]] * 3
-            row = {
-                "scene": scene, "mapper": name, "cells": mesh.GetNumberOfCells(), "size": size, "views": views,
-                "preparation_s": preparation, "median_s": statistics.median(frames),
-                "p25_s": quartiles[0], "p75_s": quartiles[2], "min_s": min(frames), "max_s": max(frames),
-                "memory_mb": memory,
-                # GPU buffers of the mesh per cell of the scene's mesh (a hexahedron, or its tetrahedra).
-                "gpu_bytes_per_cell": None if mesh_bytes is None else mesh_bytes / mesh.GetNumberOfCells(),
-                # What the mapper keeps in host memory beside its input (where it counts it).
-                "host_bytes_per_cell": None if host_bytes is None else host_bytes / mesh.GetNumberOfCells(),
-                "rmse": statistics.mean(e[0] for e in errors), "rmse_covered": statistics.mean(e[1] for e in errors),
-                "psnr": statistics.mean(min(e[2], 200.0) for e in errors), "max_error": max(e[3] for e in errors),
-                "p99_error": statistics.mean(e[4] for e in errors),
-                "work": work,
-            }
+            errors, heat = view_errors(images, references)
+            first_views.append(over_background(images[0]))
+            heat_maps.append(heat)
+            row = result_row(scene, name, mesh, size, views, preparation, frames, memory, mesh_bytes, host_bytes,
+                             errors, work)
             scene_rows.append(row)
             print(f"  {name:28s} prep {preparation:7.3f} s  frame {row['median_s']:7.3f} s "
                   f"[{row['min_s']:.3f}-{row['max_s']:.3f}]  RMSE {row['rmse_covered']:.3g} (covered)  "
@@ -879,15 +911,7 @@ def main():
         heat_maps[0] = over_background(references[0])  # the reference has no error: show it again
         montage(first_views, heat_maps, os.path.join(args.output, f"{scene}_montage.png"))
 
-    with open(os.path.join(args.output, "results.json"), "w") as out:
-        json.dump(rows, out, indent=1)
-    with open(os.path.join(args.output, "results.csv"), "w", newline="") as out:
-        writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
-    with open(os.path.join(args.output, "results.md"), "w") as out:
-        out.write(markdown_table(rows))
-        out.write("\n" + skipping_table(rows))
+    write_results(rows, args.output)
     bad = [r for r in rows if not all(math.isfinite(r[k]) for k in ("median_s", "rmse", "preparation_s"))]
     print(f"\nwrote {len(rows)} rows to {args.output}/results.csv and results.json")
     if bad:

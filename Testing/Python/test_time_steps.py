@@ -111,8 +111,8 @@ class TimeStepTests(SceneTestCase):
                 expected = fresh.render()
                 self.assertLess(rmse(image, expected)[1], SAME_IMAGE)
                 self.assertGreater(vtk_to_numpy(expected.GetPointData().GetScalars())[:, 3].max(), 0.05)
-                counts = (scene.mapper.GetNumberOfMeshBuilds(), scene.mapper.GetNumberOfPointRefreshes(),
-                          scene.mapper.GetNumberOfValueRefreshes())
+                counts = (scene.mapper.GetFrameStatistics().GetValue("MeshBuilds"), scene.mapper.GetFrameStatistics().GetValue("PointRefreshes"),
+                          scene.mapper.GetFrameStatistics().GetValue("ValueRefreshes"))
                 self.assertEqual(counts, (builds, point_refreshes, value_refreshes))
                 self.assertEqual(scene.events.errors, 0)
 
