@@ -270,15 +270,7 @@ public:
   {
     vtkOpenGLRenderWindow* window = pass.Frame->Window;
     vtkOpenGLState* state = window->GetState();
-    images.Framebuffer->AddColorAttachment(0, images.Entry);
-    images.Framebuffer->AddDepthAttachment(images.EntryDepth);
-    images.Framebuffer->ActivateDrawBuffers(1);
-    state->vtkglClearColor(0.0f, -1.0f, 0.0f, 0.0f); // green < 0: no face
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_LESS);
+    images.BeginEntryPass(state);
     vtkShaderProgram* program = uvgl::ReadyProgram(window, this->Sources);
     if (program)
     {

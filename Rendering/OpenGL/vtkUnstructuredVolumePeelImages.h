@@ -16,6 +16,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkTextureObject.h"
 #include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 
@@ -46,6 +47,21 @@ public:
     this->Context = window;
     this->Width = width;
     this->Height = height;
+  }
+
+  /// Starts an entry pass on the bound framebuffer: Entry and EntryDepth attached and cleared to "no
+  /// entry" (green -1) and the far depth, the depth test keeping each pixel's nearest face.
+  void BeginEntryPass(vtkOpenGLState* state)
+  {
+    this->Framebuffer->AddColorAttachment(0, this->Entry);
+    this->Framebuffer->AddDepthAttachment(this->EntryDepth);
+    this->Framebuffer->ActivateDrawBuffers(1);
+    state->vtkglClearColor(0.0f, -1.0f, 0.0f, 0.0f);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LESS);
   }
 
   /// Copies Accumulation into the target's colour; the framebuffer must be bound.

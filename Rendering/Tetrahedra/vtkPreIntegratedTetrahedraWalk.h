@@ -90,16 +90,8 @@ public:
   {
     vtkOpenGLState* state = frame.Window->GetState();
     this->Images.Framebuffer->Bind();
-    this->Images.Framebuffer->AddColorAttachment(0, this->Images.Entry);
-    this->Images.Framebuffer->AddDepthAttachment(this->Images.EntryDepth);
-    this->Images.Framebuffer->ActivateDrawBuffers(1);
     state->vtkglDisable(GL_BLEND);
-    state->vtkglClearColor(0.0f, -1.0f, 0.0f, 0.0f); // green < 0: no entry
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_LESS);
+    this->Images.BeginEntryPass(state);
     long samples = -1;
     vtkShaderProgram* program = uvgl::ReadyProgram(frame.Window, this->EntrySources());
     if (program)
