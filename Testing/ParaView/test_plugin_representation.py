@@ -106,14 +106,10 @@ def pixel_differences(first, second):
 
 
 if baseline:
-    from vtkmodules.vtkImagingCore import vtkImageDifference
-    readers = [read_png(path) for path in (output, baseline)]
-    difference = vtkImageDifference()
-    difference.SetInputConnection(readers[0].GetOutputPort())
-    difference.SetImageConnection(readers[1].GetOutputPort())
-    difference.Update()
-    error = difference.GetThresholdedError()
-    images = [r.GetOutput().GetPointData().GetScalars() for r in readers]
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+    import baselines  # noqa: E402  (the Python tests' baseline helper, on ParaView's VTK)
+    error, baseline = baselines.nearest_baseline(output, baseline)
+    images = [read_png(path).GetOutput().GetPointData().GetScalars() for path in (output, baseline)]
     off, worst, _ = pixel_differences(images[0], images[1])
     share = off / images[0].GetNumberOfTuples()
     print(f"image difference against {baseline}: thresholded {error:.3f} (at most {threshold}), "

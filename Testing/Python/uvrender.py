@@ -5,8 +5,7 @@ from vtkmodules.vtkCommonColor import vtkNamedColors  # noqa: F401  (registers c
 from vtkmodules.vtkCommonDataModel import vtkPlane
 from vtkmodules.vtkFiltersCore import vtkCutter
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
-from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-from vtkmodules.vtkImagingCore import vtkImageDifference  # noqa: F401
+from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkDataSetMapper,
                                          vtkRenderWindow, vtkRenderer, vtkVolume, vtkVolumeProperty,
                                          vtkWindowToImageFilter)
@@ -17,7 +16,6 @@ import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-BASELINES = os.path.join(ROOT, "Testing", "Data", "Baseline")
 
 
 def volume_property(scalar_range):
@@ -160,18 +158,3 @@ def render_gradient_cut(grid, gradients, path, size=512):
     cut_actor = vtkActor()
     cut_actor.SetMapper(cut_mapper)
     return _render_scene([cut_actor], grid, size, path)
-
-
-def image_difference(candidate_png, baseline_png):
-    """vtkImageDifference's thresholded error (0 = same image) between two PNG files."""
-    readers = []
-    for path in (candidate_png, baseline_png):
-        reader = vtkPNGReader()
-        reader.SetFileName(path)
-        reader.Update()
-        readers.append(reader)
-    difference = vtkImageDifference()
-    difference.SetInputConnection(readers[0].GetOutputPort())
-    difference.SetImageConnection(readers[1].GetOutputPort())
-    difference.Update()
-    return difference.GetThresholdedError()
