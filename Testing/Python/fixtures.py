@@ -352,6 +352,17 @@ class SceneTestCase(unittest.TestCase):
             scene.mapper.ReleaseGraphicsResources(scene.window)
             scene.window.RemoveRenderer(scene.renderer)
 
+    def assert_near_reference(self, scene, mesh, prop, camera, size, bound):
+        """Renders `scene` and fails unless it raised no VTK error and its RMSE over covered pixels
+        against the reference is under `bound`; prints the RMSE and the largest error; returns the
+        RMSE and the float image."""
+        image = scene.render()
+        error, worst = rmse(image, reference(mesh, prop, camera, size))
+        print(f"\n  RMSE {error:.3g}, max {worst:.3g} (bound {bound})", end="")
+        self.assertEqual(scene.events.errors, 0)
+        self.assertLess(error, bound, f"RMSE {error:.3g} against the reference (bound {bound})")
+        return error, image
+
 
 class Scene:
     """One mapper in the shared off-screen window with a transparent black background: `mapper` as

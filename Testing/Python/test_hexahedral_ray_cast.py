@@ -104,12 +104,7 @@ class SingleHexahedronTests(SceneTestCase):
 class AccuracyTests(SceneTestCase):
     def check(self, mesh, prop, camera, bound, size=128, **settings):
         scene = HexScene(mesh, prop, camera, size, **settings)
-        image = scene.render()
-        error, worst = rmse(image, reference(mesh, prop, camera, size))
-        print(f"\n  RMSE {error:.3g}, max {worst:.3g} (bound {bound})", end="")
-        self.assertEqual(scene.events.errors, 0)
-        self.assertLess(error, bound)
-        return error
+        return self.assert_near_reference(scene, mesh, prop, camera, size, bound)[0]
 
     def test_regular_grid(self):
         # Boxes: the frame is exact. Measured 4.9e-4 (one pixel whose ray passes through mesh
@@ -167,12 +162,8 @@ class MixedCellTests(SceneTestCase):
         prop = uvrender.volume_property(scalars.GetRange())
         prop.SetScalarOpacityUnitDistance(0.3)
         scene = HexScene(mesh, prop, camera, size, **settings)
-        image = scene.render()
-        self.assertEqual(scene.events.errors, 0)
+        image = self.assert_near_reference(scene, mesh, prop, camera, size, bound)[1]
         self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("Cells"), mesh.GetNumberOfCells())
-        error, worst = rmse(image, reference(mesh, prop, camera, size))
-        print(f"\n  RMSE {error:.3g}, max {worst:.3g} (bound {bound})", end="")
-        self.assertLess(error, bound)
         return image
 
     def test_hex_dominant_mesh(self):
