@@ -139,6 +139,21 @@ inline void AllocateFloatImage(vtkTextureObject* texture, vtkOpenGLRenderWindow*
   texture->Allocate2D(width, height, components, VTK_FLOAT);
 }
 
+/// Uploads `texels` (width x height x depth texels of `components` floats) into `texture` as a 3D
+/// float texture read with trilinear filtering, clamped at its edges (a table or a volume sampled
+/// between its texels).
+inline void UploadTrilinearVolume(vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height,
+  int depth, int components, const float* texels)
+{
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  texture->Create3DFromRaw(width, height, depth, components, VTK_FLOAT, const_cast<float*>(texels));
+}
+
 /// The samples that pass while `draw()` draws (an occlusion query; waits for the result).
 template <typename Draw>
 GLuint SamplesPassed(const Draw& draw)

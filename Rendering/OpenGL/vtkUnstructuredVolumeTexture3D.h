@@ -9,6 +9,8 @@
 #ifndef vtkUnstructuredVolumeTexture3D_h
 #define vtkUnstructuredVolumeTexture3D_h
 
+#include "vtkUnstructuredVolumeOpenGL.h"
+
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
@@ -27,13 +29,7 @@ public:
   {
     if (window == this->Context && this->Texture->GetHandle() && version == this->Version)
       return false;
-    this->Texture->SetContext(window);
-    this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
-    this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-    this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
-    this->Texture->Create3DFromRaw(width, height, depth, 4, VTK_FLOAT, const_cast<float*>(texels.data()));
+    uvgl::UploadTrilinearVolume(this->Texture, window, width, height, depth, 4, texels.data());
     this->Context = window;
     this->Version = version;
     this->Bytes = sizeof(float) * texels.size();

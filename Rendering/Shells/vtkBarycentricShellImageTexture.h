@@ -10,6 +10,8 @@
 #ifndef vtkBarycentricShellImageTexture_h
 #define vtkBarycentricShellImageTexture_h
 
+#include "vtkUnstructuredVolumeOpenGL.h"
+
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -40,14 +42,8 @@ public:
         values[p] = std::isfinite(value) ? static_cast<float>(value) : 0.0f;
       }
     });
-    this->Texture->SetContext(window);
-    this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
-    this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-    this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
-    this->Texture->Create3DFromRaw(
-      this->Dimensions[0], this->Dimensions[1], this->Dimensions[2], 1, VTK_FLOAT, values.data());
+    uvgl::UploadTrilinearVolume(
+      this->Texture, window, this->Dimensions[0], this->Dimensions[1], this->Dimensions[2], 1, values.data());
     this->Context = window;
     this->Uploaded = source;
   }
