@@ -81,14 +81,8 @@ view.CameraViewAngle = 30.0
 Render(view)  # noqa: F405
 SaveScreenshot(output, view, ImageResolution=[300, 300])  # noqa: F405
 
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
-
-
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from baselines import nearest_baseline, read_png  # noqa: E402  (the Python tests' helper, on ParaView's VTK)
 
 
 def pixel_differences(first, second):
@@ -106,9 +100,7 @@ def pixel_differences(first, second):
 
 
 if baseline:
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-    import baselines  # noqa: E402  (the Python tests' baseline helper, on ParaView's VTK)
-    error, baseline = baselines.nearest_baseline(output, baseline)
+    error, baseline = nearest_baseline(output, baseline)
     images = [read_png(path).GetOutput().GetPointData().GetScalars() for path in (output, baseline)]
     off, worst, _ = pixel_differences(images[0], images[1])
     share = off / images[0].GetNumberOfTuples()
