@@ -16,7 +16,6 @@
 #define vtkUnstructuredVolumeSegmentLengthTable_h
 
 #include "uvTetrahedronSegmentTable.h"
-#include "vtkuvTetrahedralMesh.h"
 #include "vtkUnstructuredVolumeTexture3D.h"
 
 #include "vtkSMPThreadLocal.h"
@@ -37,9 +36,19 @@ public:
   double Error = 0.0;        ///< largest difference from the exact segments, any channel
   int Builds = 0;            ///< since creation
 
-  /// Brings the table up to date with `nodes` and the longest segment `mesh` can hold in eye space;
-  /// false (nothing built) for a mesh without extent.
-  bool Update(const vtkuv::TetrahedralMesh& mesh, const std::vector<uv::TransferFunction::Node>& nodes,
+  /// The tetrahedra the table must cover: 4 point ids each into `PointData`'s 4 floats a point
+  /// (position, scalar), and the version of the mesh they come from (edges are measured once a
+  /// version).
+  struct Tetrahedra
+  {
+    const std::vector<float>& PointData;
+    const std::vector<std::uint32_t>& TetrahedronPoints;
+    std::uint64_t Version;
+  };
+
+  /// Brings the table up to date with `nodes` and the longest segment the tetrahedra can hold in eye
+  /// space; false (nothing built) for a mesh without extent.
+  bool Update(const Tetrahedra& mesh, const std::vector<uv::TransferFunction::Node>& nodes,
     const glm::dmat4& modelToEye)
   {
     this->UpdateLongestEdge(mesh);
@@ -87,12 +96,13 @@ public:
   void Release() { this->Texture.Release(); }
 
 private:
-  void UpdateLongestEdge(const vtkuv::TetrahedralMesh& mesh)
+  void UpdateLongestEdge(const Tetrahedra& mesh)
   {
     if (this->LongestEdgeFor == mesh.Version)
       return;
     vtkSMPThreadLocal<double> longest(0.0);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(mesh.Size()), [&](vtkIdType begin, vtkIdType end) {
+    const auto count = static_cast<vtkIdType>(mesh.TetrahedronPoints.size() / 4);
+    vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
       double& mine = longest.Local();
       mine = std::max(mine, uv::LongestSquaredEdge(mesh.PointData, mesh.TetrahedronPoints,
                               static_cast<std::size_t>(begin), static_cast<std::size_t>(end)));

@@ -837,7 +837,8 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
       this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
   }
   else if (this->SegmentIntegration != EXACT && !cutsNeeded &&
-    impl.LengthTable.Update(impl.Mesh, impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
+    impl.LengthTable.Update({ impl.Mesh.PointData, impl.Mesh.TetrahedronPoints, impl.Mesh.Version },
+      impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
   {
     impl.Now.SegmentTable =
       this->SegmentIntegration == TABLE || impl.LengthTable.Error <= this->TransferFunctionTolerance;

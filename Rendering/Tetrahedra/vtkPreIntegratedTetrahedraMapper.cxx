@@ -585,7 +585,8 @@ bool vtkPreIntegratedTetrahedraMapper::ChooseSegmentTable(const vtkUnstructuredV
   if (this->SegmentIntegration == EXACT || this->IntegrationMode != PARTIAL_PRE_INTEGRATION ||
     !impl.Isovalues.empty() || impl.Shade)
     return false;
-  if (!impl.Table.Update(impl.Mesh, impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
+  if (!impl.Table.Update({ impl.Mesh.PointData, impl.Mesh.TetrahedronPoints, impl.Mesh.Version },
+        impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
     return false;
   return this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
 }
