@@ -24,26 +24,28 @@ const char* vtkUnstructuredVolumeFrameStatistics::GetName(int index)
   return this->Values[static_cast<std::size_t>(index)].first.c_str();
 }
 
-bool vtkUnstructuredVolumeFrameStatistics::HasValue(const char* name)
+std::pair<std::string, double>* vtkUnstructuredVolumeFrameStatistics::Find(const char* name)
 {
-  for (const auto& value : this->Values)
+  for (auto& value : this->Values)
   {
     if (name && value.first == name)
     {
-      return true;
+      return &value;
     }
   }
-  return false;
+  return nullptr;
+}
+
+bool vtkUnstructuredVolumeFrameStatistics::HasValue(const char* name)
+{
+  return this->Find(name) != nullptr;
 }
 
 double vtkUnstructuredVolumeFrameStatistics::GetValue(const char* name)
 {
-  for (const auto& value : this->Values)
+  if (const auto* value = this->Find(name))
   {
-    if (name && value.first == name)
-    {
-      return value.second;
-    }
+    return value->second;
   }
   std::string names;
   for (const auto& value : this->Values)
@@ -61,13 +63,10 @@ void vtkUnstructuredVolumeFrameStatistics::Clear()
 
 void vtkUnstructuredVolumeFrameStatistics::SetValue(const std::string& name, double value)
 {
-  for (auto& known : this->Values)
+  if (auto* known = this->Find(name.c_str()))
   {
-    if (known.first == name)
-    {
-      known.second = value;
-      return;
-    }
+    known->second = value;
+    return;
   }
   this->Values.emplace_back(name, value);
 }

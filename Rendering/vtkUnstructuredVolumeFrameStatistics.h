@@ -45,6 +45,9 @@ private:
   vtkUnstructuredVolumeFrameStatistics(const vtkUnstructuredVolumeFrameStatistics&) = delete;
   void operator=(const vtkUnstructuredVolumeFrameStatistics&) = delete;
 
+  /// The value named `name`, or null.
+  std::pair<std::string, double>* Find(const char* name);
+
   std::vector<std::pair<std::string, double>> Values;
 };
 
