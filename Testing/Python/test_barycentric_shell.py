@@ -11,7 +11,7 @@ import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
                       analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
                       covered_colour_error, finite_image, inside_camera, opaque_sphere, plane_scene_setup, reference, rmse,
-                      spike_property, thin_shell_property, transparent_property)
+                      spike_property, statistic, thin_shell_property, transparent_property)
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Stress"))
 import stress  # noqa: E402  (its generated degenerate meshes)
@@ -69,8 +69,8 @@ class AccuracyTests(SceneTestCase):
         mesh = analytic(12)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         error, scene = self.error(mesh, prop, camera_for(mesh))
-        print(f"\n  RMSE {error:.3g} at sample distance {scene.mapper.GetFrameStatistics().GetValue('SampleDistance'):.3g}", end="")
-        self.assertAlmostEqual(scene.mapper.GetFrameStatistics().GetValue("SampleDistance"), mesh.GetLength() / 128, 9)
+        print(f"\n  RMSE {error:.3g} at sample distance {statistic(scene.mapper, 'SampleDistance'):.3g}", end="")
+        self.assertAlmostEqual(statistic(scene.mapper, "SampleDistance"), mesh.GetLength() / 128, 9)
         self.assertLess(error, 4e-4)
 
     def test_cell_projection_is_exact(self):
@@ -106,7 +106,7 @@ class AccuracyTests(SceneTestCase):
         print(f"\n  face order {face:.3g}, centroid order {centroid:.3g}", end="")
         self.assertLess(face, 2e-6)
         self.assertGreater(centroid, 1e-4)
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("CyclesBroken"), 0)
+        self.assertEqual(statistic(scene.mapper, "CyclesBroken"), 0)
 
     def test_cell_projection_face_order_across_the_gap_of_a_non_convex_mesh(self):
         check_order_across_a_gap(self, mapper_class=vtkBarycentricShellMapper, RenderMode=CELL_PROJECTION)
@@ -200,8 +200,8 @@ class IsosurfaceTests(SceneTestCase):
             self.assertLess(metrics.GetPercentile99Error(), 1e-3)
             # The volume is transparent everywhere: only the isosurface's cells are drawn, once per layer
             # (shells: one pass per crossing found, and one that finds none).
-            passes = scene.mapper.GetFrameStatistics().GetValue("DrawnIsosurfaceLayers") + 1 if mode == SHELLS else 1
-            self.assertLess(scene.mapper.GetFrameStatistics().GetValue("DrawnTetrahedra"), 0.5 * mesh.GetNumberOfCells() * passes)
+            passes = statistic(scene.mapper, "DrawnIsosurfaceLayers") + 1 if mode == SHELLS else 1
+            self.assertLess(statistic(scene.mapper, "DrawnTetrahedra"), 0.5 * mesh.GetNumberOfCells() * passes)
 
     def test_translucent_sheets_behind_each_other(self):
         # A translucent isosurface crossed several times by most rays: the shells draw each crossing
@@ -217,7 +217,7 @@ class IsosurfaceTests(SceneTestCase):
             images[(mode, layers)] = copy_image(scene.render())
             self.assertEqual(scene.events.errors, 0)
             if mode == SHELLS:
-                self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("DrawnIsosurfaceLayers"), layers)
+                self.assertEqual(statistic(scene.mapper, "DrawnIsosurfaceLayers"), layers)
         all_layers = rmse(images[(SHELLS, 4)], images[(CELL_PROJECTION, 4)])[0]
         one_layer = rmse(images[(SHELLS, 1)], images[(CELL_PROJECTION, 4)])[0]
         print(f"\n  against cell projection: 4 layers {all_layers:.3g}, 1 layer {one_layer:.3g}", end="")
@@ -237,7 +237,7 @@ class IsosurfaceTests(SceneTestCase):
             covered, worst = covered_colour_error(scene.render(), expected)
             print(f"\n  mode {mode}, gradients {gradients}: {covered} covered pixels, worst colour error {worst:.3g}",
                   end="")
-            self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("GradientComputations"), 1 if gradients == VERTEX else 0)
+            self.assertEqual(statistic(scene.mapper, "GradientComputations"), 1 if gradients == VERTEX else 0)
             self.assertEqual(scene.events.errors, 0)
             self.assertGreater(covered, 2000)
             self.assertLess(worst, 2e-3)
@@ -262,10 +262,10 @@ class DeformationTests(SceneTestCase):
             error = rmse(image, reference(mesh, prop, camera, 96))[0]
             print(f"\n  frame {frame}: RMSE {error:.3g}", end="")
             self.assertLess(error, 1.5e-3)  # measured 2e-4 .. 6e-4
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("MeshBuilds"), 1)
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("PointRefreshes"), 3)
+        self.assertEqual(statistic(scene.mapper, "MeshBuilds"), 1)
+        self.assertEqual(statistic(scene.mapper, "PointRefreshes"), 3)
         # The automatic sample distance, and so the segment table, stay as they were.
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("SegmentTableBuilds"), 1)
+        self.assertEqual(statistic(scene.mapper, "SegmentTableBuilds"), 1)
         self.assertEqual(scene.events.errors, 0)
 
 
@@ -287,9 +287,9 @@ class DeformationTests(SceneTestCase):
             points.Modified()
             images = {g: copy_image(scene.render()) for g, scene in scenes.items()}
             self.assertLess(rmse(images[VERTEX], images[CELL])[0], 0.05)
-        self.assertEqual(scenes[VERTEX].mapper.GetFrameStatistics().GetValue("GradientComputations"), 3)
-        self.assertEqual(scenes[CELL].mapper.GetFrameStatistics().GetValue("GradientComputations"), 0)
-        self.assertEqual(scenes[CELL].mapper.GetFrameStatistics().GetValue("MeshBuilds"), 1)
+        self.assertEqual(statistic(scenes[VERTEX].mapper, "GradientComputations"), 3)
+        self.assertEqual(statistic(scenes[CELL].mapper, "GradientComputations"), 0)
+        self.assertEqual(statistic(scenes[CELL].mapper, "MeshBuilds"), 1)
 
 
 def linear_image_and_mesh(gradient=(0.3, -0.5, 0.8)):
@@ -353,7 +353,7 @@ class TextureTests(SceneTestCase):
         error = rmse(moved, plain.render())[0]
         print(f", deformed {error:.3g}", end="")
         self.assertLess(error, 1e-3)
-        self.assertEqual(textured.mapper.GetFrameStatistics().GetValue("MeshBuilds"), 1)
+        self.assertEqual(statistic(textured.mapper, "MeshBuilds"), 1)
         self.assertEqual(textured.events.errors + textured.events.warnings, 0)
 
     def test_what_an_image_cannot_do_is_a_warning(self):
@@ -440,11 +440,11 @@ class SkippingTests(SceneTestCase):
         opacity.AddPoint(high, 0.8)
         scene = shell_scene(mesh, prop, camera_for(mesh), 96)
         skipped = copy_image(scene.render())
-        drawn_visible = scene.mapper.GetFrameStatistics().GetValue("DrawnTetrahedra")
+        drawn_visible = statistic(scene.mapper, "DrawnTetrahedra")
         scene.mapper.SkipInvisibleCellsOff()
         everything = scene.render()
-        print(f"\n  tetrahedra drawn {drawn_visible} of {scene.mapper.GetFrameStatistics().GetValue('DrawnTetrahedra')}", end="")
-        self.assertLess(drawn_visible, 0.6 * scene.mapper.GetFrameStatistics().GetValue("DrawnTetrahedra"))
+        print(f"\n  tetrahedra drawn {drawn_visible} of {statistic(scene.mapper, 'DrawnTetrahedra')}", end="")
+        self.assertLess(drawn_visible, 0.6 * statistic(scene.mapper, "DrawnTetrahedra"))
         # Where a visible cell meets a skipped one, the samples in the skipped one read as outside: a
         # half segment at the visible end instead of the pre-integrated whole (zero opacity there).
         self.assertLess(rmse(everything, skipped)[0], 2e-3)
@@ -456,19 +456,19 @@ class SkippingTests(SceneTestCase):
         scene = shell_scene(mesh, prop, camera_for(mesh), 48, RenderMode=CELL_PROJECTION)
         first = copy_image(scene.render())
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("Sorts"), 1)
+        self.assertEqual(statistic(scene.mapper, "Sorts"), 1)
         self.assertLess(rmse(scene.render(), first)[1], 1e-7)
         scene.renderer.GetActiveCamera().Azimuth(10)
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("Sorts"), 2)
+        self.assertEqual(statistic(scene.mapper, "Sorts"), 2)
         mesh.GetPoints().Modified()  # touched, not changed: the mapper compares content
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("Sorts"), 2)
+        self.assertEqual(statistic(scene.mapper, "Sorts"), 2)
         x, y, z = mesh.GetPoint(7)
         mesh.GetPoints().SetPoint(7, x + 0.01, y, z)
         mesh.GetPoints().Modified()
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("Sorts"), 3)
+        self.assertEqual(statistic(scene.mapper, "Sorts"), 3)
 
     def test_empty_shells_between_two_blobs_are_skipped(self):
         # Two small meshes far apart along the view: the shells between them hold nothing.
@@ -491,9 +491,9 @@ class SkippingTests(SceneTestCase):
         camera.SetClippingRange(0.01, 100)
         scene = shell_scene(mesh, prop, camera, 64, SampleDistance=0.05)
         scene.render()
-        print(f"\n  shells drawn {scene.mapper.GetFrameStatistics().GetValue('Shells')}, skipped {scene.mapper.GetFrameStatistics().GetValue('SkippedShells')}",
+        print(f"\n  shells drawn {statistic(scene.mapper, 'Shells')}, skipped {statistic(scene.mapper, 'SkippedShells')}",
               end="")
-        self.assertGreater(scene.mapper.GetFrameStatistics().GetValue("SkippedShells"), scene.mapper.GetFrameStatistics().GetValue("Shells"))
+        self.assertGreater(statistic(scene.mapper, "SkippedShells"), statistic(scene.mapper, "Shells"))
         self.assertEqual(scene.events.errors, 0)
 
     def test_early_ray_termination(self):
@@ -539,7 +539,7 @@ class ChangeTrackingTests(SceneTestCase):
         scene.mapper.SetSampleDistance(fine)
         changed = copy_image(scene.render())
         fresh = shell_scene(mesh, prop, camera, 64, SampleDistance=fine, SegmentIntegration=1).render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("SegmentTableBuilds"), 2)
+        self.assertEqual(statistic(scene.mapper, "SegmentTableBuilds"), 2)
         self.assertGreater(rmse(before, fresh)[1], 1e-4)  # the distance matters to the image
         self.assertLess(rmse(changed, fresh)[1], 1e-6)  # the same as a mapper made for it
         self.assertEqual(scene.events.errors + scene.events.warnings, 0)
@@ -704,7 +704,7 @@ class StressTests(SceneTestCase):
         scene = shell_scene(mesh, prop, camera_for(mesh), 32, SampleDistance=1e-6)
         image = scene.render()
         self.assertEqual((scene.events.errors, scene.events.warnings), (0, 1))
-        self.assertGreater(scene.mapper.GetFrameStatistics().GetValue("SampleDistance"), 1e-6)
+        self.assertGreater(statistic(scene.mapper, "SampleDistance"), 1e-6)
         self.assertTrue(finite_image(image))
 
 

@@ -14,8 +14,8 @@ import uvrender  # noqa: E402
 from fixtures import (BaselineTestCase, HexScene, Scene, SceneTestCase, analytic, analytic_hexahedra, as_polyhedra,  # noqa: E402
                       camera_for, check_geometry_shown_later, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
                       largest_difference,
-                      load_shared, plane_scene_setup, property_from_nodes, reference, rmse, thin_shell_property,
-                      transparent_property)
+                      load_shared, plane_scene_setup, property_from_nodes, reference, rmse, statistic,
+                      thin_shell_property, transparent_property)
 
 from unstructuredvolume import (vtkAnalyticMeshSource, vtkHexahedraToTetrahedra,  # noqa: E402
                                 vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
@@ -163,7 +163,7 @@ class MixedCellTests(SceneTestCase):
         prop.SetScalarOpacityUnitDistance(0.3)
         scene = HexScene(mesh, prop, camera, size, **settings)
         image = self.assert_near_reference(scene, mesh, prop, camera, size, bound)[1]
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("Cells"), mesh.GetNumberOfCells())
+        self.assertEqual(statistic(scene.mapper, "Cells"), mesh.GetNumberOfCells())
         return image
 
     def test_hex_dominant_mesh(self):
@@ -239,10 +239,10 @@ class MixedCellTests(SceneTestCase):
         scene.mapper.AddIsosurface(sum(scalars.GetRange()) / 2, 1.0, 0.8, 0.2, 0.5)
         scene.mapper.SetGradientModeToVertexGradients()
         image = copy_image(scene.render())
-        self.assertTrue(scene.mapper.GetFrameStatistics().GetValue("Delegated"))
+        self.assertTrue(statistic(scene.mapper, "Delegated"))
         self.assertEqual(scene.events.errors + scene.events.warnings, 0)
         for counter in ("Cells", "VisibleCells", "EntryFaces", "BoundaryFaces", "Peels", "TangledCells"):
-            self.assertEqual(scene.mapper.GetFrameStatistics().GetValue(counter), 0)  # this walk drew nothing
+            self.assertEqual(statistic(scene.mapper, counter), 0)  # this walk drew nothing
         self.assertGreater(scene.mapper.GetMeshMemoryInBytes(), 0)  # the other mapper's mesh
         own = Scene(mesh, prop, camera, 96)
         own.mapper.AddIsosurface(sum(scalars.GetRange()) / 2, 1.0, 0.8, 0.2, 0.5)
@@ -250,13 +250,13 @@ class MixedCellTests(SceneTestCase):
         # Lit by the cells' own gradients, the surfaces stay with this walk.
         scene.mapper.SetGradientModeToCellGradients()
         scene.render()
-        self.assertFalse(scene.mapper.GetFrameStatistics().GetValue("Delegated"))
+        self.assertFalse(statistic(scene.mapper, "Delegated"))
         # A NaN leaves cells out with a warning, which reaches this mapper.
         scene.mapper.RemoveAllIsosurfaces()
         scalars.SetValue(0, float("nan"))
         scalars.Modified()
         scene.render()
-        self.assertTrue(scene.mapper.GetFrameStatistics().GetValue("Delegated"))
+        self.assertTrue(statistic(scene.mapper, "Delegated"))
         self.assertEqual(scene.events.warnings, 1)
 
     def test_camera_inside(self):
@@ -518,17 +518,17 @@ class SmoothIsosurfaceTests(SceneTestCase):
         vertex.mapper.RemoveAllIsosurfaces()
         vertex.mapper.AddIsosurface(0.6, 1.0, 1.0, 1.0, 1.0)
         vertex.render()
-        self.assertEqual(vertex.mapper.GetFrameStatistics().GetValue("GradientComputations"), 1)
+        self.assertEqual(statistic(vertex.mapper, "GradientComputations"), 1)
         scalars = mesh.GetPointData().GetScalars()
         scalars.Modified()  # touched, not changed: the mapper compares content
         vertex.render()
-        self.assertEqual(vertex.mapper.GetFrameStatistics().GetValue("GradientComputations"), 1)
+        self.assertEqual(statistic(vertex.mapper, "GradientComputations"), 1)
         scalars.SetTuple1(0, scalars.GetTuple1(0) + 0.01)
         scalars.Modified()
         vertex.render()
-        self.assertEqual(vertex.mapper.GetFrameStatistics().GetValue("GradientComputations"), 2)
-        self.assertEqual(given.mapper.GetFrameStatistics().GetValue("GradientComputations"), 0)
-        self.assertEqual(cell.mapper.GetFrameStatistics().GetValue("GradientComputations"), 0)
+        self.assertEqual(statistic(vertex.mapper, "GradientComputations"), 2)
+        self.assertEqual(statistic(given.mapper, "GradientComputations"), 0)
+        self.assertEqual(statistic(cell.mapper, "GradientComputations"), 0)
 
     def test_vertex_gradients_of_a_linear_field_light_every_cell_kind_exactly(self):
         # vtkVertexGradientFilter is exact for a linear field and interpolating one gradient gives it
@@ -554,7 +554,7 @@ class SmoothIsosurfaceTests(SceneTestCase):
         on_cells.mapper.AddIsosurface(0.1, *color, 1.0)
         on_cells.render()
         self.assertEqual(on_cells.events.errors, 0)
-        self.assertEqual(on_cells.mapper.GetFrameStatistics().GetValue("GradientComputations"), 0)
+        self.assertEqual(statistic(on_cells.mapper, "GradientComputations"), 0)
 
     def test_the_default_is_the_cell_gradient(self):
         self.assertEqual(vtkHexahedralRayCastMapper().GetGradientMode(), vtkHexahedralRayCastMapper.CELL_GRADIENTS)
@@ -597,8 +597,8 @@ class SkippingTests(SceneTestCase):
         for limit in (0, 1):
             with self.subTest(limit=limit):
                 mapper = self.compare(mesh, six_spikes(0.05), camera_for(mesh), InvisibleRunLimit=limit)
-                self.assertLess(mapper.GetFrameStatistics().GetValue("VisibleCells"), mapper.GetFrameStatistics().GetValue("Cells"))
-                self.assertGreater(mapper.GetFrameStatistics().GetValue("Peels"), 1)  # rays leapt over invisible runs
+                self.assertLess(statistic(mapper, "VisibleCells"), statistic(mapper, "Cells"))
+                self.assertGreater(statistic(mapper, "Peels"), 1)  # rays leapt over invisible runs
 
     def test_the_last_peel_walks_on_through_invisible_runs(self):
         # Columns of visible matter across a convex grid. Walking at most 4 invisible cells in a row,
@@ -615,14 +615,14 @@ class SkippingTests(SceneTestCase):
         mesh.GetPointData().SetScalars(columns)
         low, high = columns.GetRange()
         prop = sparse_property(low, high, 0.05, 0.8)
-        short_runs = self.compare(mesh, prop, camera_for(mesh), InvisibleRunLimit=4).GetFrameStatistics().GetValue("Peels")
-        walked = self.compare(mesh, prop, camera_for(mesh)).GetFrameStatistics().GetValue("Peels")
+        short_runs = statistic(self.compare(mesh, prop, camera_for(mesh), InvisibleRunLimit=4), "Peels")
+        walked = statistic(self.compare(mesh, prop, camera_for(mesh)), "Peels")
         self.assertGreaterEqual(short_runs, 3, "peels with runs of 4 cells at most")
         self.assertLess(walked, short_runs, f"peels walking the gaps, against {short_runs}")
         for peels in (1, 2):
             with self.subTest(peels=peels):
                 mapper = self.compare(mesh, prop, camera_for(mesh), MaximumPeels=peels, InvisibleRunLimit=4)
-                self.assertEqual(mapper.GetFrameStatistics().GetValue("Peels"), peels)
+                self.assertEqual(statistic(mapper, "Peels"), peels)
 
     def test_eye_in_an_invisible_cell(self):
         mesh = analytic_hexahedra(10)
@@ -633,7 +633,7 @@ class SkippingTests(SceneTestCase):
         mesh = hex_dominant(6)
         low, high = mesh.GetPointData().GetScalars().GetRange()
         mapper = self.compare(mesh, sparse_property(low, high, 0.05), camera_for(mesh))
-        self.assertLess(mapper.GetFrameStatistics().GetValue("VisibleCells"), mapper.GetFrameStatistics().GetValue("Cells"))
+        self.assertLess(statistic(mapper, "VisibleCells"), statistic(mapper, "Cells"))
         # A transparent volume of cell data: only the faces between cells across the isovalue draw,
         # so exactly the cells beside such a face are walked.
         cells = vtkPointDataToCellData()
@@ -643,7 +643,7 @@ class SkippingTests(SceneTestCase):
         on_cells = cells.GetOutput()
         middle = 0.5 * (low + high)
         mapper = self.compare(on_cells, transparent_property(), camera_for(mesh), isovalues=(middle,))
-        self.assertLess(mapper.GetFrameStatistics().GetValue("VisibleCells"), mapper.GetFrameStatistics().GetValue("Cells") // 2)
+        self.assertLess(statistic(mapper, "VisibleCells"), statistic(mapper, "Cells") // 2)
 
     def test_real_meshes(self):
         for name, loader, array in shared_data.REFERENCE_MESHES:
@@ -670,7 +670,7 @@ class SkippingTests(SceneTestCase):
         for azimuth in (0.0, 37.0, 74.0, 111.0):
             with self.subTest(azimuth=azimuth):
                 mapper = self.compare(mesh, prop, camera_for(mesh, azimuth=azimuth), size=128, bound=1e-4)
-        self.assertLess(mapper.GetFrameStatistics().GetValue("VisibleCells"), mapper.GetFrameStatistics().GetValue("Cells"))
+        self.assertLess(statistic(mapper, "VisibleCells"), statistic(mapper, "Cells"))
 
     def test_region_rebuilt_only_when_visibility_changes(self):
         mesh = analytic_hexahedra(6)
@@ -679,19 +679,19 @@ class SkippingTests(SceneTestCase):
         scene = HexScene(mesh, prop, camera_for(mesh), 48)
         self.assertTrue(scene.mapper.GetSkipInvisibleCells())  # the default
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("VisibleRegionBuilds"), 1)
-        visible = scene.mapper.GetFrameStatistics().GetValue("VisibleCells")
+        self.assertEqual(statistic(scene.mapper, "VisibleRegionBuilds"), 1)
+        visible = statistic(scene.mapper, "VisibleCells")
         prop.GetRGBTransferFunction().AddRGBPoint(0.5 * (low + high), 0.0, 1.0, 0.0)  # colour only
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("VisibleRegionBuilds"), 1)
+        self.assertEqual(statistic(scene.mapper, "VisibleRegionBuilds"), 1)
         prop.GetScalarOpacity().AddPoint(low, 0.2)  # now every cell is visible
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("VisibleRegionBuilds"), 2)
-        self.assertGreater(scene.mapper.GetFrameStatistics().GetValue("VisibleCells"), visible)
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("VisibleCells"), scene.mapper.GetFrameStatistics().GetValue("Cells"))
+        self.assertEqual(statistic(scene.mapper, "VisibleRegionBuilds"), 2)
+        self.assertGreater(statistic(scene.mapper, "VisibleCells"), visible)
+        self.assertEqual(statistic(scene.mapper, "VisibleCells"), statistic(scene.mapper, "Cells"))
         scene.mapper.SkipInvisibleCellsOff()
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("EntryFaces"), scene.mapper.GetFrameStatistics().GetValue("BoundaryFaces"))
+        self.assertEqual(statistic(scene.mapper, "EntryFaces"), statistic(scene.mapper, "BoundaryFaces"))
 
 
 class InputTests(SceneTestCase):
@@ -744,7 +744,7 @@ class InputTests(SceneTestCase):
         scene = HexScene(structured, prop, camera, 64)
         holed = scene.render()
         self.assertEqual(scene.events.errors, 0)
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("Cells"), 8 * 8 * 8 - 2)
+        self.assertEqual(statistic(scene.mapper, "Cells"), 8 * 8 * 8 - 2)
         self.assertTrue(finite_image(holed))
 
     def test_empty_and_constant(self):
@@ -1017,7 +1017,7 @@ class StressTests(SceneTestCase):
         scene = HexScene(mesh, uvrender.volume_property((0, 1)), camera_for(mesh, distance=1.5), 64)
         image = scene.render()
         self.assertEqual((scene.events.errors, scene.events.warnings), (0, 1))
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("TangledCells"), 1)
+        self.assertEqual(statistic(scene.mapper, "TangledCells"), 1)
         self.assertTrue(finite_image(image))
 
     def test_nearly_degenerate_hexahedra(self):
@@ -1100,7 +1100,7 @@ class RealMeshTests(BaselineTestCase):
         camera = camera or camera_for(mesh, 30, 25, distance=1.6)
         scene = HexScene(mesh, prop, camera, 128)
         error, worst = rmse(scene.render(), reference(mesh, prop, camera, 128))
-        print(f"\n  RMSE {error:.3g}, max {worst:.3g} (bound {bound}), {scene.mapper.GetFrameStatistics().GetValue('Peels')} peels", end="")
+        print(f"\n  RMSE {error:.3g}, max {worst:.3g} (bound {bound}), {statistic(scene.mapper, 'Peels')} peels", end="")
         self.assertEqual(scene.events.errors, 0)
         self.assertLess(error, bound)
         for suffix, fractions in (("", ()), ("_isosurfaces", isovalue_fractions)):
@@ -1130,7 +1130,7 @@ class RealMeshTests(BaselineTestCase):
         # cell at a time where the optical model superposes overlapping cells.
         mesh = self.load(shared_data.can, "DISPL_magnitude")
         scene = self.check(mesh, 0.05, 0.007, "hexahedral_can", (0.5,))
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("TangledCells"), 51)
+        self.assertEqual(statistic(scene.mapper, "TangledCells"), 51)
         self.assertEqual(scene.events.warnings, 1)
 
 

@@ -11,7 +11,7 @@ import uvrender  # noqa: E402
 from fixtures import (ML, STEINER, BaselineTestCase, Scene, SceneTestCase, TetrahedralInputChecks,  # noqa: E402
                       analytic, camera_for, check_geometry_shown_later, check_order_across_a_gap, copy_image,
                       finite_image, inside_camera, inside_out, mean_cell_values, opaque_sphere, plate_and_block,
-                      reference, rmse, spike_property)
+                      reference, rmse, spike_property, statistic)
 
 from unstructuredvolume import vtkAnalyticMeshSource, vtkHexahedraToTetrahedra, vtkHexahedralRayCastMapper  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdList, vtkPoints  # noqa: E402
@@ -66,8 +66,8 @@ class AccuracyTests(SceneTestCase):
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         scene = Scene(mesh, prop, camera_for(mesh), 256)
         image = scene.render()
-        self.assertTrue(scene.mapper.GetFrameStatistics().GetValue("UsedSegmentTable"))
-        table_error = scene.mapper.GetFrameStatistics().GetValue("SegmentTableError")
+        self.assertTrue(statistic(scene.mapper, "UsedSegmentTable"))
+        table_error = statistic(scene.mapper, "SegmentTableError")
         self.assertLess(table_error, scene.mapper.GetTransferFunctionTolerance())
         error, worst = rmse(image, reference(mesh, prop, camera_for(mesh), 256))
         print(f"\n  table error {table_error:.3g}; image RMSE {error:.3g}, max {worst:.3g}", end="")
@@ -77,11 +77,11 @@ class AccuracyTests(SceneTestCase):
         spike = spike_property(low, high, 0.02)
         automatic = Scene(mesh, spike, camera_for(mesh), 64)
         automatic.render()
-        self.assertFalse(automatic.mapper.GetFrameStatistics().GetValue("UsedSegmentTable"))
-        self.assertGreater(automatic.mapper.GetFrameStatistics().GetValue("SegmentTableError"), 1e-3)
+        self.assertFalse(statistic(automatic.mapper, "UsedSegmentTable"))
+        self.assertGreater(statistic(automatic.mapper, "SegmentTableError"), 1e-3)
         forced = Scene(mesh, spike, camera_for(mesh), 64, SegmentIntegration=1)
         forced.render()
-        self.assertTrue(forced.mapper.GetFrameStatistics().GetValue("UsedSegmentTable"))
+        self.assertTrue(statistic(forced.mapper, "UsedSegmentTable"))
 
     def test_parallel_twisted_mesh_split_on_the_fly(self):
         # Hexahedra in: the mapper splits them (one warning) and renders the tets exactly.
@@ -99,7 +99,7 @@ class AccuracyTests(SceneTestCase):
         print(f"\n  face order RMSE {error:.3g}, centroid order {centroid:.3g}", end="")
         self.assertLess(error, 2e-6)
         self.assertGreater(centroid, 1e-4)
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("CyclesBroken"), 0)
+        self.assertEqual(statistic(scene.mapper, "CyclesBroken"), 0)
 
     def test_face_order_across_the_gap_of_a_non_convex_mesh(self):
         # No face joins the block to the plate behind it: the pixels' rays through the boundary
@@ -220,10 +220,10 @@ class RayCastingTests(SceneTestCase):
         settings.setdefault("OpacityThreshold", 1.0)
         scene = Scene(mesh, prop, camera, size, RenderMode=1, **settings)
         self.assert_near_reference(scene, mesh, prop, camera, size, bound)
-        print(f", {scene.mapper.GetFrameStatistics().GetValue('Peels'):.0f} peels", end="")
-        self.assertTrue(scene.mapper.GetFrameStatistics().GetValue("UsedRayCasting"))
+        print(f", {statistic(scene.mapper, 'Peels'):.0f} peels", end="")
+        self.assertTrue(statistic(scene.mapper, "UsedRayCasting"))
         if peels is not None:
-            self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("Peels"), peels)
+            self.assertEqual(statistic(scene.mapper, "Peels"), peels)
         return scene
 
     def test_exact_segments_perspective_and_parallel(self):
@@ -288,7 +288,7 @@ class RayCastingTests(SceneTestCase):
         scene = Scene(mesh, prop, camera_for(mesh), 96, RenderMode=1)
         scene.mapper.AddIsosurface(low + 0.6 * (high - low), 0.9, 0.8, 0.2, 0.5)
         image = copy_image(scene.render())
-        self.assertTrue(scene.mapper.GetFrameStatistics().GetValue("UsedRayCasting"))
+        self.assertTrue(statistic(scene.mapper, "UsedRayCasting"))
         projected = Scene(mesh, prop, camera_for(mesh), 96, RenderMode=0)
         projected.mapper.AddIsosurface(low + 0.6 * (high - low), 0.9, 0.8, 0.2, 0.5)
         error, worst = rmse(image, projected.render())
@@ -308,15 +308,15 @@ class RayCastingTests(SceneTestCase):
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         inside = Scene(mesh, prop, inside_camera(), 64, RenderMode=1)
         inside.render()
-        self.assertFalse(inside.mapper.GetFrameStatistics().GetValue("UsedRayCasting"))
+        self.assertFalse(statistic(inside.mapper, "UsedRayCasting"))
         # AUTOMATIC (default): 1,296 tetrahedra on 128^2 pixels are projected, 82,944 on 64^2 cast.
         small = Scene(mesh, prop, camera_for(mesh), 128)
         small.render()
-        self.assertFalse(small.mapper.GetFrameStatistics().GetValue("UsedRayCasting"))
+        self.assertFalse(statistic(small.mapper, "UsedRayCasting"))
         large_mesh = analytic(24)
         large = Scene(large_mesh, prop, camera_for(large_mesh), 64)
         large.render()
-        self.assertTrue(large.mapper.GetFrameStatistics().GetValue("UsedRayCasting"))
+        self.assertTrue(statistic(large.mapper, "UsedRayCasting"))
 
 
 class OpaqueGeometryTests(SceneTestCase):
@@ -345,7 +345,7 @@ class OpaqueGeometryTests(SceneTestCase):
                 print(f"\n  parallel {parallel}: RMSE {error:.3g}, max {worst:.3g}", end="")
                 self.assertGreater(rmse(image, alone)[0], 0.01)  # the sphere hides what lies behind it
                 self.assertLess(error, 3e-5)
-                self.assertFalse(projected.mapper.GetFrameStatistics().GetValue("UsedRayCasting"))
+                self.assertFalse(statistic(projected.mapper, "UsedRayCasting"))
                 self.assertEqual(projected.events.errors, 0)
 
 
@@ -364,7 +364,7 @@ class HostMemoryTests(SceneTestCase):
         for mode, expected in ((0, 48 + 16 * points / tets), (1, 44 + (16 * points + 4 * boundary) / tets)):
             scene = Scene(mesh, prop, camera_for(mesh), 64, RenderMode=mode)
             scene.render()
-            self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("UsedRayCasting"), mode == 1)
+            self.assertEqual(statistic(scene.mapper, "UsedRayCasting"), mode == 1)
             per_tet = scene.mapper.GetHostMemoryInBytes() / tets
             print(f"\n  mode {mode}: {per_tet:.1f} B per tetrahedron kept on the host (itemised {expected:.1f})",
                   end="")
@@ -402,7 +402,7 @@ class BaselineTests(BaselineTestCase):
         scene.mapper.SetKeepFloatImage(False)
         scene.render()
         self.assertEqual(scene.events.errors, 0)
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("GradientComputations"), 1)
+        self.assertEqual(statistic(scene.mapper, "GradientComputations"), 1)
         self.compare(scene.window, "preintegrated_isosurfaces_opaque_parallel.png")
 
     def test_super_phoenix(self):
@@ -435,37 +435,37 @@ class SkippingTests(SceneTestCase):
         scene.render()
         scene.render()
         m = scene.mapper
-        self.assertEqual((m.GetFrameStatistics().GetValue("Sorts"), m.GetFrameStatistics().GetValue("MeshUploads"), m.GetFrameStatistics().GetValue("TransferFunctionUploads")),
+        self.assertEqual((statistic(m, "Sorts"), statistic(m, "MeshUploads"), statistic(m, "TransferFunctionUploads")),
                          (1, 1, 1))
-        self.assertEqual(m.GetFrameStatistics().GetValue("GradientComputations"), 0)  # nothing lit: no gradients
+        self.assertEqual(statistic(m, "GradientComputations"), 0)  # nothing lit: no gradients
         scene.renderer.GetActiveCamera().Azimuth(5)
         scene.render()
-        self.assertEqual(m.GetFrameStatistics().GetValue("Sorts"), 2)
+        self.assertEqual(statistic(m, "Sorts"), 2)
         # An edit that keeps the zero-opacity set: one upload, no new visible list.
-        builds = m.GetFrameStatistics().GetValue("VisibleListBuilds")
+        builds = statistic(m, "VisibleListBuilds")
         prop.GetScalarOpacity().AddPoint(high, 0.9)
         scene.render()
-        self.assertEqual(m.GetFrameStatistics().GetValue("TransferFunctionUploads"), 2)
-        self.assertEqual(m.GetFrameStatistics().GetValue("VisibleListBuilds"), builds)
+        self.assertEqual(statistic(m, "TransferFunctionUploads"), 2)
+        self.assertEqual(statistic(m, "VisibleListBuilds"), builds)
         # Zero opacity over the lower 70%: those tetrahedra are left out.
-        drawn_all = m.GetFrameStatistics().GetValue("DrawnTetrahedra")
+        drawn_all = statistic(m, "DrawnTetrahedra")
         prop.GetScalarOpacity().RemoveAllPoints()
         prop.GetScalarOpacity().AddPoint(low + 0.7 * (high - low), 0.0)
         prop.GetScalarOpacity().AddPoint(high, 0.8)
         image = scene.render()
-        self.assertEqual(m.GetFrameStatistics().GetValue("VisibleListBuilds"), builds + 1)
-        self.assertLess(m.GetFrameStatistics().GetValue("DrawnTetrahedra"), 0.6 * drawn_all)
+        self.assertEqual(statistic(m, "VisibleListBuilds"), builds + 1)
+        self.assertLess(statistic(m, "DrawnTetrahedra"), 0.6 * drawn_all)
         # Skipping changes nothing in the image (no pixel is opaque enough to stop being shaded).
         kept = copy_image(image)
         self.assertLess(max_alpha(image), m.GetOpacityThreshold())
         m.SkipInvisibleCellsOff()
         self.assertLess(rmse(scene.render(), kept)[1], 1e-6)
-        self.assertEqual(m.GetFrameStatistics().GetValue("DrawnTetrahedra"), drawn_all)
+        self.assertEqual(statistic(m, "DrawnTetrahedra"), drawn_all)
         # Shading on: gradients once, then cached.
         prop.ShadeOn()
         scene.render()
         scene.render()
-        self.assertEqual(m.GetFrameStatistics().GetValue("GradientComputations"), 1)
+        self.assertEqual(statistic(m, "GradientComputations"), 1)
         self.assertEqual(scene.events.errors, 0)
 
 
@@ -491,16 +491,16 @@ class EarlyTerminationTests(SceneTestCase):
         """The image and shaded fragments with skipping on, then off (back to front, no mask)."""
         m = scene.mapper
         on = copy_image(scene.render())
-        self.assertTrue(m.GetFrameStatistics().GetValue("DrewFrontToBack"))
-        self.assertEqual(m.GetFrameStatistics().GetValue("OpacityMaskRefreshes"), refreshes)
-        shaded_on = m.GetFrameStatistics().GetValue("ShadedFragments")
+        self.assertTrue(statistic(m, "DrewFrontToBack"))
+        self.assertEqual(statistic(m, "OpacityMaskRefreshes"), refreshes)
+        shaded_on = statistic(m, "ShadedFragments")
         m.SkipInvisibleCellsOff()
         off = copy_image(scene.render())
-        self.assertFalse(m.GetFrameStatistics().GetValue("DrewFrontToBack"))
-        self.assertEqual(m.GetFrameStatistics().GetValue("OpacityMaskRefreshes"), 0)
+        self.assertFalse(statistic(m, "DrewFrontToBack"))
+        self.assertEqual(statistic(m, "OpacityMaskRefreshes"), 0)
         m.SkipInvisibleCellsOn()
         self.assertEqual(scene.events.errors, 0)
-        return on, shaded_on, off, m.GetFrameStatistics().GetValue("ShadedFragments")
+        return on, shaded_on, off, statistic(m, "ShadedFragments")
 
     def test_front_to_back_sums_what_back_to_front_does(self):
         # Translucent: no pixel reaches the threshold, so nothing is culled and the two orders
@@ -515,10 +515,10 @@ class EarlyTerminationTests(SceneTestCase):
             # Nothing was opaque: after a frame that measures it again (skipping was off), the next
             # frames go back to front, with the same image.
             scene.render()
-            self.assertTrue(scene.mapper.GetFrameStatistics().GetValue("DrewFrontToBack"))
+            self.assertTrue(statistic(scene.mapper, "DrewFrontToBack"))
             scene.render()
-            self.assertFalse(scene.mapper.GetFrameStatistics().GetValue("DrewFrontToBack"))
-            self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("OpaquePixelShare"), 0.0)
+            self.assertFalse(statistic(scene.mapper, "DrewFrontToBack"))
+            self.assertEqual(statistic(scene.mapper, "OpaquePixelShare"), 0.0)
             self.assertLess(rmse(copy_image(scene.render()), off)[1], 1e-6, route)
 
     def test_opaque_pixels_stop_being_shaded(self):
@@ -535,9 +535,9 @@ class EarlyTerminationTests(SceneTestCase):
         self.assertLess(error, 1e-3)
         # Most covered pixels are opaque: the next frames stay front to back.
         scene.render()
-        self.assertGreater(scene.mapper.GetFrameStatistics().GetValue("OpaquePixelShare"), 0.25)
+        self.assertGreater(statistic(scene.mapper, "OpaquePixelShare"), 0.25)
         scene.render()
-        self.assertTrue(scene.mapper.GetFrameStatistics().GetValue("DrewFrontToBack"))
+        self.assertTrue(statistic(scene.mapper, "DrewFrontToBack"))
 
     def test_camera_inside_with_isosurfaces_both_routes(self):
         # Tetrahedra crossing the near plane (ray-cast over their rectangles) and lit isosurfaces in
@@ -558,25 +558,25 @@ class EarlyTerminationTests(SceneTestCase):
         # after; made nearly opaque meanwhile, the frames stay back to front until that measure.
         mesh, prop, camera, scene = self.scene(1.0)
         scene.render()
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("OpaquePixelShare"), 0.0)
+        self.assertEqual(statistic(scene.mapper, "OpaquePixelShare"), 0.0)
         prop.SetScalarOpacityUnitDistance(0.01)
         frames = 0
-        while scene.mapper.GetFrameStatistics().GetValue("OpaquePixelShare") == 0.0 and frames < 20:
+        while statistic(scene.mapper, "OpaquePixelShare") == 0.0 and frames < 20:
             scene.render()
             frames += 1
-            self.assertFalse(scene.mapper.GetFrameStatistics().GetValue("DrewFrontToBack"))
+            self.assertFalse(statistic(scene.mapper, "DrewFrontToBack"))
         self.assertEqual(frames, 8)
-        self.assertGreater(scene.mapper.GetFrameStatistics().GetValue("OpaquePixelShare"), 0.25)
+        self.assertGreater(statistic(scene.mapper, "OpaquePixelShare"), 0.25)
         scene.render()
-        self.assertTrue(scene.mapper.GetFrameStatistics().GetValue("DrewFrontToBack"))
+        self.assertTrue(statistic(scene.mapper, "DrewFrontToBack"))
         self.assertEqual(scene.events.errors, 0)
 
     def test_threshold_one_keeps_back_to_front(self):
         mesh, prop, camera, scene = self.scene(0.01, OpacityThreshold=1.0)
         scene.render()
-        self.assertFalse(scene.mapper.GetFrameStatistics().GetValue("DrewFrontToBack"))
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("OpacityMaskRefreshes"), 0)
-        self.assertEqual(scene.mapper.GetFrameStatistics().GetValue("OpaquePixelShare"), -1.0)
+        self.assertFalse(statistic(scene.mapper, "DrewFrontToBack"))
+        self.assertEqual(statistic(scene.mapper, "OpacityMaskRefreshes"), 0)
+        self.assertEqual(statistic(scene.mapper, "OpaquePixelShare"), -1.0)
 
 
 class IsovalueNormalisationTests(SceneTestCase):
@@ -637,7 +637,7 @@ class InputTests(TetrahedralInputChecks, SceneTestCase):
         image = scene.render()
         self.assertEqual(scene.events.errors, 0)
         self.assertEqual(scene.events.warnings, 1)
-        self.assertLess(scene.mapper.GetFrameStatistics().GetValue("DrawnTetrahedra"), mesh.GetNumberOfCells())
+        self.assertLess(statistic(scene.mapper, "DrawnTetrahedra"), mesh.GetNumberOfCells())
         self.assertTrue(finite_image(image))
 
 

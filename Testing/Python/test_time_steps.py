@@ -4,7 +4,8 @@ the cells), redo only what that needs, and draw each step as a new mapper given 
 import math
 import unittest
 
-from fixtures import SceneTestCase, Scene, analytic, analytic_hexahedra, camera_for, property_from_nodes, rmse
+from fixtures import (SceneTestCase, Scene, analytic, analytic_hexahedra, camera_for, property_from_nodes, rmse,
+                      statistic)
 import uvrender
 
 from unstructuredvolume import vtkBarycentricShellMapper, vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper
@@ -111,8 +112,8 @@ class TimeStepTests(SceneTestCase):
                 expected = fresh.render()
                 self.assertLess(rmse(image, expected)[1], SAME_IMAGE)
                 self.assertGreater(vtk_to_numpy(expected.GetPointData().GetScalars())[:, 3].max(), 0.05)
-                counts = (scene.mapper.GetFrameStatistics().GetValue("MeshBuilds"), scene.mapper.GetFrameStatistics().GetValue("PointRefreshes"),
-                          scene.mapper.GetFrameStatistics().GetValue("ValueRefreshes"))
+                counts = (statistic(scene.mapper, "MeshBuilds"), statistic(scene.mapper, "PointRefreshes"),
+                          statistic(scene.mapper, "ValueRefreshes"))
                 self.assertEqual(counts, (builds, point_refreshes, value_refreshes))
                 self.assertEqual(scene.events.errors, 0)
 

@@ -9,7 +9,7 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fixtures import (HexScene, Scene, SceneTestCase, analytic, analytic_hexahedra, camera_for,  # noqa: E402
-                      largest_difference, reference, sampled_color_map_property)
+                      largest_difference, reference, sampled_color_map_property, statistic)
 
 from unstructuredvolume import vtkBarycentricShellMapper, vtkPreIntegratedTetrahedraMapper  # noqa: E402
 
@@ -35,8 +35,8 @@ class ToleranceTests(SceneTestCase):
         exact = self.render(scene_class, mesh, 0.0, **settings)
         scene = self.render(scene_class, mesh, TOLERANCE, **settings)
         self.assertEqual(scene.mapper.GetTransferFunctionTolerance(), TOLERANCE)
-        self.assertGreaterEqual(exact.mapper.GetFrameStatistics().GetValue("TransferFunctionNodes"), 256)
-        self.assertLess(scene.mapper.GetFrameStatistics().GetValue("TransferFunctionNodes"), 64)
+        self.assertGreaterEqual(statistic(exact.mapper, "TransferFunctionNodes"), 256)
+        self.assertLess(statistic(scene.mapper, "TransferFunctionNodes"), 64)
         self.assertGreater(max(p[3] for p in exact.image), 0.3)  # something is drawn
         difference = largest_difference(exact.image, scene.image)
         self.assertLessEqual(difference, BOUND)
@@ -64,10 +64,10 @@ class ToleranceTests(SceneTestCase):
         # the reference, which keeps every node (and no early ray termination, whose error is its own).
         mesh = analytic_hexahedra(8)
         every_node = self.render(HexScene, mesh, 0.0, OpacityThreshold=1.0)
-        self.assertEqual((every_node.events.warnings, every_node.mapper.GetFrameStatistics().GetValue("TransferFunctionNodes")), (1, 64))
+        self.assertEqual((every_node.events.warnings, statistic(every_node.mapper, "TransferFunctionNodes")), (1, 64))
         scene = self.render(HexScene, mesh, TOLERANCE, OpacityThreshold=1.0)
         self.assertEqual(scene.events.warnings, 0)
-        self.assertLess(scene.mapper.GetFrameStatistics().GetValue("TransferFunctionNodes"), 64)
+        self.assertLess(statistic(scene.mapper, "TransferFunctionNodes"), 64)
         low, high = mesh.GetPointData().GetScalars().GetRange()
         truth = pixels(reference(mesh, sampled_color_map_property(low, high, 0.05), camera_for(mesh), 96))
         self.assertLessEqual(largest_difference(truth, scene.image), BOUND)
