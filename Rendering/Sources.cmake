@@ -7,6 +7,7 @@ set(uv_rendering_folders Core OpenGL Adapters Tetrahedra Hexahedra Shells Verifi
 set(uv_rendering_classes
   vtkUnstructuredVolumeMapper
   vtkUnstructuredVolumeFrameStatistics
+  vtkUnstructuredVolumeTetrahedralMapper
   Tetrahedra/vtkPreIntegratedTetrahedraMapper
   Hexahedra/vtkHexahedralRayCastMapper
   Shells/vtkBarycentricShellMapper
@@ -33,5 +34,7 @@ foreach (folder IN LISTS uv_rendering_folders)
     endif ()
   endforeach ()
 endforeach ()
+# The tetrahedral mappers' shared state, beside their base.
+list(APPEND uv_rendering_private_headers "${CMAKE_CURRENT_LIST_DIR}/vtkUnstructuredVolumeTetrahedralState.h")
 list(TRANSFORM uv_rendering_folders PREPEND "${CMAKE_CURRENT_LIST_DIR}/" OUTPUT_VARIABLE uv_rendering_include_dirs)
 list(PREPEND uv_rendering_include_dirs "${CMAKE_CURRENT_LIST_DIR}")

@@ -14,7 +14,7 @@
 #include "uvTetrahedralWalk.h"
 #include "vtkBarycentricShellBlendPass.h"
 #include "vtkBarycentricShellSegmentTable.h"
-#include "vtkUnstructuredVolumeSegmentLengthTable.h"
+#include "vtkUnstructuredVolumeTetrahedralState.h"
 #include "vtkUnstructuredVolumeCellDrawer.h"
 #include "vtkBarycentricShellCellProjectionPass.h"
 #include "vtkBarycentricShellImageTexture.h"
@@ -68,7 +68,7 @@ constexpr float InsideTolerance = 1e-5f; // barycentric slack: no cracks between
 
 } // namespace
 
-class vtkBarycentricShellMapper::Internals
+class vtkBarycentricShellMapper::Internals : public vtkUnstructuredVolumeTetrahedralState
 {
 public:
   explicit Internals(vtkBarycentricShellMapper* self)
@@ -77,15 +77,8 @@ public:
   }
   vtkBarycentricShellMapper* Self; // reports the GL errors of its passes (the debug mode)
 
-  // ---- CPU state, each piece versioned (or compared exactly) for its GPU copy.
-  vtkuv::TetrahedralMesh Mesh;
-  vtkuv::NormalisedTransferFunction TransferFunction;
-  std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
-  std::vector<double> Isovalues;
-  uv::CellLists Lists;
-  vtkuv::VertexGradientCache Gradients;
-  vtkuv::VisibilityOrder Order; // cell projection
-  vtkUnstructuredVolumeSegmentLengthTable LengthTable; // cell projection's whole segments
+  // ---- CPU state besides the shared one (the mesh, its lists, order and buffers), each piece
+  // versioned (or compared exactly) for its GPU copy.
   std::vector<glm::vec3> EyePoints;
   std::vector<glm::vec2> ScreenPoints; // normalised device coordinates (NaN: not in front of the eye)
   uv::RangedCells VolumeRanges, IsosurfaceRanges;
@@ -107,8 +100,6 @@ public:
     vtkMTimeType Time = 0;
     std::uint64_t MeshVersion = 0, Version = 0;
   } Coordinates; // where the mesh's texture coordinates come from, and their version
-  uv::TetrahedronFaceNeighbours CellSurfaces; // per tetrahedron, for a cell scalar's surfaces
-  std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
   // Per tetrahedron, the coincident copies it stands for (uv::CoincidentCellDensities; 0: merged
   // into another; empty: none repeats). A shell sample holds one cell's value, so copies the optical
   // model superposes are drawn as one cell of their density.
@@ -119,20 +110,16 @@ public:
   // ---- What this frame draws (Prepare).
   struct
   {
-    bool CellProjection = false, Textured = false, Shade = false, Lit = false, NeedGradients = false;
-    bool CellSurfaces = false; // a cell scalar's isosurfaces, the faces between cells (cell projection)
+    bool CellProjection = false, Textured = false, Shade = false, Lit = false;
     bool SegmentTable = false, Pulling = true;
     int Slices = 7, Targets = 2, Layers = 1;
     double SampleDistance = 0.0, ScalarOffset = 0.0, ScalarScale = 1.0;
   } Now;
 
-  // ---- GPU state: the mesh's resources, then the passes.
-  vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, PointCoordinates, NeighbourValues;
+  // ---- GPU state besides the shared buffers: the image's, then the passes.
+  vtkUnstructuredVolumeBufferTexture PointCoordinates;
   vtkUnstructuredVolumeBufferTexture CellDensities; // the shells' Densities, when some cells coincide
-  vtkUnstructuredVolumeTransferFunctionTexture Nodes;
-  vtkUnstructuredVolumeTexture Isosurfaces;
   vtkBarycentricShellImageTexture Image;
-  vtkUnstructuredVolumeCellDrawer Cells;
   vtkBarycentricShellOpaqueDistancePass Opaque;
   vtkBarycentricShellIsosurfacePeelPass Peel;
   vtkBarycentricShellSlicePass Slices;
@@ -144,39 +131,30 @@ public:
 
   // ---- What the last frame did.
   int Shells = 0, SkippedShells = 0, IsosurfaceLayers = 0;
-  vtkIdType DrawnTetrahedra = 0;
   double LastSampleDistance = 0.0;
 
   void Release()
   {
-    for (vtkUnstructuredVolumeBufferTexture* texture :
-      { &this->TetrahedronPoints, &this->Points, &this->PointGradients, &this->PointCoordinates,
-        &this->NeighbourValues, &this->CellDensities })
-      texture->Release();
-    this->Nodes.Release();
-    this->Isosurfaces.Release();
+    this->ReleaseTetrahedralGraphics();
+    this->PointCoordinates.Release();
+    this->CellDensities.Release();
     this->Image.Release();
-    this->Cells.Release();
     this->Opaque.Release();
     this->Peel.Release();
     this->Slices.Release();
     this->Blend.Release();
-    this->LengthTable.Release();
     this->Mask.Release();
     this->Projection.Release();
   }
 
   bool UpdateMesh(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateTransferFunction(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
-  bool UpdateLists(vtkBarycentricShellMapper* self);
-  void UpdateNeighbourValues();
   void UpdateDensities();
   void UpdateGradients(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   void UpdateSampleDistance(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
   bool UpdateShells(vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame);
-  void UpdateOrder(const vtkUnstructuredVolumeFrame& frame, bool exact);
 
-  void UploadMesh(vtkOpenGLRenderWindow* window);
+  void UploadData(vtkOpenGLRenderWindow* window);
   void UploadTextureCoordinates(vtkOpenGLRenderWindow* window);
   void UploadPasses(const vtkUnstructuredVolumeFrame& frame);
 
@@ -185,7 +163,7 @@ public:
   bool ShellDensities() const { return !this->Now.CellProjection && !this->Densities.empty(); }
   void SetCellUniforms(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& frame, bool opaqueGeometry);
   void SetIntegrationUniforms(vtkShaderProgram* program, const vtkUnstructuredVolumeFrame& frame, int isosurfaces);
-  void UnbindMesh(bool opaqueGeometry);
+  void UnbindResources(bool opaqueGeometry);
   void ScissorToVolume(const vtkUnstructuredVolumeFrame& frame, const vtkUnstructuredVolumeFloatTarget& target);
   bool DrawCellProjection(
     const vtkUnstructuredVolumeFrame& frame, const vtkBarycentricShellPrograms& programs, bool opaqueGeometry);
@@ -236,23 +214,7 @@ bool vtkBarycentricShellMapper::Internals::UpdateMesh(
   {
     return false;
   }
-  vtkuv::TetrahedralMesh::Change change;
-  const std::string error =
-    this->Mesh.Update(input, scalar, [self](double progress) { self->UpdateProgress(progress); }, change);
-  self->MeshUpdates = { this->Mesh.Builds, this->Mesh.PointRefreshes, this->Mesh.ValueRefreshes };
-  if (!error.empty())
-  {
-    vtkErrorWithObjectMacro(self, << error);
-    return false;
-  }
-  if (change == vtkuv::TetrahedralMesh::Change::All)
-  {
-    for (const auto& [key, warning] : vtkuv::MeshUpdateWarnings(this->Mesh, input->GetNumberOfCells()))
-      self->WarnOnce(key, warning);
-  }
-  if (change == vtkuv::TetrahedralMesh::Change::All)
-    this->Order.Invalidate(); // new cells (the order sees moved points itself)
-  return this->Mesh.Size() > 0;
+  return self->UpdateTetrahedralMesh(input, scalar);
 }
 
 /// Transfer function and isosurfaces, normalised like the drawn scalar (the image's own range when
@@ -283,28 +245,13 @@ bool vtkBarycentricShellMapper::Internals::UpdateTransferFunction(
                                      "projection need the mesh's own linear scalar");
     this->DrawnIsosurfaces.clear();
   }
-  this->Isovalues.clear();
-  for (const uv::Isosurface& s : this->DrawnIsosurfaces)
-    this->Isovalues.push_back(s.Value);
   // A cell scalar's isosurfaces lie on faces between cells: cell projection draws them (exact for a
   // constant per cell), the shells do not sample them.
-  this->Now.CellSurfaces = !this->Now.Textured && this->Mesh.OnCells() && !this->Isovalues.empty();
-  if (this->Now.CellSurfaces)
-    this->UpdateNeighbourValues();
-  if (this->Now.CellSurfaces && self->RenderMode == SHELLS)
+  self->CommitIsosurfaces(!this->Now.Textured && this->Mesh.OnCells());
+  if (this->DrawCellSurfaces && self->RenderMode == SHELLS)
     self->WarnOnce("cell surfaces by projection", "isosurfaces of a cell scalar lie on the faces between cells: "
                                                   "drawn by cell projection (exact for a cell scalar), not by shells");
   return true;
-}
-
-/// For a cell scalar's isosurfaces: per tetrahedron (in the corner order the shaders read) the
-/// values across its faces, and its scalar range widened to them, when the cells changed.
-void vtkBarycentricShellMapper::Internals::UpdateNeighbourValues()
-{
-  if (this->CellSurfacesBuiltFor == this->Mesh.CellsVersion)
-    return;
-  this->CellSurfaces = this->Mesh.CellFaceNeighbours();
-  this->CellSurfacesBuiltFor = this->Mesh.CellsVersion;
 }
 
 /// Coincident copies among the tetrahedra, by position and field, once per set of cells.
@@ -319,33 +266,14 @@ void vtkBarycentricShellMapper::Internals::UpdateDensities()
   this->DensitiesBuiltFor = this->Mesh.CellsVersion;
 }
 
-/// Which tetrahedra matter: the volume's (some extinction in their range), the isosurfaces' (an
-/// isovalue in it) and either (cell projection). With an image, a cell's range is not its vertices'
-/// range: none is skipped.
-bool vtkBarycentricShellMapper::Internals::UpdateLists(vtkBarycentricShellMapper* self)
-{
-  const bool skip = self->SkipInvisibleCells && !this->Now.Textured;
-  const auto zeroSet = skip ? uv::ZeroExtinctionIntervals(this->TransferFunction.Nodes)
-                            : std::vector<std::pair<double, double>>();
-  // A cell scalar's surfaces: a cell is drawn for the faces it fronts too (its range widened to them).
-  const bool widened = this->Now.CellSurfaces;
-  if (this->Lists.Update(2 * this->Mesh.CellsVersion + (widened ? 1 : 0),
-        widened ? this->CellSurfaces.Low : this->Mesh.ScalarLow,
-        widened ? this->CellSurfaces.High : this->Mesh.ScalarHigh, zeroSet, this->Isovalues, vtkuv::ParallelFor))
-    this->Order.Invalidate();
-  return !this->Lists.Drawn.empty();
-}
-
 /// Vertex gradients, for isosurfaces (both modes) and shading (cell projection), unless the cells'
 /// own gradients light them.
 void vtkBarycentricShellMapper::Internals::UpdateGradients(
   vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame)
 {
   this->Now.Shade = this->Now.CellProjection && frame.Property->GetShade() != 0 && !this->Mesh.OnCells();
-  this->Now.Lit = this->Now.Shade || (!this->Isovalues.empty() && !this->Now.CellSurfaces); // faces light those
-  this->Now.NeedGradients = this->Now.Lit && self->GradientMode == VERTEX_GRADIENTS;
-  if (this->Now.NeedGradients)
-    self->UpdateVertexGradients(this->Gradients, this->Mesh.Tetrahedra, this->Mesh.Scalar, this->Mesh.Version);
+  this->Now.Lit = this->Now.Shade || (!this->Isovalues.empty() && !this->DrawCellSurfaces); // faces light those
+  self->UpdateGradients(this->Now.Lit && self->GradientMode == VERTEX_GRADIENTS);
 }
 
 /// SampleDistance, or the automatic one from the volume's bounds as of the last full build (or change
@@ -425,33 +353,16 @@ bool vtkBarycentricShellMapper::Internals::UpdateShells(
   return true;
 }
 
-/// Cell projection's back-to-front order by centroid distance, made exact across faces with `exact`
-/// (as vtkPreIntegratedTetrahedraMapper), sorted again only when the view, the points or the drawn
-/// cells changed.
-void vtkBarycentricShellMapper::Internals::UpdateOrder(const vtkUnstructuredVolumeFrame& frame, bool exact)
-{
-  const glm::dvec3 center = this->Mesh.Center;
-  this->Order.Update(this->Mesh, this->Lists.Drawn, frame.EyeInModel(center), frame.ViewInModel(center),
-    frame.Parallel, false, exact, frame.Pixels(center));
-}
-
 // ---- Upload's steps.
 
-/// The mesh's resources, each uploaded only when its version (or content) changed; a deforming mesh
-/// pays the points' upload and nothing else.
-void vtkBarycentricShellMapper::Internals::UploadMesh(vtkOpenGLRenderWindow* window)
+/// The mesh's resources, the transfer function's and the image's, each uploaded only when its
+/// version (or content) changed; a deforming mesh pays the points' upload and nothing else.
+void vtkBarycentricShellMapper::Internals::UploadData(vtkOpenGLRenderWindow* window)
 {
-  this->TetrahedronPoints.Sync(window, this->Mesh.TetrahedronPoints, 4, this->Mesh.TopologyVersion);
-  this->Points.Sync(window, this->Mesh.PointData, 4, this->Mesh.Version);
-  if (this->Now.NeedGradients)
-    this->PointGradients.Sync(window, this->Gradients.Values, 4, this->Gradients.Version);
-  if (this->Now.CellSurfaces)
-    this->NeighbourValues.Sync(window, this->CellSurfaces.Values, 4, this->CellSurfacesBuiltFor);
+  this->UploadMesh(window);
   if (this->ShellDensities())
     this->CellDensities.Sync(window, this->Densities, 1, this->DensitiesBuiltFor);
-  this->Nodes.Sync(window, this->TransferFunction.Nodes);
-  this->Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(this->DrawnIsosurfaces), 2, 4,
-    uv::IsosurfaceList::Texels(this->DrawnIsosurfaces));
+  this->UploadTransferFunction(window);
   if (this->Now.Textured)
   {
     this->Image.Sync(
@@ -518,13 +429,13 @@ std::string vtkBarycentricShellMapper::Internals::Defines(bool opaqueGeometry) c
   options.Slices = this->Now.Slices;
   options.Targets = this->Now.Targets;
   options.Layers = this->Now.Layers;
-  options.VertexGradients = this->Now.NeedGradients;
-  options.CellGradients = !this->Now.NeedGradients && this->Now.Lit;
+  options.VertexGradients = this->NeedGradients;
+  options.CellGradients = !this->NeedGradients && this->Now.Lit;
   options.SegmentTable = this->Now.SegmentTable;
   options.OpaqueGeometry = opaqueGeometry;
   options.Textured = this->Now.Textured;
   options.NodeTexture = uvgl::NodesNeedTexture(this->TransferFunction.Nodes);
-  options.CellSurfaces = this->Now.CellSurfaces;
+  options.CellSurfaces = this->DrawCellSurfaces;
   options.CellDensities = this->ShellDensities();
   return vtkBarycentricShellPrograms::DefinesFor(options);
 }
@@ -548,7 +459,7 @@ void vtkBarycentricShellMapper::Internals::SetCellUniforms(
     this->PointCoordinates.Bind(program, "pointTextureCoordinates");
     this->Image.Bind(program);
   }
-  if (this->Now.NeedGradients)
+  if (this->NeedGradients)
   {
     this->PointGradients.Bind(program, "pointGradients");
     uvgl::SetUniformMatrix(program, "modelToEyeNormals", frame.ModelToEyeNormals(this->Mesh.Center));
@@ -569,10 +480,9 @@ void vtkBarycentricShellMapper::Internals::SetIntegrationUniforms(
 
 /// Releases the texture units SetCellUniforms and SetIntegrationUniforms bound (each once, whatever
 /// the number of programs that bound it).
-void vtkBarycentricShellMapper::Internals::UnbindMesh(bool opaqueGeometry)
+void vtkBarycentricShellMapper::Internals::UnbindResources(bool opaqueGeometry)
 {
-  this->TetrahedronPoints.Unbind();
-  this->Points.Unbind();
+  this->UnbindMesh();
   if (opaqueGeometry)
     this->Opaque.Unbind();
   if (this->Now.Textured)
@@ -580,14 +490,8 @@ void vtkBarycentricShellMapper::Internals::UnbindMesh(bool opaqueGeometry)
     this->PointCoordinates.Unbind();
     this->Image.Unbind();
   }
-  if (this->Now.NeedGradients)
-    this->PointGradients.Unbind();
-  if (this->Now.CellSurfaces)
-    this->NeighbourValues.Unbind();
   if (this->ShellDensities())
     this->CellDensities.Unbind();
-  this->Nodes.Unbind();
-  this->Isosurfaces.Unbind();
 }
 
 /// Every later pass touches only the pixels the drawn bounds can cover (the full-screen ones too):
@@ -610,7 +514,7 @@ bool vtkBarycentricShellMapper::Internals::DrawCellProjection(
     return false;
   this->SetCellUniforms(program, frame, opaqueGeometry);
   this->SetIntegrationUniforms(program, frame, static_cast<int>(this->Isovalues.size()));
-  if (this->Now.CellSurfaces)
+  if (this->DrawCellSurfaces)
     this->NeighbourValues.Bind(program, "neighbourValues");
   if (this->Now.SegmentTable)
     this->LengthTable.Bind(program);
@@ -761,11 +665,8 @@ void vtkBarycentricShellMapper::ReportStatistics(vtkUnstructuredVolumeFrameStati
   statistics->SetValue("Shells", impl.Shells);
   statistics->SetValue("DrawnIsosurfaceLayers", impl.IsosurfaceLayers);
   statistics->SetValue("SkippedShells", impl.SkippedShells);
-  statistics->SetValue("DrawnTetrahedra", static_cast<double>(impl.DrawnTetrahedra));
   statistics->SetValue("SampleDistance", impl.LastSampleDistance);
   statistics->SetValue("SegmentTableBuilds", impl.Table.Builds);
-  statistics->SetValue("Sorts", impl.Order.Sorts);
-  statistics->SetValue("GradientComputations", impl.Gradients.Computations);
 }
 
 vtkIdType vtkBarycentricShellMapper::GetMeshMemoryInBytes()
@@ -804,11 +705,12 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   Internals& impl = *this->Impl;
   impl.Shells = impl.SkippedShells = impl.IsosurfaceLayers = 0;
   impl.DrawnTetrahedra = 0;
-  if (!impl.UpdateMesh(this, frame) || !impl.UpdateTransferFunction(this, frame) || !impl.UpdateLists(this))
+  if (!impl.UpdateMesh(this, frame) || !impl.UpdateTransferFunction(this, frame) ||
+    !impl.UpdateLists(this->SkipInvisibleCells && !impl.Now.Textured))
   {
     return false;
   }
-  impl.Now.CellProjection = (this->RenderMode == CELL_PROJECTION || impl.Now.CellSurfaces) && !impl.Now.Textured;
+  impl.Now.CellProjection = (this->RenderMode == CELL_PROJECTION || impl.DrawCellSurfaces) && !impl.Now.Textured;
   impl.Now.Pulling = this->ProjectionRoute == VERTEX_PULLING;
   impl.Now.Slices = this->SlicesPerShell;
   impl.Now.Targets = (this->SlicesPerShell + 1 + 3) / 4;
@@ -817,9 +719,7 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
   impl.UpdateSampleDistance(this, frame);
   if (impl.Now.CellProjection)
   {
-    impl.UpdateOrder(frame, this->VisibilityOrder == FACE_ORDER);
-    this->NumberOfCyclesBroken = static_cast<vtkIdType>(impl.Order.CyclesBroken);
-    this->NumberOfGapConstraints = static_cast<vtkIdType>(impl.Order.GapConstraints);
+    this->UpdateOrder(frame, false); // back to front
   }
   else if (!impl.UpdateShells(this, frame))
   {
@@ -836,12 +736,9 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
     impl.Now.SegmentTable =
       this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
   }
-  else if (this->SegmentIntegration != EXACT && !cutsNeeded &&
-    impl.LengthTable.Update({ impl.Mesh.PointData, impl.Mesh.TetrahedronPoints, impl.Mesh.Version },
-      impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
+  else if (impl.Now.CellProjection)
   {
-    impl.Now.SegmentTable =
-      this->SegmentIntegration == TABLE || impl.LengthTable.Error <= this->TransferFunctionTolerance;
+    impl.Now.SegmentTable = this->ChooseLengthTable(frame, cutsNeeded);
   }
   impl.LastSampleDistance = impl.Now.SampleDistance;
   return true;
@@ -850,7 +747,7 @@ bool vtkBarycentricShellMapper::Prepare(const vtkUnstructuredVolumeFrame& frame)
 bool vtkBarycentricShellMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
 {
   Internals& impl = *this->Impl;
-  impl.UploadMesh(frame.Window);
+  impl.UploadData(frame.Window);
   impl.UploadPasses(frame);
   return true;
 }
@@ -873,7 +770,7 @@ bool vtkBarycentricShellMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vt
     impl.ScissorToVolume(frame, target);
     drawn = impl.Now.CellProjection ? impl.DrawCellProjection(frame, programs, opaqueGeometry)
                                     : impl.DrawShells(this, frame, target, programs, opaqueGeometry);
-    impl.UnbindMesh(opaqueGeometry);
+    impl.UnbindResources(opaqueGeometry);
     if (!drawn)
       vtkErrorMacro("the barycentric shell shaders failed to compile or link");
   }
@@ -884,8 +781,7 @@ bool vtkBarycentricShellMapper::Draw(const vtkUnstructuredVolumeFrame& frame, vt
   return drawn;
 }
 
-void vtkBarycentricShellMapper::GetDrawnBounds(double bounds[6])
+vtkUnstructuredVolumeTetrahedralState& vtkBarycentricShellMapper::GetTetrahedralState()
 {
-  if (!this->Impl->Mesh.DrawnBounds(bounds))
-    this->Superclass::GetDrawnBounds(bounds);
+  return *this->Impl;
 }

@@ -44,18 +44,18 @@
 #ifndef vtkBarycentricShellMapper_h
 #define vtkBarycentricShellMapper_h
 
-#include "vtkUnstructuredVolumeMapper.h"
+#include "vtkUnstructuredVolumeTetrahedralMapper.h"
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
 
-class VTKUNSTRUCTUREDVOLUME_EXPORT vtkBarycentricShellMapper : public vtkUnstructuredVolumeMapper
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkBarycentricShellMapper : public vtkUnstructuredVolumeTetrahedralMapper
 {
 public:
   static vtkBarycentricShellMapper* New();
-  vtkTypeMacro(vtkBarycentricShellMapper, vtkUnstructuredVolumeMapper);
+  vtkTypeMacro(vtkBarycentricShellMapper, vtkUnstructuredVolumeTetrahedralMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum RenderModes
@@ -114,11 +114,11 @@ public:
   vtkIdType GetMeshMemoryInBytes() override;
 
 protected:
-  /// The statistics (GetFrameStatistics) the shells add: of the last frame, Shells processed and
-  /// SkippedShells (empty), DrawnIsosurfaceLayers (passes that found a crossing), DrawnTetrahedra
-  /// summed over passes, the SampleDistance used; since creation, SegmentTableBuilds,
-  /// GradientComputations (vertex gradients) and Sorts (cell projection: only when the view, the
-  /// points or the drawn cells change).
+  /// The statistics (GetFrameStatistics) the shells add to the tetrahedral base's (DrawnTetrahedra
+  /// here summed over passes; Sorts by cell projection only, when the view, the points or the drawn
+  /// cells change): of the last frame, Shells processed and SkippedShells (empty),
+  /// DrawnIsosurfaceLayers (passes that found a crossing), the SampleDistance used; since creation,
+  /// SegmentTableBuilds.
   void ReportStatistics(vtkUnstructuredVolumeFrameStatistics* statistics) override;
 
   vtkBarycentricShellMapper();
@@ -129,7 +129,7 @@ protected:
   bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) override;
   void ReleaseMapperGraphics() override;
   void ForgetMesh() override;
-  void GetDrawnBounds(double bounds[6]) override;
+  vtkUnstructuredVolumeTetrahedralState& GetTetrahedralState() override;
 
   int RenderMode = SHELLS;
   double SampleDistance = 0.0;

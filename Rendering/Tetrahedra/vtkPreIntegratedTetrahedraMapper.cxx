@@ -17,7 +17,7 @@
 #include "vtkUnstructuredVolumeOpenGL.h"
 #include "vtkuvTetrahedralMesh.h"
 #include "vtkUnstructuredVolumeTexture.h"
-#include "vtkUnstructuredVolumeSegmentLengthTable.h"
+#include "vtkUnstructuredVolumeTetrahedralState.h"
 #include "vtkuvNormalisedTransferFunction.h"
 #include "vtkUnstructuredVolumeTransferFunctionTexture.h"
 
@@ -105,37 +105,19 @@ std::size_t MaskedBatchSize(std::size_t count)
 }
 }
 
-class vtkPreIntegratedTetrahedraMapper::Internals
+class vtkPreIntegratedTetrahedraMapper::Internals : public vtkUnstructuredVolumeTetrahedralState
 {
 public:
-  // CPU state, each piece versioned for the GPU copies below.
-  vtkuv::TetrahedralMesh Mesh;
-  vtkuv::VertexGradientCache Gradients;
-  vtkuv::NormalisedTransferFunction TransferFunction;
-  std::vector<uv::Isosurface> DrawnIsosurfaces; // normalised like the scalar
-  std::vector<double> Isovalues;
-  uv::CellLists Visible;
-  vtkuv::VisibilityOrder Order;
-  bool NeedGradients = false, Shade = false;
-  // A cell scalar's isosurfaces (faces between cells): per tetrahedron the values across its faces,
-  // and its scalar range widened to them, so a transparent tetrahedron whose front face holds a
-  // surface is still drawn.
-  bool DrawCellSurfaces = false;
-  uv::TetrahedronFaceNeighbours CellSurfaces;
-  std::uint64_t CellSurfacesBuiltFor = 0; // the mesh's CellsVersion
-  // Whole segments from one table read where it is accurate enough.
-  vtkUnstructuredVolumeSegmentLengthTable Table;
-  bool UseTable = false;
+  // The shared state (the mesh, its lists, order and buffers) is the base's; this mapper adds:
+  bool Shade = false;
+  bool UseTable = false; // whole segments from one read of the length table
   // The mesh's bounding box (recentred model space).
   glm::dvec3 Low{ 0.0 }, High{ 0.0 };
   std::uint64_t BoundsFor = 0; // the mesh's Version
 
-  // GPU state.
-  vtkUnstructuredVolumeBufferTexture TetrahedronPoints, Points, PointGradients, DrawOrder, NeighbourValues;
+  // GPU state besides the shared buffers.
+  vtkUnstructuredVolumeBufferTexture DrawOrder;
   vtkUnstructuredVolumeIndexBuffer OrderIndices; // geometry-shader route: one point per tetrahedron
-  vtkUnstructuredVolumeCellDrawer Faces;            // vertex pulling: the faces of the draw order
-  vtkUnstructuredVolumeTransferFunctionTexture Nodes;
-  vtkUnstructuredVolumeTexture Isosurfaces;
   vtkUnstructuredVolumeOpacityMask Mask;
   vtkPreIntegratedTetrahedraWalk Walk; // the ray-casting route
   bool RayCasting = false;             // this frame's route
@@ -159,20 +141,14 @@ public:
     return false;
   }
 
-  vtkIdType DrawnTetrahedra = 0;
   int MeshUploads = 0, TransferFunctionUploads = 0, MaskRefreshes = 0;
   std::uint64_t ShadedFragments = 0;
 
   void Release()
   {
-    for (vtkUnstructuredVolumeBufferTexture* texture : { &this->TetrahedronPoints, &this->Points,
-           &this->PointGradients, &this->DrawOrder, &this->NeighbourValues })
-      texture->Release();
+    this->ReleaseTetrahedralGraphics();
+    this->DrawOrder.Release();
     this->OrderIndices.Release();
-    this->Faces.Release();
-    this->Nodes.Release();
-    this->Isosurfaces.Release();
-    this->Table.Release();
     this->Mask.Release();
     this->Walk.Release();
   }
@@ -250,34 +226,10 @@ public:
   void DrawPlaces(vtkOpenGLState* state, vtkShaderProgram* program, bool pulling, std::size_t first, std::size_t count)
   {
     if (pulling)
-      this->Faces.Draw(state, program, this->DrawOrder, first, count);
+      this->Cells.Draw(state, program, this->DrawOrder, first, count);
     else
       this->OrderIndices.Draw(GL_POINTS, count, first);
   }
-
-  /// Which tetrahedra are drawn: those with some extinction in their range or an isovalue in it
-  /// (for a cell scalar's surfaces, the range widened to the values across its faces).
-  void UpdateVisible(bool skipInvisible)
-  {
-    const auto zeroSet = skipInvisible ? uv::ZeroExtinctionIntervals(this->TransferFunction.Nodes)
-                                       : std::vector<std::pair<double, double>>();
-    const bool widened = this->DrawCellSurfaces;
-    if (this->Visible.Update(2 * this->Mesh.CellsVersion + (widened ? 1 : 0),
-          widened ? this->CellSurfaces.Low : this->Mesh.ScalarLow,
-          widened ? this->CellSurfaces.High : this->Mesh.ScalarHigh, zeroSet, this->Isovalues, vtkuv::ParallelFor))
-      this->Order.Invalidate();
-  }
-
-  /// The values across each tetrahedron's faces (of the input cells' shared faces), when the cells
-  /// changed.
-  void UpdateCellSurfaces()
-  {
-    if (this->CellSurfacesBuiltFor == this->Mesh.CellsVersion)
-      return;
-    this->CellSurfaces = this->Mesh.CellFaceNeighbours();
-    this->CellSurfacesBuiltFor = this->Mesh.CellsVersion;
-  }
-
 };
 
 vtkPreIntegratedTetrahedraMapper::vtkPreIntegratedTetrahedraMapper()
@@ -294,15 +246,12 @@ void vtkPreIntegratedTetrahedraMapper::ReportStatistics(vtkUnstructuredVolumeFra
   const Internals& impl = *this->Impl;
   statistics->SetValue("UsedRayCasting", impl.RayCasting ? 1.0 : 0.0);
   statistics->SetValue("Peels", impl.RayCasting ? impl.Peels : 0);
-  statistics->SetValue("DrawnTetrahedra", static_cast<double>(impl.DrawnTetrahedra));
-  statistics->SetValue("Sorts", impl.Order.Sorts);
-  statistics->SetValue("GradientComputations", impl.Gradients.Computations);
   statistics->SetValue("MeshUploads", impl.MeshUploads);
   statistics->SetValue("TransferFunctionUploads", impl.TransferFunctionUploads);
-  statistics->SetValue("VisibleListBuilds", impl.Visible.Builds);
+  statistics->SetValue("VisibleListBuilds", impl.Lists.Builds);
   statistics->SetValue("UsedSegmentTable", impl.UseTable ? 1.0 : 0.0);
-  statistics->SetValue("SegmentTableBuilds", impl.Table.Builds);
-  statistics->SetValue("SegmentTableError", impl.Table.Builds > 0 ? impl.Table.Error : -1.0);
+  statistics->SetValue("SegmentTableBuilds", impl.LengthTable.Builds);
+  statistics->SetValue("SegmentTableError", impl.LengthTable.Builds > 0 ? impl.LengthTable.Error : -1.0);
   statistics->SetValue("DrewFrontToBack", impl.FrontToBack ? 1.0 : 0.0);
   statistics->SetValue("OpaquePixelShare", impl.OpaqueShare);
   statistics->SetValue("OpacityMaskRefreshes", impl.MaskRefreshes);
@@ -313,7 +262,7 @@ vtkIdType vtkPreIntegratedTetrahedraMapper::GetMeshMemoryInBytes()
 {
   const Internals& impl = *this->Impl;
   std::size_t bytes = sizeof(std::uint32_t) * (impl.Mesh.TetrahedronPoints.size() + impl.Order.Order.size()) +
-    sizeof(float) * impl.Mesh.PointData.size() + impl.Faces.GetBytes() + impl.Walk.GetGpuBytes();
+    sizeof(float) * impl.Mesh.PointData.size() + impl.Cells.GetBytes() + impl.Walk.GetGpuBytes();
   bytes += impl.PointGradients.GetBytes();
   return static_cast<vtkIdType>(bytes);
 }
@@ -323,7 +272,7 @@ vtkIdType vtkPreIntegratedTetrahedraMapper::GetHostMemoryInBytes()
   const Internals& impl = *this->Impl;
   const auto bytes = [](const auto& vector) { return sizeof(vector[0]) * vector.capacity(); };
   const uv::TetrahedronFaceNeighbours& surfaces = impl.CellSurfaces;
-  return static_cast<vtkIdType>(impl.Mesh.GetBytes() + impl.Visible.GetBytes() + impl.Order.GetBytes() +
+  return static_cast<vtkIdType>(impl.Mesh.GetBytes() + impl.Lists.GetBytes() + impl.Order.GetBytes() +
     impl.Walk.GetBytes() + bytes(impl.Gradients.Values) + bytes(surfaces.Values) + bytes(surfaces.Low) +
     bytes(surfaces.High));
 }
@@ -363,23 +312,7 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   {
     return false;
   }
-  vtkuv::TetrahedralMesh::Change change;
-  const std::string error =
-    impl.Mesh.Update(input, scalar, [this](double progress) { this->UpdateProgress(progress); }, change);
-  this->MeshUpdates = { impl.Mesh.Builds, impl.Mesh.PointRefreshes, impl.Mesh.ValueRefreshes };
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< error);
-    return false;
-  }
-  if (change == vtkuv::TetrahedralMesh::Change::All)
-    impl.Order.Invalidate(); // moved points it sees itself; new values change it only through the list
-  if (change != vtkuv::TetrahedralMesh::Change::Nothing)
-  {
-    for (const auto& [key, warning] : vtkuv::MeshUpdateWarnings(impl.Mesh, input->GetNumberOfCells()))
-      this->WarnOnce(key, warning);
-  }
-  if (impl.Mesh.Size() == 0)
+  if (!this->UpdateTetrahedralMesh(input, scalar))
   {
     return false;
   }
@@ -392,24 +325,15 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   {
     return false;
   }
-  impl.Isovalues.clear();
-  for (const uv::Isosurface& s : impl.DrawnIsosurfaces)
-    impl.Isovalues.push_back(s.Value);
-  impl.DrawCellSurfaces = onCells && !impl.Isovalues.empty();
-  if (impl.DrawCellSurfaces)
-    impl.UpdateCellSurfaces();
-
-  impl.UpdateVisible(this->SkipInvisibleCells);
-  if (impl.Visible.Drawn.empty())
+  this->CommitIsosurfaces(onCells);
+  if (!impl.UpdateLists(this->SkipInvisibleCells))
   {
     return false;
   }
 
-  // Gradients, only when something is lit.
+  // Gradients, only when something is lit (a face's normal lights a cell scalar's surfaces).
   impl.Shade = property->GetShade() != 0 && !onCells;
-  impl.NeedGradients = !onCells && (impl.Shade || !impl.Isovalues.empty()); // a face's normal lights a cell's
-  if (impl.NeedGradients)
-    this->UpdateVertexGradients(impl.Gradients, impl.Mesh.Tetrahedra, impl.Mesh.Scalar, impl.Mesh.Version);
+  this->UpdateGradients(!onCells && (impl.Shade || !impl.Isovalues.empty()));
 
   impl.UseTable = this->ChooseSegmentTable(frame);
 
@@ -425,11 +349,7 @@ bool vtkPreIntegratedTetrahedraMapper::Prepare(const vtkUnstructuredVolumeFrame&
   // pixels that became opaque can stop being shaded (skipping on and a threshold below 1), else
   // back to front, which needs no mask passes.
   impl.FrontToBack = this->ChooseFrontToBack();
-  impl.Order.Update(impl.Mesh, impl.Visible.Drawn, frame.EyeInModel(impl.Mesh.Center),
-    frame.ViewInModel(impl.Mesh.Center), frame.Parallel, impl.FrontToBack, this->VisibilityOrder == FACE_ORDER,
-    frame.Pixels(impl.Mesh.Center));
-  this->NumberOfCyclesBroken = static_cast<vtkIdType>(impl.Order.CyclesBroken);
-  this->NumberOfGapConstraints = static_cast<vtkIdType>(impl.Order.GapConstraints);
+  this->UpdateOrder(frame, impl.FrontToBack);
   return true;
 }
 
@@ -437,26 +357,18 @@ bool vtkPreIntegratedTetrahedraMapper::Upload(const vtkUnstructuredVolumeFrame& 
 {
   Internals& impl = *this->Impl;
   vtkOpenGLRenderWindow* window = frame.Window;
-  const bool cellsUploaded =
-    impl.TetrahedronPoints.Sync(window, impl.Mesh.TetrahedronPoints, 4, impl.Mesh.TopologyVersion);
-  if (impl.Points.Sync(window, impl.Mesh.PointData, 4, impl.Mesh.Version) || cellsUploaded)
+  if (impl.UploadMesh(window))
     ++impl.MeshUploads;
-  if (impl.NeedGradients)
-    impl.PointGradients.Sync(window, impl.Gradients.Values, 4, impl.Gradients.Version);
-  if (impl.DrawCellSurfaces)
-    impl.NeighbourValues.Sync(window, impl.CellSurfaces.Values, 4, impl.CellSurfacesBuiltFor);
-  if (impl.Nodes.Sync(window, impl.TransferFunction.Nodes))
+  if (impl.UploadTransferFunction(window))
     ++impl.TransferFunctionUploads;
-  impl.Isosurfaces.Sync(window, uv::IsosurfaceList::TexelColumns(impl.DrawnIsosurfaces), 2, 4,
-    uv::IsosurfaceList::Texels(impl.DrawnIsosurfaces));
   if (impl.UseTable)
-    impl.Table.Sync(window);
+    impl.LengthTable.Sync(window);
   if (impl.RayCasting)
     impl.Walk.Sync(window);
   else if (this->ProjectionRoute == VERTEX_PULLING)
   {
     impl.DrawOrder.Sync(window, impl.Order.Order, 1, impl.Order.Version);
-    impl.Faces.Sync(true);
+    impl.Cells.Sync(true);
   }
   else
   {
@@ -536,12 +448,9 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
   program->SetUniformf("opacityThreshold", static_cast<float>(this->OpacityThreshold));
   uvgl::SetPhongUniforms(program, frame.Renderer, frame.Property, frame.WorldToEye);
 
-  impl.TetrahedronPoints.Bind(program, "tetrahedronPoints");
-  impl.Points.Bind(program, "pointData");
-  impl.Nodes.Bind(program);
-  impl.Isosurfaces.Bind(program, "isosurfaces");
+  impl.BindMesh(program);
   if (impl.UseTable)
-    impl.Table.Bind(program);
+    impl.LengthTable.Bind(program);
   if (options.OpaqueDepth)
   {
     vtkTextureObject* sceneDepth = target.GetSceneDepth();
@@ -552,27 +461,16 @@ vtkShaderProgram* vtkPreIntegratedTetrahedraMapper::ReadyTetrahedraProgram(
     const float viewport[2] = { static_cast<float>(frame.Width), static_cast<float>(frame.Height) };
     program->SetUniform2f("viewportSize", viewport);
   }
-  if (impl.NeedGradients)
-    impl.PointGradients.Bind(program, "pointGradients");
-  if (impl.DrawCellSurfaces)
-    impl.NeighbourValues.Bind(program, "neighbourValues");
   return program;
 }
 
 void vtkPreIntegratedTetrahedraMapper::UnbindTetrahedraResources(vtkUnstructuredVolumeFloatTarget& target)
 {
   Internals& impl = *this->Impl;
-  impl.TetrahedronPoints.Unbind();
-  impl.Points.Unbind();
-  impl.Nodes.Unbind();
-  impl.Isosurfaces.Unbind();
+  impl.UnbindMesh();
   if (impl.UseTable)
-    impl.Table.Unbind();
+    impl.LengthTable.Unbind();
   target.GetSceneDepth()->Deactivate();
-  if (impl.NeedGradients)
-    impl.PointGradients.Unbind();
-  if (impl.DrawCellSurfaces)
-    impl.NeighbourValues.Unbind();
 }
 
 /// Whether this frame reads whole segments from the table: partial pre-integration with nothing
@@ -581,14 +479,9 @@ void vtkPreIntegratedTetrahedraMapper::UnbindTetrahedraResources(vtkUnstructured
 /// changed).
 bool vtkPreIntegratedTetrahedraMapper::ChooseSegmentTable(const vtkUnstructuredVolumeFrame& frame)
 {
-  Internals& impl = *this->Impl;
-  if (this->SegmentIntegration == EXACT || this->IntegrationMode != PARTIAL_PRE_INTEGRATION ||
-    !impl.Isovalues.empty() || impl.Shade)
-    return false;
-  if (!impl.Table.Update({ impl.Mesh.PointData, impl.Mesh.TetrahedronPoints, impl.Mesh.Version },
-        impl.TransferFunction.Nodes, frame.ModelToEye(impl.Mesh.Center)))
-    return false;
-  return this->SegmentIntegration == TABLE || impl.Table.Error <= this->TransferFunctionTolerance;
+  const Internals& impl = *this->Impl;
+  return this->ChooseLengthTable(
+    frame, this->IntegrationMode != PARTIAL_PRE_INTEGRATION || !impl.Isovalues.empty() || impl.Shade);
 }
 
 /// Whether this frame walks rays (RenderMode): it can unless a cell scalar's isosurfaces are drawn or
@@ -602,7 +495,7 @@ bool vtkPreIntegratedTetrahedraMapper::ChooseRayCasting(const vtkUnstructuredVol
     return false;
   const double pixels = static_cast<double>(frame.Width) * frame.Height;
   if (this->RenderMode == AUTOMATIC &&
-    static_cast<double>(impl.Visible.Drawn.size()) < RayCastingTetrahedraPerPixel * pixels)
+    static_cast<double>(impl.Lists.Drawn.size()) < RayCastingTetrahedraPerPixel * pixels)
     return false;
   impl.Walk.Update(impl.Mesh);
   return this->RenderMode == RAY_CASTING || impl.Walk.FoldedFaces() == 0;
@@ -612,7 +505,7 @@ bool vtkPreIntegratedTetrahedraMapper::ChooseRayCasting(const vtkUnstructuredVol
 /// batch of tetrahedra (a single batch has no mask to refresh).
 bool vtkPreIntegratedTetrahedraMapper::OrderIsChosen()
 {
-  const std::size_t count = this->Impl->Visible.Drawn.size();
+  const std::size_t count = this->Impl->Lists.Drawn.size();
   return this->SkipInvisibleCells && this->OpacityThreshold < 1.0 && count > MaskedBatchSize(count);
 }
 
@@ -761,12 +654,11 @@ bool vtkPreIntegratedTetrahedraMapper::DrawByRayCasting(
     this->UnbindTetrahedraResources(target);
     this->CheckGLErrors("the tetrahedra's walk pass");
   }
-  impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Visible.Drawn.size());
+  impl.DrawnTetrahedra = static_cast<vtkIdType>(impl.Lists.Drawn.size());
   return true;
 }
 
-void vtkPreIntegratedTetrahedraMapper::GetDrawnBounds(double bounds[6])
+vtkUnstructuredVolumeTetrahedralState& vtkPreIntegratedTetrahedraMapper::GetTetrahedralState()
 {
-  if (!this->Impl->Mesh.DrawnBounds(bounds))
-    this->Superclass::GetDrawnBounds(bounds);
+  return *this->Impl;
 }

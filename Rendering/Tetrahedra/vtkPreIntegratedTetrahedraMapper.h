@@ -2,8 +2,8 @@
  * @class vtkPreIntegratedTetrahedraMapper
  * @brief GPU projected tetrahedra with partial pre-integration and isosurfaces.
  *
- * A vtkUnstructuredVolumeMapper: it prepares the mesh, visible list and order (Prepare), syncs them
- * to the GPU (Upload) and projects the tetrahedra (Draw); the base does the rest of the frame.
+ * A vtkUnstructuredVolumeTetrahedralMapper: it prepares the mesh, visible list and order (Prepare),
+ * syncs them to the GPU (Upload) and projects the tetrahedra (Draw); the bases do the rest.
  *
  * Renders a vtkUnstructuredGrid of tetrahedra with a point or cell scalar by cell projection on the GPU,
  * after "Volume and Isosurface Rendering with GPU-Accelerated Cell Projection" (Marroquim, Maximo,
@@ -82,18 +82,18 @@
 #ifndef vtkPreIntegratedTetrahedraMapper_h
 #define vtkPreIntegratedTetrahedraMapper_h
 
-#include "vtkUnstructuredVolumeMapper.h"
+#include "vtkUnstructuredVolumeTetrahedralMapper.h"
 #include "vtkUnstructuredVolumeModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
 class vtkShaderProgram;
 
-class VTKUNSTRUCTUREDVOLUME_EXPORT vtkPreIntegratedTetrahedraMapper : public vtkUnstructuredVolumeMapper
+class VTKUNSTRUCTUREDVOLUME_EXPORT vtkPreIntegratedTetrahedraMapper : public vtkUnstructuredVolumeTetrahedralMapper
 {
 public:
   static vtkPreIntegratedTetrahedraMapper* New();
-  vtkTypeMacro(vtkPreIntegratedTetrahedraMapper, vtkUnstructuredVolumeMapper);
+  vtkTypeMacro(vtkPreIntegratedTetrahedraMapper, vtkUnstructuredVolumeTetrahedralMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum IntegrationModes
@@ -150,9 +150,8 @@ public:
   vtkIdType GetHostMemoryInBytes();
 
 protected:
-  /// The statistics (GetFrameStatistics) the mapper adds besides UsedRayCasting and Peels (above):
-  /// DrawnTetrahedra in the last frame; since creation, visibility Sorts, GradientComputations,
-  /// MeshUploads, TransferFunctionUploads and VisibleListBuilds; the segment table's
+  /// The statistics (GetFrameStatistics) the mapper adds besides UsedRayCasting and Peels (above)
+  /// and the tetrahedral base's: since creation, MeshUploads, TransferFunctionUploads and VisibleListBuilds; the segment table's
   /// (SegmentIntegration) UsedSegmentTable (the last frame read it), SegmentTableBuilds and
   /// SegmentTableError, its largest error against the exact segments as last built (any channel of
   /// premultiplied colour and opacity; -1 before the first build); early termination's (see the
@@ -170,7 +169,7 @@ protected:
   bool Draw(const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target) override;
   void ReleaseMapperGraphics() override;
   void ForgetMesh() override;
-  void GetDrawnBounds(double bounds[6]) override;
+  vtkUnstructuredVolumeTetrahedralState& GetTetrahedralState() override;
 
   vtkShaderProgram* ReadyTetrahedraProgram(
     const vtkUnstructuredVolumeFrame& frame, vtkUnstructuredVolumeFloatTarget& target);
