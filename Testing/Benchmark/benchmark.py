@@ -414,7 +414,7 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
                 mapper.SetScalarModeToUsePointFieldData()
             mapper.SelectScalarArray(array_name(scalar))
     # This project's mappers keep their float image: the error is then the integral's, not the 8-bit
-    # window's rounding (about 0.0011 RMSE). Reading it back costs a few ms of a frame. An image drawn
+    # window's rounding (about 0.0011 RMSE). Reading it back adds a little to a frame. An image drawn
     # smaller than the viewport (ImageSampleDistance) is measured as the window shows it, stretched.
     float_image = hasattr(mapper, "SetKeepFloatImage") and mapper.GetImageSampleDistance() == 1.0
     if float_image:

@@ -3,8 +3,8 @@
 (hexahedra, wedges, pyramids, tetrahedra), and the same split into tetrahedra. Each is shown on its
 own, coloured by RTData with ParaView's default map, and its first frame (what Show + Render cost,
 starting from ParaView's camera before its first reset) must finish within FIRST_FRAME_BOUND and
-cover part of the view. "Volume (Pre-integrated Tetrahedra)" once took 58.6 s here on the
-hexahedra: every tetrahedron near the initial camera covered the whole screen.
+cover part of the view. "Volume (Pre-integrated Tetrahedra)" once took far longer than the bound
+here on the hexahedra: every tetrahedron near the initial camera covered the whole screen.
 
     pvbatch test_first_frame.py <plugin> <preintegrated|hexahedral|barycentric|volume>
 
@@ -18,7 +18,7 @@ import time
 from paraview.simple import *  # noqa: F401,F403
 from vtkmodules.vtkIOImage import vtkPNGReader
 
-FIRST_FRAME_BOUND = 40.0  # seconds; measured 0.3-13 s on this 2-core machine (ParaView's own Volume: 0.2-0.7 s)
+FIRST_FRAME_BOUND = 40.0  # seconds; loose, as first frames on a busy shared machine vary widely
 plugin, mapper = sys.argv[1], sys.argv[2]
 ENTRY = {"preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray Cast)",
          "barycentric": "Volume (Barycentric Shells)", "volume": "Volume"}[mapper]

@@ -41,8 +41,8 @@ class AccuracyTests(SceneTestCase):
         return rmse(image, reference(mesh, prop, camera, size))[0], scene
 
     def test_shell_error_falls_with_the_sample_distance(self):
-        # Without early termination (whose threshold leaves an error floor of its own: about 7e-4 here
-        # at 0.99), the sampling error alone.
+        # Without early termination (whose threshold leaves an error floor of its own), the sampling
+        # error alone.
         mesh = analytic(12)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         camera = camera_for(mesh)
@@ -59,13 +59,12 @@ class AccuracyTests(SceneTestCase):
         # Where the ray enters or leaves the mesh between two samples, the slice outside records how far
         # off the boundary is and the scalar there; a silhouette ray's whole stretch between two samples
         # is integrated from an entry and an exit record. Without the scalar and the whole stretches
-        # (records of the distance only) the finest error was about six times this bound.
+        # (records of the distance only) the finest error was well over this bound.
         self.assertLess(errors[-1], 6e-5)
 
     def test_default_sample_distance(self):
         # Automatic: 128 samples across the bounding box diagonal (early termination included). Before
-        # silhouette stretches between two samples were integrated, the error was about 2.5 times the
-        # bound.
+        # silhouette stretches between two samples were integrated, the error was well over the bound.
         mesh = analytic(12)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         error, scene = self.error(mesh, prop, camera_for(mesh))
@@ -74,7 +73,7 @@ class AccuracyTests(SceneTestCase):
         self.assertLess(error, 4e-4)
 
     def test_cell_projection_is_exact(self):
-        # The whole segment per tetrahedron, cut at the nodes and pre-integrated: measured 3.8e-7.
+        # The whole segment per tetrahedron, cut at the nodes and pre-integrated: exact but for rounding.
         # AUTOMATIC reads the table of whole segments instead where its measured error is within the
         # tolerance (per segment; the image is off by far less).
         mesh = analytic(12)
@@ -148,7 +147,7 @@ class AccuracyTests(SceneTestCase):
 
     def test_rays_begin_at_the_near_plane(self):
         # A near plane well inside the mesh, parallel and perspective: nothing in front of it counts,
-        # as in the reference (the rays began at the eye before: RMSE 0.03, parallel).
+        # as in the reference (the rays began at the eye before, which showed most in parallel).
         mesh = analytic(8)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         for parallel in (True, False):
@@ -221,7 +220,7 @@ class IsosurfaceTests(SceneTestCase):
         all_layers = rmse(images[(SHELLS, 4)], images[(CELL_PROJECTION, 4)])[0]
         one_layer = rmse(images[(SHELLS, 1)], images[(CELL_PROJECTION, 4)])[0]
         print(f"\n  against cell projection: 4 layers {all_layers:.3g}, 1 layer {one_layer:.3g}", end="")
-        self.assertLess(all_layers, 3e-3)  # measured 1.8e-3 (a few pixels cross it more than 4 times)
+        self.assertLess(all_layers, 3e-3)  # a few pixels cross it more than 4 times
         self.assertGreater(one_layer, 10 * all_layers)
 
     def test_exact_phong_on_a_plane(self):
@@ -261,7 +260,7 @@ class DeformationTests(SceneTestCase):
             image = scene.render()
             error = rmse(image, reference(mesh, prop, camera, 96))[0]
             print(f"\n  frame {frame}: RMSE {error:.3g}", end="")
-            self.assertLess(error, 1.5e-3)  # measured 2e-4 .. 6e-4
+            self.assertLess(error, 1.5e-3)
         self.assertEqual(statistic(scene.mapper, "MeshBuilds"), 1)
         self.assertEqual(statistic(scene.mapper, "PointRefreshes"), 3)
         # The automatic sample distance, and so the segment table, stay as they were.
@@ -653,7 +652,7 @@ class StressTests(SceneTestCase):
     def test_coincident_cells_add_their_media(self):
         # Every cell twice, as a mesh appended to itself: the optical model adds the copies' media. A
         # slice keeps one cell's value (MAX blend), so the copies were drawn once (stress,
-        # "coincident cells drawn once": RMSE 0.03 to 0.2). They now merge into one cell of twice
+        # "coincident cells drawn once"). They now merge into one cell of twice
         # the density, by position, so an append that repeats the points merges too. Both segment
         # routes; point and cell data.
         from vtkmodules.vtkFiltersCore import vtkAppendFilter

@@ -37,9 +37,9 @@ ISOVALUE_FRACTIONS = (0.35, 0.6)
 # passes within rounding of a face's edge. The tetrahedra mapper and cell projection decide per
 # tetrahedron which face the ray enters by; where the ray passes within rounding of an edge that
 # choice can take the face beside the one the reference crosses, whose neighbour lies on the same
-# side of the value (measured: 3 of 9216 pixels on the split hex-dominant mesh, 1 on the jittered
-# tetrahedra by cell projection and by the tetrahedra mapper, whose default route finds the entry
-# face the same way; MESH_BOUNDS).
+# side of the value (a few pixels on the split hex-dominant mesh and on the jittered tetrahedra, by
+# cell projection and by the tetrahedra mapper, whose default route finds the entry face the same
+# way; MESH_BOUNDS).
 MAPPER_BOUNDS = {"hexahedral": 2e-3, "preintegrated": 2e-3, "cell projection": 2e-3, "shells": 2e-3}
 MESH_BOUNDS = {("hex_dominant", "preintegrated"): 5e-3, ("hex_dominant", "cell projection"): 5e-3,
                ("hex_dominant", "shells"): 5e-3, ("tetrahedra", "preintegrated"): 5e-3,
@@ -215,7 +215,7 @@ class ReferenceAgainstVTKPolygons(SceneTestCase):
     EDGE_SHARE = 0.02
     # Counting needs no colour at the edge pixels, and a reference that lost the faces between cells
     # meeting within rounding of each other (a pyramid's triangle, a tetrahedron's plane) differed at
-    # 0.2-0.6% of them; measured 0 now.
+    # some of them; none do now.
     CROSSING_SHARE = 0.001
 
     def check(self, mesh, value, camera):

@@ -128,8 +128,7 @@ class ReferenceOnPolygonalCells(unittest.TestCase):
     def test_shared_prisms_against_the_marcher(self):
         # A cell scalar checks the cells' shape alone; the linear field also the field inside, on the
         # hexagonal prism only: VTK's vtkPentagonalPrism weights do not reproduce a linear field
-        # (measured: 5e-4 off in the scalar inside the unit prism), so there the marcher's field is
-        # not the exact one.
+        # inside the prism, so there the marcher's field is not the exact one.
         for name, field in (("PentagonalPrism.vtu", "cell"), ("HexagonalPrism.vtu", "cell"),
                             ("HexagonalPrism.vtu", "linear")):
             with self.subTest(f"{name}, {field}"):

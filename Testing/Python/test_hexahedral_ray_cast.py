@@ -96,7 +96,7 @@ class SingleHexahedronTests(SceneTestCase):
         steps = rmse(HexScene(mesh, prop, camera, IntegrationMode=2).render(), expected)[0]
         print(f"\n  accurate {accurate:.3g} (max {worst:.3g}); fast {fast:.3g}; 8 fixed steps {steps:.3g}; "
               f"6-tet split {errors['six']:.3g}; 5-tet split {errors['five']:.3g}", end="")
-        self.assertLess(accurate, 2e-4)  # measured 6.3e-5
+        self.assertLess(accurate, 2e-4)
         self.assertGreater(errors["six"], 10 * accurate)
         self.assertGreater(errors["five"], 10 * accurate)
 
@@ -107,8 +107,8 @@ class AccuracyTests(SceneTestCase):
         return self.assert_near_reference(scene, mesh, prop, camera, size, bound)[0]
 
     def test_regular_grid(self):
-        # Boxes: the frame is exact. Measured 4.9e-4 (one pixel whose ray passes through mesh
-        # vertices loses part of its walk; every other pixel within 1e-5).
+        # Boxes: the frame is exact. The bound is for one pixel whose ray passes through mesh
+        # vertices and loses part of its walk; every other pixel is far closer.
         mesh = analytic_hexahedra(6)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         self.check(mesh, prop, camera_for(mesh), 2e-3)
@@ -121,8 +121,8 @@ class AccuracyTests(SceneTestCase):
 
     def test_twisted_grid(self):
         # Curved cells: exact bilinear faces; along each segment the cubic through the exact field at
-        # its ends and two inner points. Measured 2.9e-4 (max 8.3e-3, at silhouettes); the frame
-        # alone 4.1e-4, as was the frame's cubic between exact ends.
+        # its ends and two inner points; the largest errors are at silhouettes. The frame alone does
+        # worse, as did the frame's cubic between exact ends.
         mesh = analytic_hexahedra(6, distortion=vtkAnalyticMeshSource.TWIST)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         exact = self.check(mesh, prop, camera_for(mesh), 5e-4)
@@ -331,7 +331,7 @@ class IsosurfaceTests(SceneTestCase):
               f"{metrics.GetNumberOfCoveredPixels()} covered pixels", end="")
         self.assertEqual(scene.events.errors, 0)
         self.assertGreater(metrics.GetNumberOfCoveredPixels(), 1500)
-        self.assertLess(metrics.GetRMSE(), 0.02)  # measured 0.010: 3 rim pixels of 1917
+        self.assertLess(metrics.GetRMSE(), 0.02)  # a few rim pixels at the silhouette
         self.assertLess(metrics.GetPercentile99Error(), 1e-3)
         # Without the isosurface the image is empty: the cells it runs through are not skipped.
         scene.mapper.RemoveAllIsosurfaces()
@@ -738,7 +738,7 @@ class InputTests(SceneTestCase):
             direct = direct_scene.render()
             self.assertEqual(direct_scene.events.errors, 0)
             self.assertLess(rmse(direct, HexScene(converted.GetOutput(), prop, camera, 64).render())[0], 1e-6)
-            self.assertLess(rmse(direct, reference(data, prop, camera, 64))[0], 1e-3)  # measured 7.6e-5, 2.1e-4
+            self.assertLess(rmse(direct, reference(data, prop, camera, 64))[0], 1e-3)
         structured.BlankCell(4 + 8 * 4 + 64 * 4)  # cells (4, 4, 4) and (4, 4, 5)
         structured.BlankCell(4 + 8 * 4 + 64 * 5)
         scene = HexScene(structured, prop, camera, 64)
@@ -894,7 +894,7 @@ class StressTests(SceneTestCase):
         # Stress case 1094 of seed 2026: NaN points leave holes; the middle column's rays run along
         # a line of edges. Leaving a cell through such an edge, the walk took the first face in its
         # order, a hole's, and stopped; the next peel's entry faces, which fold at the edge, gave
-        # the pixel to none of them (alpha 0.50 where the reference has 0.87). Now a tied face with
+        # the pixel to none of them (too little alpha against the reference). Now a tied face with
         # a neighbour wins, and the walk goes on inside.
         case = {"mesh": "inverted_hexahedra", "scalars": "some_nan", "camera": "outside", "function": "ramp"}
         mesh = stress.apply_scalars(stress.build_mesh(case), case)
@@ -904,7 +904,7 @@ class StressTests(SceneTestCase):
         # Stress case 1098 of seed 2026 (with NaN instead of Inf): a ray touches a flat Delaunay
         # sliver on the boundary and leaves it at once into a hole. The next peel entered the sliver
         # again by another of its faces, which coincide, at the same parameter, and looped there
-        # until the walk's bound ended the ray: 22 pixels drawn empty. The next peel now skips the
+        # until the walk's bound ended the ray: pixels drawn empty. The next peel now skips the
         # cell the walk left the mesh from, at the parameter it left it.
         case = {"mesh": "slivers", "scalars": "some_nan", "camera": "outside", "function": "ramp"}
         mesh = stress.apply_scalars(stress.build_mesh(case), case)
@@ -1061,9 +1061,9 @@ class ReservoirGridTests(SceneTestCase):
         error, worst = rmse(image, reference(mesh, prop, camera, 96))
         print(f"\n  RMSE {error:.3g}, largest {worst:.3g}", end="")
         self.assertEqual(scene.events.errors, 0)
-        # Before: flat pinched cells made four faces of one key and cut the mesh (RMSE 6e-4 to
-        # 1.6e-3, largest 0.07); boundary faces a cell apart tied in the entry pass's window depth
-        # and the nearer lost (a fault's far side drawn alone: 0.1 off).
+        # Before: flat pinched cells made four faces of one key and cut the mesh; boundary faces a
+        # cell apart tied in the entry pass's window depth and the nearer lost (a fault's far side
+        # drawn alone).
         self.assertLess(error, 2e-4)
         self.assertLess(worst, 0.02)
 
@@ -1117,17 +1117,17 @@ class RealMeshTests(BaselineTestCase):
         return scene
 
     def test_blunt_fin(self):
-        # Curvilinear hexahedra with collapsed cells. Measured 1.5e-4.
+        # Curvilinear hexahedra with collapsed cells.
         self.check(self.load(shared_data.bluntfin, "Density"), 0.01, 1e-3, "hexahedral_blunt_fin", (0.55,))
 
     def test_disk_out_ref(self):
-        # Non-convex (a hole down the middle): two peels. Measured 1.7e-4.
+        # Non-convex (a hole down the middle): two peels.
         self.check(self.load(shared_data.disk_out_ref, "Temp"), 0.05, 1e-3, "hexahedral_disk_out_ref", (0.4, 0.8))
 
     def test_can(self):
-        # The crushed can: 51 of its 4800 hexahedra are tangled (Jacobian of both signs). Measured
-        # 3.5e-3 (8.6e-3 against the reference before it stopped losing cells): the walk takes one
-        # cell at a time where the optical model superposes overlapping cells.
+        # The crushed can: 51 of its 4800 hexahedra are tangled (Jacobian of both signs), hence the
+        # looser bound: the walk takes one cell at a time where the optical model superposes
+        # overlapping cells.
         mesh = self.load(shared_data.can, "DISPL_magnitude")
         scene = self.check(mesh, 0.05, 0.007, "hexahedral_can", (0.5,))
         self.assertEqual(statistic(scene.mapper, "TangledCells"), 51)

@@ -36,7 +36,7 @@ from vtkmodules.vtkRenderingCore import vtkCamera  # noqa: E402
 SIZE = 64
 MARCH_PIXELS = 24
 MARCH_STEPS = 6000
-MARCH_BOUND = 5e-6  # reference against marcher, largest RGBA difference (measured at most 2e-7)
+MARCH_BOUND = 5e-6  # reference against marcher, largest RGBA difference
 QUADRATIC_EDGES = ((0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3))  # VTK's mid-edge node order
 
 
@@ -240,10 +240,10 @@ MAPPERS = {"preintegrated": vtkPreIntegratedTetrahedraMapper, "shells": vtkBaryc
 
 class MappersAgainstReference(SceneTestCase):
     """RMSE of each mapper on the subdivision at levels 2 and 4 against the exact higher-order
-    reference: second order (measured ratios 0.25-0.34) and within LEVEL_4_BOUND at level 4."""
+    reference: second order (ratios within RATIO_BOUND) and within LEVEL_4_BOUND at level 4."""
 
     RATIO_BOUND = 0.4
-    LEVEL_4_BOUND = 8e-3  # measured at most 5.8e-3 (64 x 64 pixels, the test's opacity)
+    LEVEL_4_BOUND = 8e-3  # at 64 x 64 pixels and the test's opacity
 
     def errors(self, mesh, array, mapper_names):
         prop, camera = scene_of(mesh, array)

@@ -45,7 +45,7 @@ class AccuracyTests(SceneTestCase):
     def test_faces_far_beyond_the_viewport(self):
         # Zoomed in from outside the mesh (the near plane cuts nothing), faces reach far past the
         # viewport and the clipper cuts them: an attribute interpolated without perspective went
-        # wrong at the vertices it made (0.16 RMSE at both angles), so such frames rebuild the ray.
+        # wrong at the vertices it made, at both angles, so such frames rebuild the ray.
         mesh = analytic(6)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         for angle in (2.0, 0.05):
@@ -94,7 +94,7 @@ class AccuracyTests(SceneTestCase):
         expected = reference(tets, prop, camera, 128)
         error, _ = rmse(image, expected)
         # The twist makes the centroid order wrong for some pairs of tetrahedra; the face order
-        # (default) is exact, leaving the exact segments' own error (the same mesh untwisted: 5e-7).
+        # (default) is exact, leaving the exact segments' own error (as on the same mesh untwisted).
         centroid, _ = rmse(Scene(hexes, prop, camera, 128, VisibilityOrder=0, SegmentIntegration=2).render(), expected)
         print(f"\n  face order RMSE {error:.3g}, centroid order {centroid:.3g}", end="")
         self.assertLess(error, 2e-6)
@@ -132,7 +132,7 @@ class AccuracyTests(SceneTestCase):
     def test_orders_longer_than_one_index_batch(self):
         # Vertex pulling draws from one fixed pattern of face indices, offset per chunk of 16,384
         # tetrahedra: a longer order must draw what the geometry-shader route draws. (RMSE, not the
-        # largest error: at a few pixels whose rays graze faces the routes differ by about 1e-2, on
+        # largest error: at a few pixels whose rays graze faces the routes differ visibly, on
         # either side of the reference, which vtkLocatorRayMarcher confirms there.)
         mesh = analytic(24)
         self.assertGreater(mesh.GetNumberOfCells(), 4 * 16384)
@@ -149,7 +149,7 @@ class AccuracyTests(SceneTestCase):
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         camera = inside_camera()
         # Tetrahedra crossing the near plane are ray-cast from that plane, where the reference's rays
-        # begin (from the eye, over the whole screen, before: 3.3e-3). With exact segments and the
+        # begin (they began at the eye, over the whole screen, before). With exact segments and the
         # face order only the integration's error is left; the centroid order of the large
         # tetrahedra around the eye is wrong for some, and the table of whole segments (default)
         # reads segments as long as these within its tolerance.
@@ -167,9 +167,9 @@ class AccuracyTests(SceneTestCase):
 
     def test_parallel_camera_inside_the_mesh(self):
         # Parallel projection with the near plane cutting the mesh: what lies before the plane is not
-        # seen (it was, projected whole: 4664 pixels covered where the reference covers 4142). Exact
+        # seen (it was, projected whole: more pixels covered than the reference covers). Exact
         # segments leave only the integration's rounding; with 'noperspective' attributes Mesa's
-        # clipper gave wrong front and back values along the viewport's border (1e-3 off).
+        # clipper gave wrong front and back values along the viewport's border.
         mesh = analytic(6)
         prop = uvrender.volume_property(mesh.GetPointData().GetScalars().GetRange())
         camera = vtkCamera()

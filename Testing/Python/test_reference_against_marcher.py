@@ -130,9 +130,9 @@ FLAT_CELLS = {VTK_VERTEX, VTK_POLY_VERTEX, VTK_LINE, VTK_POLY_LINE, VTK_TRIANGLE
 MAPPER_PIXELS = 300
 WORST_PIXELS = 20
 MAPPER_BOUNDS = {"preintegrated": 2e-3, "shells": 1.5e-2, "hexahedral": 1e-2}
-# Known limit, measured: the hexahedral walk through the can's 51 tangled cells (0.011, at 8 of 758
-# covered pixels). (The tetrahedra mapper's projection was off by 8.2e-3 and 8.8e-3 on the non-convex
-# tetra_mesh and mfem_escher, by its centroid order; it ray-casts them now, AUTOMATIC at this size.)
+# Known limit: the hexahedral walk through the can's 51 tangled cells, at a few covered pixels. (The
+# tetrahedra mapper's projection was off on the non-convex tetra_mesh and mfem_escher, by its centroid
+# order; it ray-casts them now, AUTOMATIC at this size.)
 MESH_BOUNDS = {("can", "hexahedral"): 1.5e-2}
 
 

@@ -34,7 +34,7 @@ ISOSURFACES = 300
 ISOSURFACE_RMSE = 0.06
 # ImageSampleDistance 2, the window's pixels against the full image's, with an opaque sphere: the
 # stretched image blurs the volume's and the sphere's edges (an image left unclipped by the sphere,
-# or drawn over part of the tile, is ten times as far off).
+# or drawn over part of the tile, is far further off).
 STRETCHED_IMAGE_RMSE = 0.02
 
 # (mapper, case): why the mapper is known to fail the case. Each is a bug left open: its subtest must

@@ -14,8 +14,7 @@ label_args=()
 # Xvfb runs with -noreset: by default it resets whenever its last client disconnects, and a client
 # connecting then is refused: "bad X server connection" (an abort in vtkXOpenGLRenderWindow) or,
 # when it hits ParaView's display check, "remote rendering ... not available" and a 2-rank pvbatch
-# that hangs in ordered compositing. Measured with both cores busy: 5 of 12 two-rank runs failed
-# without -noreset, 0 of 10 with it.
+# that hangs in ordered compositing; with both cores busy, two-rank runs failed that way often.
 # No test is rerun: a flaky test is a bug to find.
 for dir in "${test_dirs[@]}"; do
   xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \

@@ -194,7 +194,7 @@ TEST(RayCellGeometry, BilinearPatchAndCurvedHexahedron)
 TEST(RayCellGeometry, InverseMapConvergesWhereRoundingLimitsTheStep)
 {
   // Small sheared cells far from the origin: in absolute coordinates no Newton step gets below
-  // 1e-14, and the reference lost such cells (office grid: 6.5% of solves reported failure).
+  // 1e-14, and the reference lost such cells (on the office grid, solves reported failure).
   std::mt19937 random(7);
   std::uniform_real_distribution<double> unit(0.05, 0.95);
   for (double offset : { 3.0, 1e6, 1e9 })

@@ -92,7 +92,7 @@ TEST(TetrahedronSegmentTable, DenseMediaCostTheLengthAxisLittle)
   // The ramp over lengths where its densest value reaches optical depth 3 and 10 (long cells against
   // a short unit distance, as Blunt Fin's): opacity changes fastest over the shortest lengths, which
   // get the length axis's texels, so the error stays near what the scalar axes leave (evenly spaced
-  // lengths: 8.9e-3 at depth 10, ten times depth 3's).
+  // lengths left depth 10 far worse than depth 3).
   const uv::TransferFunction ramp(Ramp());
   const auto error = [&](double depth) {
     return uv::TetrahedronSegmentTableError(ramp, Table(Ramp(), depth / 0.4, 128, 32), 4096);
