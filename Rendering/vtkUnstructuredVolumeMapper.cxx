@@ -1,5 +1,6 @@
 #include "vtkUnstructuredVolumeMapper.h"
 
+#include "uvAdaptiveImageSampleDistance.h"
 #include "uvIsosurfaceList.h"
 #include "vtkUnstructuredVolumeFloatTarget.h"
 #include "vtkUnstructuredVolumeFrame.h"
@@ -15,11 +16,13 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLError.h"
+#include "vtkUnstructuredVolumeCompatibility.h" // the OpenGL loader
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
+#include "vtkTimerLog.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -95,6 +98,12 @@ struct vtkUnstructuredVolumeMapper::Shared
   vtkOpenGLRenderWindow* Context = nullptr;
   std::set<std::string> WarningsGiven; // the keys of WarnOnce
   vtkNew<vtkUnstructuredVolumeFrameStatistics> Statistics;
+  uv::AdaptiveImageSampleDistance Adaptive; // AutoAdjustSampleDistances
+  struct
+  {
+    double Distance = 1.0, Seconds = 0.0;
+    bool Interactive = false;
+  } LastFrame;
 };
 
 vtkUnstructuredVolumeMapper::vtkUnstructuredVolumeMapper()
@@ -239,6 +248,9 @@ void vtkUnstructuredVolumeMapper::ReportStatistics(vtkUnstructuredVolumeFrameSta
   statistics->SetValue("TransferFunctionNodes", this->NumberOfTransferFunctionNodes);
   statistics->SetValue("CyclesBroken", static_cast<double>(this->NumberOfCyclesBroken));
   statistics->SetValue("GapConstraints", static_cast<double>(this->NumberOfGapConstraints));
+  statistics->SetValue("UsedImageSampleDistance", this->Base->LastFrame.Distance);
+  statistics->SetValue("InteractiveFrame", this->Base->LastFrame.Interactive ? 1.0 : 0.0);
+  statistics->SetValue("FrameSeconds", this->Base->LastFrame.Seconds);
 }
 
 bool vtkUnstructuredVolumeMapper::CommitTransferFunction(vtkVolumeProperty* property, double offset,
@@ -303,12 +315,52 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
     return;
   }
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  const double start = vtkTimerLog::GetUniversalTime();
+  const int buildsBefore = this->MeshUpdates.Builds;
+  const double distance = this->ChooseImageSampleDistance(volume);
+  if (this->RenderFrame(renderer, volume, window, distance) && this->AutoAdjustSampleDistances)
+  {
+    glFinish(); // the frame's time is the GPU's too
+  }
+  this->TimeToDraw = vtkTimerLog::GetUniversalTime() - start;
+  auto& last = this->Base->LastFrame;
+  last.Distance = distance;
+  last.Seconds = this->TimeToDraw;
+  last.Interactive = this->AutoAdjustSampleDistances &&
+    uv::AdaptiveImageSampleDistance::IsInteractive(volume->GetAllocatedRenderTime());
+  if (this->MeshUpdates.Builds == buildsBefore) // a mesh build says nothing of the next frame
+  {
+    this->Base->Adaptive.Record(distance, this->TimeToDraw, volume->GetAllocatedRenderTime());
+  }
+}
+
+double vtkUnstructuredVolumeMapper::ChooseImageSampleDistance(vtkVolume* volume)
+{
+  if (!this->AutoAdjustSampleDistances)
+  {
+    return this->ImageSampleDistance;
+  }
+  uv::AdaptiveImageSampleDistance::Limits limits;
+  limits.Still = this->ImageSampleDistance;
+  limits.Minimum = this->MinimumImageSampleDistance;
+  limits.Maximum = this->MaximumImageSampleDistance;
+  return this->Base->Adaptive.Next(volume->GetAllocatedRenderTime(), limits);
+}
+
+bool vtkUnstructuredVolumeMapper::RenderFrame(
+  vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window, double distance)
+{
   vtkUnstructuredVolumeFrame frame = vtkUnstructuredVolumeFrame::Make(renderer, volume, window);
-  frame.ReduceImage(this->ImageSampleDistance);
+  frame.ReduceImage(distance);
+  if (this->AutoAdjustSampleDistances &&
+    uv::AdaptiveImageSampleDistance::IsInteractive(volume->GetAllocatedRenderTime()))
+  {
+    frame.InteractiveReduction = distance / this->ImageSampleDistance;
+  }
   if (frame.IsEmpty() || !this->WithinMemory("preparing the mesh", [&] { return this->Prepare(frame); }))
   {
     this->KeepTransparentImage(frame);
-    return;
+    return false;
   }
   this->UseContext(window);
   if (GLErrorChecks)
@@ -333,9 +385,10 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   if (!uploaded)
   {
     this->KeepTransparentImage(frame);
-    return;
+    return true;
   }
   this->DrawAndComposite(frame);
+  return true;
 }
 
 bool vtkUnstructuredVolumeMapper::WithinMemory(const char* step, const std::function<bool()>& run)
@@ -461,6 +514,8 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Isosurfaces: " << this->Base->Isosurfaces.Size() << "\n";
   os << indent << "KeepFloatImage: " << this->KeepFloatImage << "\n";
   os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
+  os << indent << "AutoAdjustSampleDistances: " << this->AutoAdjustSampleDistances << " (from "
+     << this->MinimumImageSampleDistance << " to " << this->MaximumImageSampleDistance << ")\n";
   os << indent << "ProjectionRoute: " << (this->ProjectionRoute == VERTEX_PULLING ? "VertexPulling" : "GeometryShader")
      << "\n";
   os << indent << "SkipInvisibleCells: " << this->SkipInvisibleCells << "\n";
@@ -477,6 +532,10 @@ void vtkUnstructuredVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeshBuilds: " << this->MeshUpdates.Builds << "\n";
   os << indent << "PointRefreshes: " << this->MeshUpdates.PointRefreshes << "\n";
   os << indent << "ValueRefreshes: " << this->MeshUpdates.ValueRefreshes << "\n";
+  // The last frame's reduction (AutoAdjustSampleDistances), readable there too.
+  os << indent << "InteractiveFrame: " << this->Base->LastFrame.Interactive << "\n";
+  os << indent << "UsedImageSampleDistance: " << this->Base->LastFrame.Distance << "\n";
+  os << indent << "FrameSeconds: " << this->Base->LastFrame.Seconds << "\n";
 }
 
 void vtkUnstructuredVolumeMapper::UpdateVertexGradients(vtkuv::VertexGradientCache& gradients, vtkDataSet* cells,

@@ -89,6 +89,26 @@ public:
   vtkGetMacro(ImageSampleDistance, double);
   ///@}
 
+  ///@{
+  /// Automatic image sample distances, as VTK's own volume mappers have them (default on). A frame
+  /// the renderer allows less than a second (vtkVolume's allocated render time, which follows the
+  /// render window's DesiredUpdateRate: vtkRenderWindowInteractor raises it while the camera moves)
+  /// is interactive: it draws a reduced image whose distance between rays, within
+  /// [MinimumImageSampleDistance, MaximumImageSampleDistance] and never finer than
+  /// ImageSampleDistance, is chosen from the last frames' times to fit the time allowed
+  /// (uvAdaptiveImageSampleDistance.h). Still frames are drawn at ImageSampleDistance, exactly as
+  /// with it off. The mapper waits for the GPU to finish each frame to time it (vtkVolume reads the
+  /// time as the mapper's TimeToDraw). The statistics UsedImageSampleDistance, InteractiveFrame (it
+  /// was drawn as interactive) and FrameSeconds: the last frame's.
+  vtkSetMacro(AutoAdjustSampleDistances, bool);
+  vtkGetMacro(AutoAdjustSampleDistances, bool);
+  vtkBooleanMacro(AutoAdjustSampleDistances, bool);
+  vtkSetClampMacro(MinimumImageSampleDistance, double, 1.0, 16.0);
+  vtkGetMacro(MinimumImageSampleDistance, double);
+  vtkSetClampMacro(MaximumImageSampleDistance, double, 1.0, 16.0);
+  vtkGetMacro(MaximumImageSampleDistance, double);
+  ///@}
+
   enum ProjectionRoutes
   {
     VERTEX_PULLING = 0,
@@ -330,6 +350,9 @@ protected:
 
   bool KeepFloatImage = false;
   double ImageSampleDistance = 1.0;
+  bool AutoAdjustSampleDistances = true;
+  double MinimumImageSampleDistance = 1.0;
+  double MaximumImageSampleDistance = 8.0;
   int ProjectionRoute = VERTEX_PULLING;
   bool SkipInvisibleCells = true;
   double OpacityThreshold = 1.0;
@@ -358,6 +381,9 @@ private:
   bool ReportGLErrors(const char* pass);
 
   bool CheckArguments(vtkRenderer* renderer, vtkVolume* volume);
+  double ChooseImageSampleDistance(vtkVolume* volume);
+  /// The frame's steps at image sample distance `distance`; true when it used the GL context.
+  bool RenderFrame(vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window, double distance);
   void UseContext(vtkOpenGLRenderWindow* window);
   bool DrawAndComposite(const vtkUnstructuredVolumeFrame& frame);
 

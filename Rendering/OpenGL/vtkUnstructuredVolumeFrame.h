@@ -36,6 +36,9 @@ struct vtkUnstructuredVolumeFrame
   vtkCamera* Camera = nullptr;
   int OriginX = 0, OriginY = 0, TileWidth = 0, TileHeight = 0; // the renderer's tile of the window
   int Width = 0, Height = 0; // the image the mapper draws: the tile's size, or less (ReduceImage)
+  // An interactive frame's image sample distance over the still frame's (AutoAdjustSampleDistances;
+  // 1 for still frames): a mapper may coarsen other work by it, as the image is.
+  double InteractiveReduction = 1.0;
   bool Parallel = false;
   double NearDepth = 0.0; // eye distance of the near clipping plane, where rays begin
   bool OpaqueDepth = true; // the depth buffer may hold geometry drawn before the volume

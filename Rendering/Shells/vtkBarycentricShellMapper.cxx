@@ -66,6 +66,14 @@ namespace
 constexpr int MaximumShells = 4096;  // beyond it the sample distance is widened (with a warning)
 constexpr float InsideTolerance = 1e-5f; // barycentric slack: no cracks between neighbours
 
+/// An interactive frame samples along its rays as coarsely as across them: its sample distance is
+/// widened by the image's reduction, rounded to a power of two so that the segment table, built per
+/// sample distance, is rebuilt only when the reduction changes by twice or more.
+double InteractiveSampling(const vtkUnstructuredVolumeFrame& frame)
+{
+  return frame.InteractiveReduction > 1.0 ? std::exp2(std::round(std::log2(frame.InteractiveReduction))) : 1.0;
+}
+
 } // namespace
 
 class vtkBarycentricShellMapper::Internals : public vtkUnstructuredVolumeTetrahedralState
@@ -282,7 +290,7 @@ void vtkBarycentricShellMapper::Internals::UpdateGradients(
 void vtkBarycentricShellMapper::Internals::UpdateSampleDistance(
   vtkBarycentricShellMapper* self, const vtkUnstructuredVolumeFrame& frame)
 {
-  this->Now.SampleDistance = self->SampleDistance;
+  this->Now.SampleDistance = self->SampleDistance * InteractiveSampling(frame);
   if (this->Now.SampleDistance > 0.0)
     return;
   // The matrix by value: ParaView sets the volume's matrix again whenever its data changes.
@@ -299,7 +307,7 @@ void vtkBarycentricShellMapper::Internals::UpdateSampleDistance(
     this->Automatic.Matrix = matrix;
     this->Automatic.SamplesAcross = self->AutomaticSamplesAcross;
   }
-  this->Now.SampleDistance = this->Automatic.Value;
+  this->Now.SampleDistance = this->Automatic.Value * InteractiveSampling(frame);
 }
 
 /// The shells, front to back, and the cells each holds (uvShellBuckets.h). False when no cell is in

@@ -74,7 +74,9 @@ public:
   /// Distance between samples along a ray in SHELLS mode, in world units. 0 (default): automatic,
   /// AutomaticSamplesAcross (default 128) samples across the mesh's bounding box diagonal, kept while
   /// only the points move (a deforming mesh keeps its segment table). The default was chosen where the
-  /// benchmark's error-against-time curve bends (benchmark.py measures both).
+  /// benchmark's error-against-time curve bends (benchmark.py measures both). Interactive frames
+  /// (AutoAdjustSampleDistances) widen it by their image's reduction, to the nearest power of two:
+  /// fewer shells, each drawing its tetrahedra once.
   vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SampleDistance, double);
   vtkSetClampMacro(AutomaticSamplesAcross, int, 2, 100000);
