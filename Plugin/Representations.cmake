@@ -20,7 +20,7 @@ uv_representation_entry(
   MENU "Volume (Pre-integrated Tetrahedra)"
   GROUP "Pre-integrated Tetrahedra"
   PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance SegmentIntegration
-    VisibilityOrder OpacityThreshold ProjectionRoute RenderMode ImageSampleDistance
+    VisibilityOrder OpacityThreshold ProjectionRoute RenderMode ImageSampleDistance UseOwnLevelOfDetail
   # The shells' RenderMode chooses between shells and cell projection.
   UNSHARED OpacityThreshold TetrahedraOpacityThreshold RenderMode TetrahedraRenderMode)
 
@@ -30,7 +30,7 @@ uv_representation_entry(
   GROUP "Barycentric Shells"
   PROPERTIES RenderMode SampleDistance AutomaticSamplesAcross Isovalues IsosurfaceOpacity SkipInvisibleCells
     TransferFunctionTolerance SlicesPerShell OpacityThreshold IsosurfaceLayers SegmentIntegration VisibilityOrder ProjectionRoute
-    GradientMode ImageSampleDistance
+    GradientMode ImageSampleDistance UseOwnLevelOfDetail
   # The shells stop at 0.999, the hexahedral rays at 0.99: one shared value would change one default.
   UNSHARED OpacityThreshold ShellOpacityThreshold)
 
@@ -39,6 +39,6 @@ uv_representation_entry(
   MENU "Volume (Hexahedral Ray Cast)"
   GROUP "Hexahedral Ray Cast"
   PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance OpacityThreshold MaximumPeels
-    ExactSegmentEnds GradientMode ImageSampleDistance
+    ExactSegmentEnds GradientMode ImageSampleDistance UseOwnLevelOfDetail
   # Accurate / Fast / Fixed steps, not the tetrahedra's average scalar / partial pre-integration.
   UNSHARED IntegrationMode HexahedralIntegrationMode)

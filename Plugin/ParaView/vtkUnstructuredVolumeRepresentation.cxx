@@ -3,6 +3,9 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkInformation.h"
+#include "vtkPVLODVolume.h"
+#include "vtkPVRenderView.h"
+#include "vtkPolyData.h"
 #include "vtkUnstructuredVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
@@ -30,6 +33,47 @@ void vtkUnstructuredVolumeRepresentation::PinMapper(const char* name, vtkUnstruc
 void vtkUnstructuredVolumeRepresentation::ForwardMapperProgress(vtkObject*, unsigned long, void* progress)
 {
   this->UpdateProgress(*static_cast<double*>(progress));
+}
+
+void vtkUnstructuredVolumeRepresentation::SetUseOwnLevelOfDetail(bool own)
+{
+  if (this->UseOwnLevelOfDetail != own)
+  {
+    this->UseOwnLevelOfDetail = own;
+    this->MarkModified();
+  }
+}
+
+int vtkUnstructuredVolumeRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  if (request == vtkPVView::REQUEST_UPDATE_LOD() && this->UseOwnLevelOfDetail)
+  {
+    // No LOD geometry to build: an empty one is delivered, never drawn, and the interactive frames
+    // are drawn where the data is (a client would hold only the LOD geometry).
+    if (!this->vtkVolumeRepresentation::ProcessViewRequest(request, inInfo, outInfo))
+    {
+      return 0;
+    }
+    vtkNew<vtkPolyData> nothing;
+    vtkPVView::SetPieceLOD(inInfo, this, nothing);
+    vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
+    return 1;
+  }
+  if (!this->Superclass::ProcessViewRequest(request, inInfo, outInfo))
+  {
+    return 0;
+  }
+  if (request == vtkPVView::REQUEST_RENDER())
+  {
+    const bool levelOfDetail = inInfo->Has(vtkPVRenderView::USE_LOD()) != 0;
+    this->PinnedMapper->SetAutoAdjustSampleDistances(levelOfDetail && this->UseOwnLevelOfDetail);
+    if (this->UseOwnLevelOfDetail)
+    {
+      this->Actor->SetEnableLOD(0);
+    }
+  }
+  return 1;
 }
 
 void vtkUnstructuredVolumeRepresentation::SetActiveVolumeMapper(const char*)

@@ -67,6 +67,22 @@ public:
   /// Forwarded to the mapper (vtkUnstructuredVolumeMapper::SetGradientMode).
   void SetGradientMode(int mode);
 
+  ///@{
+  /// Where ParaView renders interactively with level of detail (the data above the view's LOD
+  /// threshold), draw the entry's own reduced image, sized to the time ParaView allows an
+  /// interactive frame (vtkUnstructuredVolumeMapper::AutoAdjustSampleDistances), instead of
+  /// ParaView's LOD, the mesh's surface (default on: the benchmark's paraview_interaction.py
+  /// compares the two). Below the threshold, and in still renders, the entry draws its full image
+  /// either way, so ParaView's LOD threshold keeps its meaning. On, the LOD geometry is not built,
+  /// and interactive renders stay on the server.
+  void SetUseOwnLevelOfDetail(bool own);
+  vtkGetMacro(UseOwnLevelOfDetail, bool);
+  ///@}
+
+  /// ParaView's passes; the superclass's, and the level of detail above.
+  int ProcessViewRequest(
+    vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo) override;
+
 protected:
   vtkUnstructuredVolumeRepresentation();
   ~vtkUnstructuredVolumeRepresentation() override;
@@ -85,6 +101,7 @@ protected:
   std::vector<double> Isovalues;
   double IsosurfaceOpacity = 1.0;
   bool SeparateOpacityWarned = false;
+  bool UseOwnLevelOfDetail = true;
 
 private:
   vtkUnstructuredVolumeRepresentation(const vtkUnstructuredVolumeRepresentation&) = delete;

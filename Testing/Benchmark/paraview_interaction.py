@@ -1,0 +1,130 @@
+"""ParaView's interactive render of each entry: ParaView's level of detail against the entry's own
+reduced image, in frame time and in error (a command, not a test).
+
+    PYTHONPATH=/opt/unstructuredvolume/paraview-python/usr/lib/python3/dist-packages \\
+      pvbatch paraview_interaction.py <plugin> [--size 512] [--frames 6] [--output paraview_interaction.md]
+
+The scene: VTK's wavelet on 64^3 points, as 1.25 M tetrahedra for the tetrahedral entries (the
+plugin's Hexahedra To Tetrahedra) and as its 250 k cells for the hexahedral one, coloured and made
+transparent by RTData, seen from 20 degrees above. For each entry:
+- still: the median still frame (view.StillRender) and its image, the reference of this table: each
+  entry's still frame is exact-grade (the accuracy tests bound it against the exact reference);
+- LOD: interactive renders (view.InteractiveRender) with the data above the LOD threshold, so that
+  ParaView draws what its level of detail gives (vtkPVLODVolume's LOD mapper)
+  (the representation's UseOwnLevelOfDetail off);
+- own: the same interactive renders with UseOwnLevelOfDetail on (the default): the entry draws its own
+  image, reduced to the time ParaView allows an interactive frame (AutoAdjustSampleDistances);
+- full: interactive renders below the LOD threshold, where every entry draws its full image.
+Each interactive row: the median frame of `frames` after two to settle, and the RMSE over the window's
+RGB (8-bit, as shown) against the still frame. Writes a Markdown table and the four images per entry.
+"""
+import argparse
+import os
+import statistics
+import time
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview.vtk.vtkIOImage import vtkPNGWriter
+from paraview.vtk.vtkRenderingCore import vtkWindowToImageFilter
+
+parser = argparse.ArgumentParser()
+parser.add_argument("plugin")
+parser.add_argument("--size", type=int, default=512)
+parser.add_argument("--frames", type=int, default=6)
+parser.add_argument("--output", default="paraview_interaction.md")
+args = parser.parse_args()
+LoadPlugin(args.plugin, remote=False, ns=globals())  # noqa: F405
+
+ENTRIES = (("Volume (Pre-integrated Tetrahedra)", True), ("Volume (Barycentric Shells)", True),
+           ("Volume (Hexahedral Ray Cast)", False))
+
+
+def window_rgb(view):
+    """The view's RGB as last rendered (not rendered again), as a list of byte triples, and the image."""
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    grab.ShouldRerenderOff()
+    grab.Update()
+    image = grab.GetOutput()
+    pixels = image.GetPointData().GetScalars()
+    return [pixels.GetTuple3(i) for i in range(pixels.GetNumberOfTuples())], image
+
+
+def rgb_rmse(a, b):
+    total = sum((x - y) ** 2 for p, q in zip(a, b) for x, y in zip(p, q))
+    return (total / (3.0 * len(a))) ** 0.5 / 255.0
+
+
+def write_png(image, path):
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(image)
+    writer.Write()
+
+
+def frames(view, render, count):
+    """`render` twice to settle, then `count` times, each after a small turn; the median seconds."""
+    camera = view.GetActiveCamera()
+    times = []
+    for k in range(count + 2):
+        camera.Azimuth(1.0 if k % 2 else -1.0)  # back and forth: the view stays put on the whole
+        start = time.perf_counter()
+        render()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times[2:])
+
+
+def measure(entry, tetrahedral, folder):
+    wavelet = Wavelet()  # noqa: F405
+    wavelet.WholeExtent = [-32, 31, -32, 31, -32, 31]
+    data = HexahedraToTetrahedra(Input=wavelet) if tetrahedral else wavelet  # noqa: F405
+    view = CreateView("RenderView")  # noqa: F405
+    view.ViewSize = [args.size, args.size]
+    view.OrientationAxesVisibility = 0
+    display = Show(data, view)  # noqa: F405
+    display.Representation = entry
+    ColorBy(display, ("POINTS", "RTData"))  # noqa: F405
+    GetColorTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)  # noqa: F405
+    GetOpacityTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)  # noqa: F405
+    view.ResetCamera()
+    view.GetActiveCamera().Elevation(20)
+    view.GetActiveCamera().Azimuth(30)
+    proxy = view.SMProxy
+    still_time = frames(view, proxy.StillRender, args.frames)
+    proxy.StillRender()
+    still, image = window_rgb(view)
+    stem = entry.split("(")[1].rstrip(")").replace(" ", "_").lower()
+    write_png(image, os.path.join(folder, f"{stem}_still.png"))
+    rows = [(entry, "still", still_time, 0.0)]
+    for label, threshold, own in (("ParaView's LOD", 0.0, 0), ("own reduced image", 0.0, 1),
+                                  ("full image (below the LOD threshold)", 1e9, 1)):
+        view.LODThreshold = threshold
+        display.UseOwnLevelOfDetail = own
+        proxy.StillRender()  # a changed representation delivers its data in a still render
+        seconds = frames(view, proxy.InteractiveRender, args.frames)
+        proxy.InteractiveRender()
+        pixels, image = window_rgb(view)
+        write_png(image, os.path.join(folder, f"{stem}_{('lod', 'own', 'full')[own + (threshold > 0)]}.png"))
+        rows.append((entry, label, seconds, rgb_rmse(pixels, still)))
+    Delete(display)  # noqa: F405
+    Delete(view)  # noqa: F405
+    return rows
+
+
+def main():
+    folder = os.path.dirname(os.path.abspath(args.output))
+    rows = []
+    for entry, tetrahedral in ENTRIES:
+        rows += measure(entry, tetrahedral, folder)
+        print(*rows[-3:], sep="\n", flush=True)
+    lines = ["| entry | frame | seconds | x still | RMSE against still (RGB) |", "|---|---|---:|---:|---:|"]
+    for entry, label, seconds, error in rows:
+        still = next(s for e, l, s, _ in rows if e == entry and l == "still")
+        lines.append(f"| {entry} | {label} | {seconds:.3f} | {seconds / still:.2f} | {error:.4f} |")
+    with open(args.output, "w") as out:
+        out.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+main()
