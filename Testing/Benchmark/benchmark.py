@@ -2,7 +2,7 @@
 """Run time against error: every mapper, every scene, one process, against the exact reference.
 
     PYTHONPATH=build/vtk/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
-        Testing/Benchmark/benchmark.py [--quick] [--size 512] [--views 8] [--output out/benchmark]
+        Testing/Benchmark/benchmark.py [--quick] [--size 512] [--views 4] [--all-variants] [--output out/benchmark]
 
 For each scene (mesh, scalar, transfer function, an orbit of camera positions) and each mapper:
 preparation time (the first frame), then the median and spread of the frame time over the orbit
@@ -39,7 +39,7 @@ from unstructuredvolume import (vtkAnalyticMeshSource, vtkBarycentricShellMapper
                                 vtkHexahedralRayCastMapper, vtkPreIntegratedTetrahedraMapper,
                                 vtkUnstructuredVolumeReferenceRenderer, vtkVolumeImageErrorMetrics)
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
-from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
+from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartLegend, vtkChartXY, vtkPlotPoints
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkVersion
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkTable, vtkUnstructuredGrid
 from vtkmodules.vtkImagingCore import vtkImageConstantPad
@@ -64,6 +64,9 @@ from fixtures import analytic, hex_dominant, sampled_color_map  # noqa: E402
 from resampled_volume import ResampleToImage  # noqa: E402
 from shared_data import (SHARED, bluntfin, bucky_image, can, disk_out_ref, image_as_voxels, legacy,  # noqa: E402
                          neghip_image, openfoam_cavity_cells)
+INTERACTIVE = ", interactive"
+INTERACTIVE_RATE = 10.0  # the render window's desired update rate while the camera moves (frames a second)
+STILL_RATE = 0.0001      # vtkRenderWindowInteractor's still rate
 REFERENCE_VERSION = "3"  # bump when the reference renderer's output changes (2: no lost cells, superposition; 3: rounding overlaps touch)
 
 # ---------------------------------------------------------------------------------------------
@@ -138,7 +141,30 @@ MAPPERS = [
      "tets"),
     ("UV BarycentricCellProjection", lambda: configured(vtkBarycentricShellMapper, RenderModeToCellProjection=None),
      "tets"),
+    # Frames while the camera moves (INTERACTIVE_RATE): each mapper's default, its automatic image sample
+    # distance sizing the image to the time the window allows, measured as the window shows it.
+    ("UV PreIntegratedTetrahedra" + INTERACTIVE, vtkPreIntegratedTetrahedraMapper, "tets"),
+    ("UV BarycentricShells 128" + INTERACTIVE, lambda: configured(vtkBarycentricShellMapper, AutomaticSamplesAcross=128),
+     "tets"),
+    ("UV HexRayCast Accurate" + INTERACTIVE, vtkHexahedralRayCastMapper, "hexahedra"),
 ]
+
+# The variants a run takes unless --all-variants: VTK's mappers, Resample To Image at three resolutions
+# and with its mask, each of this project's mappers at its defaults, a few points along each one's
+# time-against-error curve, and the interactive frames. The others measure one setting each.
+DEFAULT_VARIANTS = (
+    "VTK GPUVolumeRayCast", "VTK Resample 64^3", "VTK Resample 128^3", "VTK Resample 256^3", "VTK Resample 128^3 masked",
+    "VTK ProjectedTetrahedra", "VTK UGVolumeRayCast", "VTK UGZSweep",
+    "UV PreIntegratedTetrahedra", "UV PreIntegratedTetrahedra, image sample distance 2",
+    "UV PreIntegratedTetrahedra, exact segments", "UV HexRayCast Accurate",
+    "UV BarycentricShells 64", "UV BarycentricShells 128", "UV BarycentricShells 256", "UV BarycentricCellProjection",
+    "UV PreIntegratedTetrahedra" + INTERACTIVE, "UV BarycentricShells 128" + INTERACTIVE,
+    "UV HexRayCast Accurate" + INTERACTIVE,
+)
+
+# VTK's CPU mappers above these many cells of their input take minutes a frame on this machine: left
+# out there (the README says where), as a user would.
+CELL_LIMITS = {"VTK UGZSweep": 300_000, "VTK UGVolumeRayCast": 1_500_000}
 
 
 def configured(factory, **settings):
@@ -381,6 +407,7 @@ def grab_rgba(window):
     grab.SetInput(window)
     grab.SetInputBufferTypeToRGBA()
     grab.ReadFrontBufferOff()
+    grab.ShouldRerenderOff()
     grab.Update()
     image = vtkImageData()
     image.DeepCopy(grab.GetOutput())
@@ -416,7 +443,9 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
     # This project's mappers keep their float image: the error is then the integral's, not the 8-bit
     # window's rounding (about 0.0011 RMSE). Reading it back adds a little to a frame. An image drawn
     # smaller than the viewport (ImageSampleDistance) is measured as the window shows it, stretched.
-    float_image = hasattr(mapper, "SetKeepFloatImage") and mapper.GetImageSampleDistance() == 1.0
+    # Interactive frames are reduced too: the window shows them stretched.
+    interactive = name.endswith(INTERACTIVE)
+    float_image = hasattr(mapper, "SetKeepFloatImage") and mapper.GetImageSampleDistance() == 1.0 and not interactive
     if float_image:
         mapper.SetKeepFloatImage(True)
     volume = vtkVolume()
@@ -431,6 +460,10 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
     window.WaitForCompletion()
     preparation = filtering + time.perf_counter() - start
     memory = filter_memory + resident_megabytes() - before
+    if interactive:
+        window.SetDesiredUpdateRate(INTERACTIVE_RATE)
+        for _ in range(3):  # the image size settles from the still frame's time (it at most doubles a frame)
+            window.Render()
     frames, images = [], []
     for camera in cameras:
         renderer.SetActiveCamera(camera)
@@ -446,6 +479,7 @@ def run_mapper(name, factory, mesh, scalar, prop, cameras, size):
             images.append(grab_rgba(window))
     mesh_bytes = mapper.GetMeshMemoryInBytes() if hasattr(mapper, "GetMeshMemoryInBytes") else None
     host_bytes = mapper.GetHostMemoryInBytes() if hasattr(mapper, "GetHostMemoryInBytes") else None
+    window.SetDesiredUpdateRate(STILL_RATE)
     work = work_done(mapper, window, renderer, cameras[0])
     window.Finalize()
     return preparation, frames, memory, images, (mesh_bytes, host_bytes), work
@@ -481,18 +515,44 @@ def pareto(points):
     return front
 
 
+# Plot colours by family (the first prefix that matches), each further member of a family lighter.
+FAMILIES = (("VTK Resample", (31, 119, 180)), ("VTK", (90, 90, 90)), ("UV PreIntegrated", (255, 127, 14)),
+            ("UV AverageScalar", (255, 127, 14)), ("UV BarycentricShells", (44, 160, 44)),
+            ("UV BarycentricCellProjection", (148, 103, 189)), ("UV HexRayCast", (214, 39, 40)))
+
+
+def plot_style(rows):
+    """Per row: (RGB, marker): colour by family, VTK's mappers squares, Resample To Image diamonds,
+    this project's circles, interactive frames plus signs."""
+    seen, styles = {}, []
+    for row in rows:
+        name = row["mapper"]
+        family, rgb = next(((prefix, rgb) for prefix, rgb in FAMILIES if name.startswith(prefix)), ("", (0, 0, 0)))
+        k = seen[family] = seen.get(family, -1) + 1
+        lighter = 0.0 if name.endswith(INTERACTIVE) else min(0.6, 0.2 * k)
+        rgb = tuple(int(c + (255 - c) * lighter) for c in rgb)
+        marker = (vtkPlotPoints.PLUS if name.endswith(INTERACTIVE) else vtkPlotPoints.DIAMOND
+                  if name.startswith("VTK Resample") else vtkPlotPoints.SQUARE if name.startswith("VTK")
+                  else vtkPlotPoints.CIRCLE)
+        styles.append((rgb, marker))
+    return styles
+
+
 def plot_scene(scene, rows, path):
     """Log-log frame time against covered RMSE, one point per mapper, Pareto front as a line."""
     view = vtkContextView()
     view.GetRenderWindow().SetOffScreenRendering(1)
-    view.GetRenderWindow().SetSize(640, 480)
+    view.GetRenderWindow().SetSize(1100, 640)
     chart = vtkChartXY()
     chart.SetTitle(f"{scene}: median frame time vs RMSE against the reference")
     chart.SetShowLegend(True)
+    # Beside the plot, not over its points.
+    chart.GetLegend().SetInline(False)
+    chart.GetLegend().SetHorizontalAlignment(vtkChartLegend.RIGHT)
+    chart.GetLegend().SetVerticalAlignment(vtkChartLegend.TOP)
     view.GetScene().AddItem(chart)
     usable = [r for r in rows if r["median_s"] > 0 and r["rmse_covered"] > 0]
-    palette = [(31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189), (140, 86, 75)]
-    for index, row in enumerate(usable):
+    for row, (rgb, marker) in zip(usable, plot_style(usable)):
         table = vtkTable()
         for column in ("time", "error"):
             array = vtkFloatArray()
@@ -503,9 +563,9 @@ def plot_scene(scene, rows, path):
         table.SetValue(0, 1, row["rmse_covered"])
         plot = chart.AddPlot(vtkChart.POINTS)
         plot.SetInputData(table, 0, 1)
-        plot.SetMarkerStyle(vtkPlotPoints.CIRCLE)
+        plot.SetMarkerStyle(marker)
         plot.SetMarkerSize(12)
-        plot.SetColor(*palette[index % len(palette)], 255)
+        plot.SetColor(*rgb, 255)
     front = sorted(pareto([(r["median_s"], r["rmse_covered"]) for r in usable]),
                    key=lambda i: usable[i]["median_s"])
     if front:
@@ -625,6 +685,7 @@ def skipping_table(rows):
 
 
 README_PATH = os.path.join(ROOT, "Testing", "Benchmark", "README.md")
+PLOTS = "plots"  # beside the README: one time-against-error plot per scene
 
 
 def cpu_model():
@@ -705,7 +766,7 @@ def ratios_against_vtk(rows):
     return lines
 
 
-def readme_text(rows, command, started, machine, partial):
+def readme_text(rows, command, started, machine, partial, left_out=()):
     """Testing/Benchmark/README.md for one run: how it was made, its table, its ratios."""
     renderer, version = machine["opengl"]
     sizes = sorted({(r["size"], r["views"]) for r in rows})
@@ -736,8 +797,16 @@ def readme_text(rows, command, started, machine, partial):
         "the first frame added, the GPU buffers of the mesh per cell of the scene (this project's mappers) and",
         "the host memory the mapper keeps beside its input per cell (where the mapper counts it).",
         "",
+        "Each scene's plot of frame time against error (log-log; the black line is the Pareto front):",
+        " · ".join(f"[{scene}]({PLOTS}/{scene}.png)" for scene in dict.fromkeys(r["scene"] for r in rows)) + ".",
+        "Rows ending \"interactive\" are frames while the camera moves: the render window's desired update",
+        f"rate at {INTERACTIVE_RATE:g} frames a second, as VTK's interactor sets it, so the mapper draws a reduced",
+        "image (AutoAdjustSampleDistances) measured as the window shows it, stretched.",
+        "",
         markdown_table(rows).rstrip("\n"),
         "",
+        *(["Left out (above the mapper's cell limit, CELL_LIMITS: minutes a frame here): " +
+           ", ".join(f"{name} on {scene}" for scene, name in left_out) + ".", ""] if left_out else []),
         "## What skipping saves",
         "",
         "Each mapper with SkipInvisibleCells (default) against itself without it, per scene: invisible cells",
@@ -758,10 +827,11 @@ def readme_text(rows, command, started, machine, partial):
         "",
         "```sh",
         'PYTHONPATH=build/vtk/lib/python3/dist-packages xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \\',
-        "  /usr/bin/python3 Testing/Benchmark/benchmark.py --write-readme   # every scene and mapper, 512 px, 8 views",
+        "  /usr/bin/python3 Testing/Benchmark/benchmark.py --write-readme   # every scene, 512 px, 4 views",
         "```",
         "",
-        "`--quick` (two small scenes, 128 px, 4 views), `--scenes a,b` and `--mappers substring,...` run less;",
+        "`--quick` (two small scenes, 128 px), `--scenes a,b` and `--mappers substring,...` run less,",
+        "`--all-variants` runs every registered variant (each measures one setting) besides DEFAULT_VARIANTS;",
         "the per-scene plots of time against error and montages go to `--output` (default `out/benchmark`).",
         "Other benchmarks: `deforming.py` (a mesh whose points move every frame), `time_series.py` and",
         "`paraview_time_series.py` (a reader's time steps: values or points changing, against a static frame),",
@@ -839,6 +909,8 @@ def parse_arguments():
     parser.add_argument("--output", default=os.path.join(ROOT, "out", "benchmark"))
     parser.add_argument("--scenes", default=None, help="comma-separated scene names to run (default: all)")
     parser.add_argument("--mappers", default=None, help="comma-separated substrings of mapper names (default: all)")
+    parser.add_argument("--all-variants", action="store_true",
+                        help="every registered variant, not only DEFAULT_VARIANTS (each measures one setting)")
     parser.add_argument("--write-readme", nargs="?", const=README_PATH, default=None, metavar="PATH",
                         help=f"also write this run's README (default path: {os.path.relpath(README_PATH, ROOT)})")
     return parser.parse_args()
@@ -852,18 +924,19 @@ def main():
         machine = {"cpu": cpu_model(), "cpus": os.cpu_count(), "opengl": opengl_strings(),
                    "vtk": vtkVersion.GetVTKVersion()}
     wanted_scenes = args.scenes.split(",") if args.scenes else None
-    mappers = [m for m in MAPPERS if not args.mappers or any(w in m[0] for w in args.mappers.split(","))]
+    mappers = [m for m in MAPPERS if (args.all_variants or m[0] in DEFAULT_VARIANTS) and
+               (not args.mappers or any(w in m[0] for w in args.mappers.split(",")))]
     if args.quick:
         # A smoke test: resampling to 256^3 points would outlast the rest of it, and 64^3 and 128^3 run
         # the same code.
         mappers = [m for m in mappers if not (isinstance(m[1], ResampleToImage) and m[1].samples > 128)]
     size = args.size or (128 if args.quick else 512)
-    views = args.views or (4 if args.quick else 8)
+    views = args.views or 4
     os.makedirs(args.output, exist_ok=True)
     cache = os.path.join(args.output, "reference-cache")
     os.makedirs(cache, exist_ok=True)
 
-    rows = []
+    rows, left_out = [], []
     for scene, load, scalar, maker, unit_fraction, *level in scenes(args.quick):
         if (wanted_scenes and scene not in wanted_scenes) or (scene in ON_REQUEST and not wanted_scenes):
             continue
@@ -894,6 +967,9 @@ def main():
         for name, factory, takes in mappers:
             if (takes == "hexahedra" and not hexahedral) or (takes == "image" and scene_image is None):
                 continue
+            if tets.GetNumberOfCells() > CELL_LIMITS.get(name, math.inf):
+                left_out.append((scene, name))
+                continue
             preparation, frames, memory, images, (mesh_bytes, host_bytes), work = run_mapper(
                 name, factory, {"tets": tets, "hexahedra": drawn, "image": scene_image, "any": drawn}[takes], scalar,
                 prop, cameras, size)
@@ -908,6 +984,10 @@ def main():
                   f"max {row['max_error']:.3f}  mem +{memory:.0f} MB", flush=True)
         rows += scene_rows
         plot_scene(scene, scene_rows, os.path.join(args.output, f"{scene}_time_vs_error.png"))
+        if args.write_readme:
+            folder = os.path.join(os.path.dirname(args.write_readme), PLOTS)
+            os.makedirs(folder, exist_ok=True)
+            plot_scene(scene, scene_rows, os.path.join(folder, f"{scene}.png"))
         heat_maps[0] = over_background(references[0])  # the reference has no error: show it again
         montage(first_views, heat_maps, os.path.join(args.output, f"{scene}_montage.png"))
 
@@ -920,10 +1000,10 @@ def main():
         # Anything short of every scene and mapper at the default size says so in the README itself.
         partial = ", ".join(label for label, given in (
             ("--quick", args.quick), ("--scenes", args.scenes), ("--mappers", args.mappers),
-            ("--size", args.size not in (None, 512)), ("--views", args.views not in (None, 8)),
+            ("--size", args.size not in (None, 512)), ("--views", args.views not in (None, 4)),
             ("no ../shared/data meshes", not os.path.isdir(SHARED))) if given)
         with open(args.write_readme, "w") as out:
-            out.write(readme_text(rows, run_command(), started, machine, partial))
+            out.write(readme_text(rows, run_command(), started, machine, partial, left_out))
         print(f"wrote {args.write_readme}")
 
 

@@ -2,7 +2,7 @@
 reduced image, in frame time and in error (a command, not a test).
 
     PYTHONPATH=/opt/unstructuredvolume/paraview-python/usr/lib/python3/dist-packages \\
-      pvbatch paraview_interaction.py <plugin> [--size 512] [--frames 6] [--output paraview_interaction.md]
+      pvbatch paraview_interaction.py <plugin> [--size 512] [--frames 6] [--output INTERACTION.md] [--images DIR]
 
 The scene: VTK's wavelet on 64^3 points, as 1.25 M tetrahedra for the tetrahedral entries (the
 plugin's Hexahedra To Tetrahedra) and as its 250 k cells for the hexahedral one, coloured and made
@@ -16,11 +16,14 @@ transparent by RTData, seen from 20 degrees above. For each entry:
   image, reduced to the time ParaView allows an interactive frame (AutoAdjustSampleDistances);
 - full: interactive renders below the LOD threshold, where every entry draws its full image.
 Each interactive row: the median frame of `frames` after two to settle, and the RMSE over the window's
-RGB (8-bit, as shown) against the still frame. Writes a Markdown table and the four images per entry.
+RGB (8-bit, as shown) against the still frame. Writes INTERACTION.md beside this script (how and where it
+ran, and the table) and each entry's four images to --images.
 """
 import argparse
 import os
+import platform
 import statistics
+import sys
 import time
 
 from paraview.simple import *  # noqa: F401,F403
@@ -31,7 +34,8 @@ parser = argparse.ArgumentParser()
 parser.add_argument("plugin")
 parser.add_argument("--size", type=int, default=512)
 parser.add_argument("--frames", type=int, default=6)
-parser.add_argument("--output", default="paraview_interaction.md")
+parser.add_argument("--output", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "INTERACTION.md"))
+parser.add_argument("--images", default=os.path.join("out", "paraview_interaction"))
 args = parser.parse_args()
 LoadPlugin(args.plugin, remote=False, ns=globals())  # noqa: F405
 
@@ -112,8 +116,42 @@ def measure(entry, tetrahedral, folder):
     return rows
 
 
+def header(started, view_strings):
+    """How and where the run was made."""
+    version = f"ParaView {GetParaViewVersion()}"  # noqa: F405
+    return [
+        "# ParaView: interactive renders of each entry",
+        "",
+        "Written by `Testing/Benchmark/paraview_interaction.py` from one run; do not edit by hand, run it again.",
+        "",
+        f"- Command: `pvbatch {' '.join(os.path.relpath(a) if os.path.exists(a) else a for a in sys.argv)}`",
+        f"- Run started: {started}",
+        f"- {version}; {platform.processor() or platform.machine()}, {os.cpu_count()} logical CPUs; {view_strings}",
+        f"- Scene: VTK's wavelet on 64^3 points ({args.size} x {args.size} px): 1.25 M tetrahedra for the tetrahedral "
+        "entries, its 250 k cells for the hexahedral one",
+        "",
+        "Per entry: the still frame (the reference of the errors: each entry's still frame is exact-grade), then",
+        "interactive renders (view.InteractiveRender, as while the camera moves) with the data above the view's LOD",
+        "threshold, drawn by ParaView's level of detail (UseOwnLevelOfDetail off: the mesh's surface) and by the",
+        "entry's own reduced image (on, the default), and below the threshold (the full image). Seconds: the",
+        "median frame; RMSE: over the window's RGB, in [0, 1], against the still frame.",
+        "",
+    ]
+
+
+def opengl_strings():
+    window = GetActiveViewOrCreate("RenderView").GetRenderWindow()  # noqa: F405
+    window.Render()
+    info = window.ReportCapabilities()
+    pick = [line.split(":", 1)[1].strip() for line in info.splitlines() if line.startswith("OpenGL renderer string")]
+    return f"OpenGL renderer: {pick[0]}" if pick else "OpenGL renderer: unknown"
+
+
 def main():
-    folder = os.path.dirname(os.path.abspath(args.output))
+    started = time.strftime("%Y-%m-%d %H:%M %Z")
+    folder = args.images
+    os.makedirs(folder, exist_ok=True)
+    strings = opengl_strings()
     rows = []
     for entry, tetrahedral in ENTRIES:
         rows += measure(entry, tetrahedral, folder)
@@ -123,7 +161,7 @@ def main():
         still = next(s for e, l, s, _ in rows if e == entry and l == "still")
         lines.append(f"| {entry} | {label} | {seconds:.3f} | {seconds / still:.2f} | {error:.4f} |")
     with open(args.output, "w") as out:
-        out.write("\n".join(lines) + "\n")
+        out.write("\n".join(header(started, strings) + lines) + "\n")
     print("\n".join(lines))
 
 

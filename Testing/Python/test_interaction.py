@@ -21,7 +21,7 @@ MAPPERS = (("tetrahedra", vtkPreIntegratedTetrahedraMapper, {}, lambda: analytic
 
 SIZE = 128
 STILL_RATE = 0.0001       # vtkRenderWindowInteractor's still update rate: 10,000 s allowed
-INTERACTIVE_RATE = 1000.0  # a millisecond allowed: more than any frame here, so every one is reduced
+INTERACTIVE_RATE = 1e6  # a microsecond allowed: less than any frame takes, so every one is reduced
 COARSEST = 3.0             # the test's MaximumImageSampleDistance
 # The reduced image against the reference drawn at its own size: the bound test_render_windows.py
 # holds every mapper to (the shells' sampling is the loosest; interactive shells sample coarser).
