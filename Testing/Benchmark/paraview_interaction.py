@@ -118,7 +118,8 @@ def measure(entry, tetrahedral, folder):
 
 def header(started, view_strings):
     """How and where the run was made."""
-    version = f"ParaView {GetParaViewVersion()}"  # noqa: F405
+    from paraview import servermanager
+    version = "ParaView " + servermanager.vtkSMProxyManager.GetParaViewSourceVersion().split()[-1]
     return [
         "# ParaView: interactive renders of each entry",
         "",
