@@ -804,7 +804,7 @@ def readme_text(rows, command, started, machine, partial, left_out=()):
         "the host memory the mapper keeps beside its input per cell (where the mapper counts it).",
         "",
         "Each scene's plot of frame time against error (log-log; the black line is the Pareto front):",
-        " · ".join(f"[{scene}]({PLOTS}/{scene}.png)" for scene in dict.fromkeys(r["scene"] for r in rows)) + ".",
+        ", ".join(f"[{scene}]({PLOTS}/{scene}.png)" for scene in dict.fromkeys(r["scene"] for r in rows)) + ".",
         "Rows ending \"interactive\" are frames while the camera moves: the render window's desired update",
         f"rate at {INTERACTIVE_RATE:g} frames a second, as VTK's interactor sets it, so the mapper draws a reduced",
         "image (AutoAdjustSampleDistances) measured as the window shows it, stretched.",
@@ -1008,7 +1008,7 @@ def main():
             ("--quick", args.quick), ("--scenes", args.scenes), ("--mappers", args.mappers),
             ("--size", args.size not in (None, DEFAULT_SIZE)), ("--views", args.views not in (None, 4)),
             ("no ../shared/data meshes", not os.path.isdir(SHARED))) if given)
-        with open(args.write_readme, "w") as out:
+        with open(args.write_readme, "w", encoding="utf-8") as out:
             out.write(readme_text(rows, run_command(), started, machine, partial, left_out))
         print(f"wrote {args.write_readme}")
 
