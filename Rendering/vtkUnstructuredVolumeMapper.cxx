@@ -317,8 +317,10 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   const double start = vtkTimerLog::GetUniversalTime();
   const int buildsBefore = this->MeshUpdates.Builds;
-  const double distance = this->ChooseImageSampleDistance(volume);
-  if (this->RenderFrame(renderer, volume, window, distance) && this->AutoAdjustSampleDistances)
+  const double allowed = volume->GetAllocatedRenderTime();
+  const bool interactive = this->AutoAdjustSampleDistances && uv::AdaptiveImageSampleDistance::IsInteractive(allowed);
+  const double distance = this->ChooseImageSampleDistance(allowed);
+  if (this->RenderFrame(renderer, volume, window, distance, interactive) && this->AutoAdjustSampleDistances)
   {
     glFinish(); // the frame's time is the GPU's too
   }
@@ -326,15 +328,14 @@ void vtkUnstructuredVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volum
   auto& last = this->Base->LastFrame;
   last.Distance = distance;
   last.Seconds = this->TimeToDraw;
-  last.Interactive = this->AutoAdjustSampleDistances &&
-    uv::AdaptiveImageSampleDistance::IsInteractive(volume->GetAllocatedRenderTime());
+  last.Interactive = interactive;
   if (this->MeshUpdates.Builds == buildsBefore) // a mesh build says nothing of the next frame
   {
-    this->Base->Adaptive.Record(distance, this->TimeToDraw, volume->GetAllocatedRenderTime());
+    this->Base->Adaptive.Record(distance, this->TimeToDraw, allowed);
   }
 }
 
-double vtkUnstructuredVolumeMapper::ChooseImageSampleDistance(vtkVolume* volume)
+double vtkUnstructuredVolumeMapper::ChooseImageSampleDistance(double allowedSeconds)
 {
   if (!this->AutoAdjustSampleDistances)
   {
@@ -344,16 +345,15 @@ double vtkUnstructuredVolumeMapper::ChooseImageSampleDistance(vtkVolume* volume)
   limits.Still = this->ImageSampleDistance;
   limits.Minimum = this->MinimumImageSampleDistance;
   limits.Maximum = this->MaximumImageSampleDistance;
-  return this->Base->Adaptive.Next(volume->GetAllocatedRenderTime(), limits);
+  return this->Base->Adaptive.Next(allowedSeconds, limits);
 }
 
 bool vtkUnstructuredVolumeMapper::RenderFrame(
-  vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window, double distance)
+  vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window, double distance, bool interactive)
 {
   vtkUnstructuredVolumeFrame frame = vtkUnstructuredVolumeFrame::Make(renderer, volume, window);
   frame.ReduceImage(distance);
-  if (this->AutoAdjustSampleDistances &&
-    uv::AdaptiveImageSampleDistance::IsInteractive(volume->GetAllocatedRenderTime()))
+  if (interactive)
   {
     frame.InteractiveReduction = distance / this->ImageSampleDistance;
   }

@@ -381,9 +381,11 @@ private:
   bool ReportGLErrors(const char* pass);
 
   bool CheckArguments(vtkRenderer* renderer, vtkVolume* volume);
-  double ChooseImageSampleDistance(vtkVolume* volume);
-  /// The frame's steps at image sample distance `distance`; true when it used the GL context.
-  bool RenderFrame(vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window, double distance);
+  double ChooseImageSampleDistance(double allowedSeconds);
+  /// The frame's steps at image sample distance `distance` (`interactive`: reduced by the automatic
+  /// adjustment); true when it used the GL context.
+  bool RenderFrame(
+    vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window, double distance, bool interactive);
   void UseContext(vtkOpenGLRenderWindow* window);
   bool DrawAndComposite(const vtkUnstructuredVolumeFrame& frame);
 
