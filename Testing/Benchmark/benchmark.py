@@ -47,7 +47,7 @@ from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkImageAppend, vtkPointD
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLImageDataWriter
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
+                                         vtkVolume, vtkVolumeProperty)
 from vtkmodules.vtkRenderingVolume import (vtkGPUVolumeRayCastMapper, vtkProjectedTetrahedraMapper,
                                            vtkUnstructuredGridVolumeRayCastMapper,
                                            vtkUnstructuredGridVolumeZSweepMapper)
@@ -60,7 +60,7 @@ import vtkmodules.vtkRenderingFreeType  # noqa: F401
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "Testing", "Python"))
 import uvrender  # noqa: E402
-from fixtures import analytic, hex_dominant, sampled_color_map  # noqa: E402
+from fixtures import analytic, grab_rgba, hex_dominant, sampled_color_map  # noqa: E402
 from resampled_volume import ResampleToImage  # noqa: E402
 from shared_data import (SHARED, bluntfin, bucky_image, can, disk_out_ref, image_as_voxels, legacy,  # noqa: E402
                          neghip_image, openfoam_cavity_cells)
@@ -405,19 +405,6 @@ def resident_megabytes():
             if line.startswith("VmRSS:"):
                 return int(line.split()[1]) / 1024.0
     return float("nan")
-
-
-def grab_rgba(window):
-    """The window's pixels as float premultiplied RGBA in [0, 1] (black, transparent background)."""
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGBA()
-    grab.ReadFrontBufferOff()
-    grab.ShouldRerenderOff()
-    grab.Update()
-    image = vtkImageData()
-    image.DeepCopy(grab.GetOutput())
-    return image
 
 
 def run_mapper(name, factory, mesh, scalar, prop, cameras, size):

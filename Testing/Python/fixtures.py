@@ -25,7 +25,7 @@ from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, VTK_POLYHEDRON, VTK_P
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkCamera, vtkColorTransferFunction, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty)
+                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
 
 IMAGE_THRESHOLD = 10.0  # vtkImageDifference's thresholded error against a baseline (VTK's tests use 10)
 OUTPUT = os.environ.get("UV_TEST_OUTPUT", tempfile.gettempdir())
@@ -451,6 +451,20 @@ def march(mesh, prop, camera, size, pixels, steps, array=None, cells=False, comp
     rgba = vtkFloatArray()
     assert marcher.MarchPixels(ids, rgba)
     return [rgba.GetTuple4(i) for i in range(len(pixels))]
+
+
+def grab_rgba(window):
+    """The window's RGBA bytes as last rendered (not rendered again): an 8-bit image, which
+    vtkVolumeImageErrorMetrics reads as premultiplied RGBA in [0, 1]."""
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGBA()
+    grab.ReadFrontBufferOff()
+    grab.ShouldRerenderOff()
+    grab.Update()
+    image = vtkImageData()
+    image.DeepCopy(grab.GetOutput())
+    return image
 
 
 def largest_difference(a, b):

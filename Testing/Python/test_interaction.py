@@ -4,13 +4,11 @@ window, within a stated error of the still frame; the still frame after interact
 still frame of a mapper that never interacted, and so is a still frame with the adjustment off."""
 import unittest
 
-from fixtures import (SceneTestCase, Scene, analytic, analytic_hexahedra, camera_for, copy_image, reference, rmse,
-                      statistic)
+from fixtures import (SceneTestCase, Scene, analytic, analytic_hexahedra, camera_for, copy_image, grab_rgba, reference,
+                      rmse, statistic)
 from uvrender import volume_property
 from unstructuredvolume import (vtkBarycentricShellMapper, vtkHexahedralRayCastMapper,
                                 vtkPreIntegratedTetrahedraMapper, vtkUnstructuredVolumeMapper)
-from vtkmodules.vtkCommonCore import vtkFloatArray
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
 
 # (name, mapper class, settings, mesh), as test_render_windows.py's.
@@ -34,26 +32,6 @@ STRETCHED_RMSE = 0.05
 
 def setUpModule():  # noqa: N802  (unittest's name)
     vtkUnstructuredVolumeMapper.SetGLErrorChecks(True)
-
-
-def window_rgba(window):
-    """The window's RGBA as floats in [0, 1], as last rendered (not rendered again)."""
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGBA()
-    grab.ReadFrontBufferOff()
-    grab.ShouldRerenderOff()
-    grab.Update()
-    bytes_ = grab.GetOutput().GetPointData().GetScalars()
-    image = grab.GetOutput().NewInstance()
-    image.CopyStructure(grab.GetOutput())
-    values = vtkFloatArray()
-    values.SetNumberOfComponents(4)
-    values.SetNumberOfTuples(bytes_.GetNumberOfTuples())
-    for i in range(bytes_.GetNumberOfTuples()):
-        values.SetTuple4(i, *(c / 255.0 for c in bytes_.GetTuple4(i)))
-    image.GetPointData().SetScalars(values)
-    return image
 
 
 def same_pixels(a, b):
@@ -82,7 +60,7 @@ class InteractionTests(SceneTestCase):
                 still = copy_image(scene.render())
                 self.assertTrue(same_pixels(still, expected), "a still frame changed with the adjustment on")
                 self.assertEqual(statistic(scene.mapper, "InteractiveFrame"), 0.0)
-                still_window = window_rgba(scene.window)
+                still_window = grab_rgba(scene.window)
 
                 scene.window.SetDesiredUpdateRate(INTERACTIVE_RATE)
                 for _ in range(3):  # the distance at most doubles a frame: 2, then the coarsest
@@ -94,7 +72,7 @@ class InteractionTests(SceneTestCase):
                 self.assertEqual(distance, COARSEST)
                 self.assertEqual((width, height), (43, 43))  # 128 / 3, rounded up
                 error, _ = rmse(reduced, reference(mesh, prop, camera, width, height))
-                stretched, _ = rmse(window_rgba(scene.window), still_window)
+                stretched, _ = rmse(grab_rgba(scene.window), still_window)
                 print(f"; against the reference {error:.3g}, the stretched window {stretched:.3g}", end="")
                 self.assertLess(error, REDUCED_RMSE)
                 self.assertLess(stretched, STRETCHED_RMSE)
