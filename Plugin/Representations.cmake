@@ -21,6 +21,7 @@ uv_representation_entry(
   GROUP "Pre-integrated Tetrahedra"
   PROPERTIES IntegrationMode Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance SegmentIntegration
     VisibilityOrder OpacityThreshold ProjectionRoute RenderMode ImageSampleDistance UseOwnLevelOfDetail
+    KeepRankPartitions
   # The shells' RenderMode chooses between shells and cell projection.
   UNSHARED OpacityThreshold TetrahedraOpacityThreshold RenderMode TetrahedraRenderMode)
 
@@ -31,6 +32,7 @@ uv_representation_entry(
   PROPERTIES RenderMode SampleDistance AutomaticSamplesAcross Isovalues IsosurfaceOpacity SkipInvisibleCells
     TransferFunctionTolerance SlicesPerShell OpacityThreshold IsosurfaceLayers SegmentIntegration VisibilityOrder ProjectionRoute
     GradientMode ImageSampleDistance UseOwnLevelOfDetail
+    KeepRankPartitions
   # The shells stop at 0.999, the hexahedral rays at 0.99: one shared value would change one default.
   UNSHARED OpacityThreshold ShellOpacityThreshold)
 
@@ -40,5 +42,6 @@ uv_representation_entry(
   GROUP "Hexahedral Ray Cast"
   PROPERTIES IntegrationMode FixedSteps Isovalues IsosurfaceOpacity SkipInvisibleCells TransferFunctionTolerance OpacityThreshold MaximumPeels
     ExactSegmentEnds GradientMode ImageSampleDistance UseOwnLevelOfDetail
+    KeepRankPartitions
   # Accurate / Fast / Fixed steps, not the tetrahedra's average scalar / partial pre-integration.
   UNSHARED IntegrationMode HexahedralIntegrationMode)

@@ -3,11 +3,18 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMultiProcessController.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredVolumeMapper.h"
 #include "vtkVolumeProperty.h"
+
+#include "uvPiecePartition.h"
+
+#include <algorithm>
+#include <vector>
 
 vtkUnstructuredVolumeRepresentation::vtkUnstructuredVolumeRepresentation() = default;
 
@@ -44,6 +51,37 @@ void vtkUnstructuredVolumeRepresentation::SetUseOwnLevelOfDetail(bool own)
   }
 }
 
+void vtkUnstructuredVolumeRepresentation::SetKeepRankPartitions(bool keep)
+{
+  if (this->KeepRankPartitions != keep)
+  {
+    this->KeepRankPartitions = keep;
+    this->MarkModified();
+  }
+}
+
+bool vtkUnstructuredVolumeRepresentation::PiecesFormPartition(vtkInformation* inInfo)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  double local[7] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0, 0.0 };
+  vtkDataObject* piece = vtkPVView::GetPiece(inInfo, this);
+  if (piece && vtkMath::AreBoundsInitialized(this->DataBounds))
+  {
+    std::copy(this->DataBounds, this->DataBounds + 6, local);
+    local[6] = static_cast<double>(piece->GetNumberOfElements(vtkDataObject::CELL));
+  }
+  const int ranks = controller->GetNumberOfProcesses();
+  std::vector<double> all(7 * static_cast<std::size_t>(ranks));
+  controller->AllGather(local, all.data(), 7);
+  std::vector<uv::RankPiece> pieces(static_cast<std::size_t>(ranks));
+  for (int rank = 0; rank < ranks; ++rank)
+  {
+    std::copy(all.begin() + 7 * rank, all.begin() + 7 * rank + 6, pieces[rank].Bounds);
+    pieces[rank].Cells = all[7 * rank + 6];
+  }
+  return uv::PiecesFormPartition(pieces);
+}
+
 int vtkUnstructuredVolumeRepresentation::ProcessViewRequest(
   vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo)
 {
@@ -63,6 +101,30 @@ int vtkUnstructuredVolumeRepresentation::ProcessViewRequest(
   if (!this->Superclass::ProcessViewRequest(request, inInfo, outInfo))
   {
     return 0;
+  }
+  if (request == vtkPVView::REQUEST_UPDATE())
+  {
+    // Every rank takes this pass for a visible representation, so the gather in
+    // PiecesFormPartition is matched on all of them; a client has one process and skips it.
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    if (!controller || controller->GetNumberOfProcesses() < 2)
+    {
+      this->RankPartition = SINGLE_RANK;
+    }
+    else if (this->UseDataPartitions)
+    {
+      this->RankPartition = PIECES_KEPT; // the superclass has told the view
+    }
+    else if (this->KeepRankPartitions && this->PiecesFormPartition(inInfo))
+    {
+      vtkPVRenderView::SetOrderedCompositingConfiguration(
+        inInfo, this, vtkPVRenderView::USE_BOUNDS_FOR_REDISTRIBUTION);
+      this->RankPartition = PIECES_KEPT;
+    }
+    else
+    {
+      this->RankPartition = REDISTRIBUTED;
+    }
   }
   if (request == vtkPVView::REQUEST_RENDER())
   {
@@ -189,4 +251,7 @@ void vtkUnstructuredVolumeRepresentation::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "Mapper: " << this->MapperName << "\n";
   os << indent << "Isovalues: " << this->Isovalues.size() << "\n";
   os << indent << "IsosurfaceOpacity: " << this->IsosurfaceOpacity << "\n";
+  os << indent << "KeepRankPartitions: " << this->KeepRankPartitions << "\n";
+  static const char* const choices[] = { "single rank", "pieces kept", "redistributed" };
+  os << indent << "RankPartition: " << choices[this->RankPartition] << "\n";
 }

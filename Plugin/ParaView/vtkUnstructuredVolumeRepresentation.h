@@ -79,7 +79,27 @@ public:
   vtkGetMacro(UseOwnLevelOfDetail, bool);
   ///@}
 
-  /// ParaView's passes; the superclass's, and the level of detail above.
+  ///@{
+  /// On several ranks, render the ranks' pieces where they are when they already form a partition:
+  /// each in its own box, no two boxes overlapping, none far above the average size
+  /// (uv::PiecesFormPartition). ParaView's default moves cells to a k-d tree of its own on every
+  /// change of the data, time steps included; pieces from a partitioned reader or a parallel
+  /// source seldom need it. Otherwise (overlapping or unbalanced pieces) ParaView redistributes as
+  /// before. Default on. The inherited SetUseDataPartitions (not a property of these entries:
+  /// ParaView's own Volume holds that name) keeps the pieces whatever they are.
+  void SetKeepRankPartitions(bool keep);
+  vtkGetMacro(KeepRankPartitions, bool);
+  /// What the last update chose: 0 one rank, 1 pieces kept, 2 ParaView redistributes.
+  enum RankPartitionChoice
+  {
+    SINGLE_RANK = 0,
+    PIECES_KEPT = 1,
+    REDISTRIBUTED = 2
+  };
+  vtkGetMacro(RankPartition, int);
+  ///@}
+
+  /// ParaView's passes; the superclass's, the ranks' partition and the level of detail above.
   int ProcessViewRequest(
     vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo) override;
 
@@ -94,6 +114,8 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   void UpdateMapperParameters() override;
+  /// Collective over the ranks: whether their pieces form a partition to render where they are.
+  bool PiecesFormPartition(vtkInformation* inInfo);
 
   std::string MapperName;
   vtkUnstructuredVolumeMapper* PinnedMapper = nullptr;
@@ -102,6 +124,8 @@ protected:
   double IsosurfaceOpacity = 1.0;
   bool SeparateOpacityWarned = false;
   bool UseOwnLevelOfDetail = true;
+  bool KeepRankPartitions = true;
+  int RankPartition = SINGLE_RANK;
 
 private:
   vtkUnstructuredVolumeRepresentation(const vtkUnstructuredVolumeRepresentation&) = delete;
