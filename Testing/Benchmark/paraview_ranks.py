@@ -1,56 +1,117 @@
-"""Frame time of the plugin's representations on 1 and N MPI ranks (a command, not a test).
+"""The rank-scaling table: each ParaView entry on 1, 2 and 4 MPI ranks (a command, not a test).
 
-    pvbatch paraview_ranks.py <plugin> <preintegrated|hexahedral|barycentric> [--extent 40] [--frames 8] [--size 512]
-    mpiexec -np 2 pvbatch paraview_ranks.py <plugin> <preintegrated|hexahedral|barycentric> ...
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" python3 paraview_ranks.py <plugin> [--write-readme]
 
-Renders the wavelet (extent [-E, E]^3, so (2E)^3 cells) with the representation, an orbit of
-frames after one warm-up frame (which includes the preparation and, on several ranks, the
-redistribution), and prints the first frame's time and the median and range of the others. Each
-frame is a full still render: every rank renders its piece, IceT composites them.
+with PYTHONPATH set for pvbatch as paraview_time_series.py asks. Runs paraview_time_series.py's
+value-only series (a deep copy of the mesh every step, the values changed) under
+`mpiexec -np N pvbatch` for each entry and rank count: on several ranks once with the entry's
+KeepRankPartitions on (the default: the wavelet's slabs form a partition and stay where they are)
+and once off (ParaView redistributes every step, as before). Reports the median still frame, the
+median value step and their ratio, each rank's resident memory after the steps, and the last step's
+image against one rank's (compared by the pvbatch run itself: this process loads no VTK).
+--write-readme writes RANKS.md beside this file.
 """
 import argparse
-import math
-import statistics
+import datetime
+import json
+import os
+import platform
+import subprocess
+import sys
 import time
 
-from paraview import servermanager
-from paraview.simple import *  # noqa: F401,F403
-
+HERE = os.path.dirname(os.path.abspath(__file__))
 parser = argparse.ArgumentParser()
 parser.add_argument("plugin")
-parser.add_argument("mapper", choices=["preintegrated", "hexahedral", "barycentric"])
-parser.add_argument("--extent", type=int, default=40)
-parser.add_argument("--frames", type=int, default=8)
-parser.add_argument("--size", type=int, default=512)
+parser.add_argument("--mappers", default="preintegrated,barycentric,hexahedral")
+parser.add_argument("--ranks", default="1,2,4")
+parser.add_argument("--steps", type=int, default=3)
+parser.add_argument("--size", type=int, default=384)
+parser.add_argument("--pvbatch", default="pvbatch")
+parser.add_argument("--mpiexec", default="mpiexec")
+parser.add_argument("--mpiexec-flags", default="--allow-run-as-root --oversubscribe")
+parser.add_argument("--out", default=os.path.join(HERE, "out", "ranks"))
+parser.add_argument("--timeout", type=int, default=600, help="seconds a run")
+parser.add_argument("--write-readme", action="store_true")
 args = parser.parse_args()
-LoadPlugin(args.plugin, remote=False, ns=globals())
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
-entry = {"preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray Cast)",
-         "barycentric": "Volume (Barycentric Shells)"}[args.mapper]
+os.makedirs(args.out, exist_ok=True)
+results = os.path.join(args.out, "results.jsonl")
+if os.path.exists(results):
+    os.remove(results)
 
-view = CreateView("RenderView")  # noqa: F405
-view.ViewSize = [args.size, args.size]
-view.OrientationAxesVisibility = 0
-e = args.extent
-wavelet = Wavelet(WholeExtent=[-e, e, -e, e, -e, e])  # noqa: F405
-display = Show(wavelet, view)  # noqa: F405
-display.Representation = entry
-ColorBy(display, ("POINTS", "RTData"))  # noqa: F405
-GetColorTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)  # noqa: F405
-GetOpacityTransferFunction("RTData").Points = [37.0, 0.0, 0.5, 0.0, 150.0, 0.05, 0.5, 0.0,  # noqa: F405
-                                               277.0, 0.6, 0.5, 0.0]
-display.ScalarOpacityUnitDistance = e / 4.0
-view.CameraFocalPoint = [0.0, 0.0, 0.0]
-view.CameraViewUp = [0.0, 0.0, 1.0]
-view.CameraViewAngle = 30.0
 
-times = []
-for k in range(args.frames + 1):
-    angle = 6.283185 * k / (args.frames + 1)
-    view.CameraPosition = [4.5 * e * math.cos(angle), 4.5 * e * math.sin(angle), 2.0 * e]
+def run(mapper, ranks, keep):
+    image = os.path.join(args.out, f"{mapper}_{ranks}ranks_{'kept' if keep else 'moved'}.png")
+    command = [args.mpiexec, *args.mpiexec_flags.split(), "-np", str(ranks), args.pvbatch,
+               os.path.join(HERE, "paraview_time_series.py"), args.plugin, mapper, "--kinds", "values",
+               "--steps", str(args.steps), "--size", str(args.size), "--keep-partitions", str(keep),
+               "--image", image, "--json", results]
+    if ranks > 1 and images.get((mapper, 1, 1)):
+        command += ["--compare-to", images[(mapper, 1, 1)]]
     start = time.perf_counter()
-    Render(view)  # noqa: F405
-    times.append(time.perf_counter() - start)
-rest = times[1:]
-print(f"{entry}, {ranks} rank(s), {(2 * e) ** 3} cells, {args.size} px: first frame {times[0]:.3f} s, "
-      f"median {statistics.median(rest):.3f} s [{min(rest):.3f}-{max(rest):.3f}] over {len(rest)} frames")
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout,
+                              stdin=subprocess.DEVNULL)
+    except subprocess.TimeoutExpired:
+        print(f"{mapper}, {ranks} rank(s), keep {keep}: over {args.timeout} s, left out", flush=True)
+        return None
+    lines = [line for line in done.stdout.splitlines() if line.startswith("values")]
+    print(f"{mapper}, {ranks} rank(s), keep {keep}: {lines[-1] if lines else done.stderr[-800:]} "
+          f"({time.perf_counter() - start:.0f} s)", flush=True)
+    return image if done.returncode == 0 else None
+
+
+started = datetime.datetime.now(datetime.timezone.utc)
+ranks_list = [int(r) for r in args.ranks.split(",")]
+images = {}
+for mapper in args.mappers.split(","):
+    for ranks in ranks_list:
+        for keep in ([1, 0] if ranks > 1 else [1]):
+            images[(mapper, ranks, keep)] = run(mapper, ranks, keep)
+
+rows = [json.loads(line) for line in open(results, encoding="utf-8")]
+for row in rows:
+    solo = [r for r in rows if r["mapper"] == row["mapper"] and r["ranks"] == 1]
+    row["still_speedup"] = solo[0]["static"] / row["static"] if solo else float("nan")
+
+header = ("| entry | ranks | partition | still frame (s) | x 1 rank | value step (s) | step / still | "
+          "resident MB per rank (largest) | image vs 1 rank: pixels > 2 levels off, largest |")
+table = [header, "|---|---:|---|---:|---:|---:|---:|---:|---|"]
+for row in rows:
+    image = ("(itself)" if row["ranks"] == 1 else
+             f"{100 * row['image_off']:.2f}%, {row['image_worst']}" if row.get("image_off") is not None else "n/a")
+    table.append(f"| {row['entry']} | {row['ranks']} | {row['partition']} | {row['static']:.3f} | "
+                 f"{row['still_speedup']:.2f} | {row['step']:.3f} | {row['step'] / row['static']:.2f} | "
+                 f"{max(row['memory_mb']):.0f} | {image} |")
+print("\n".join(table))
+if not args.write_readme:
+    sys.exit(0)
+
+cpu = next((line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo") if line.startswith("model name")), "?")
+cells = rows[0]["cells"] if rows else 0
+text = f"""# Ranks: 1, 2 and 4 MPI ranks in ParaView
+
+Written by `Testing/Benchmark/paraview_ranks.py --write-readme` from one run; do not edit by hand, run
+it again. Each row is one `mpiexec -np N pvbatch paraview_time_series.py` run.
+
+- Run started: {started:%Y-%m-%d %H:%M} UTC; {len(os.sched_getaffinity(0))} logical CPUs ({cpu}), so
+  4 ranks are oversubscribed: they share 2 cores and show what the partition choice costs, not a speed-up
+- Host: {platform.platform()}; pvbatch: `{args.pvbatch}`; {args.size} x {args.size} px, {args.steps} value steps a run
+- Series: paraview_time_series.py's value-only kind: every step a deep copy of the mesh with the values
+  changed, the camera still. The tetrahedral entries get the wavelet tetrahedralised ({cells:,} cells
+  in the first row), the hexahedral entry its voxels as unstructured hexahedra. The wavelet is a
+  parallel source: each rank gets a z-slab.
+
+Columns: the still frame is the median of re-rendering with nothing changed; the value step is the
+median frame after a new step (ParaView's update, delivery, redistribution where chosen, the mapper's
+refresh and drawing; producing the step's data is not counted). "pieces kept": the entry's default
+(KeepRankPartitions) found the ranks' pieces apart and balanced and rendered them where they are;
+"redistributed": KeepRankPartitions off, ParaView's k-d tree redistribution on every change of the
+data, as before the option existed. Resident memory: each rank's after the steps (ParaView's memory
+inspector's figure). The image is the last step's, against one rank's.
+
+{chr(10).join(table)}
+"""
+with open(os.path.join(HERE, "RANKS.md"), "w", encoding="utf-8") as stream:
+    stream.write(text)
+print("wrote RANKS.md")

@@ -11,9 +11,13 @@ wavelet) or the points moving (a swirl of 2% of the extent). The hexahedral entr
 E = 29 (1.2 M tetrahedra). The camera stays put. Producing a step's data is timed apart ("data");
 "step" is the frame after it: ParaView's representation update, delivery and the mapper's refresh
 and drawing. Prints the first frame (Show and Render), the median static frame (rendered again, nothing
-changed), the median step of each kind, its ratio to the static frame, and what the mapper redid.
+changed), the median step of each kind, its ratio to the static frame, what the mapper redid, the
+entry's choice of rank partition and each rank's resident memory after the steps. paraview_ranks.py
+runs it on 1, 2 and 4 ranks (--json, --image) for the rank-scaling table.
 """
 import argparse
+import builtins
+import json
 import re
 import statistics
 import time
@@ -27,13 +31,21 @@ parser.add_argument("mapper", choices=["preintegrated", "hexahedral", "barycentr
 parser.add_argument("--extent", type=int, default=None, help="default 50 (hexahedral) or 29 (tetrahedral)")
 parser.add_argument("--steps", type=int, default=4)
 parser.add_argument("--size", type=int, default=384)
+parser.add_argument("--kinds", default="values,points", help="comma-separated: values, points")
+parser.add_argument("--keep-partitions", type=int, choices=[0, 1], default=1,
+                    help="the entries' KeepRankPartitions (0: ParaView redistributes every change)")
+parser.add_argument("--image", help="write the last step's image here (PNG)")
+parser.add_argument("--compare-to", help="with --image: the image to compare it with (one rank's)")
+parser.add_argument("--json", help="append one JSON line per kind here")
 args = parser.parse_args()
 LoadPlugin(args.plugin, remote=False, ns=globals())  # noqa: F405
 ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 entry = {"preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray Cast)",
          "barycentric": "Volume (Barycentric Shells)"}[args.mapper]
 tetrahedral = args.mapper != "hexahedral"
-# Not a one-letter name: the programmable filter runs its script in this module's namespace.
+# Not a one-letter name: the programmable filter runs its script in this module's namespace, where it
+# also leaves numpy_interface's algorithms (max, min, sum: MPI reductions that hang when only this
+# rank calls them; builtins.max below).
 EXTENT = args.extent or (29 if tetrahedral else 50)
 
 INFORMATION = f"""
@@ -78,6 +90,29 @@ def seconds(function):
     return time.perf_counter() - start
 
 
+def resident_megabytes():
+    """Each rank's resident memory now (ParaView's memory inspector's source), in MB."""
+    from paraview.modules.vtkRemotingCore import vtkPVMemoryUseInformation
+    information = vtkPVMemoryUseInformation()
+    servermanager.ActiveConnection.Session.GatherInformation(0x01, information, 0)  # the data server
+    return [information.GetProcMemoryUse(i) / 1024.0 for i in range(information.GetSize())]
+
+
+def image_difference(path, other):
+    """The share of pixels more than 2 levels off in some colour channel, and the largest difference."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    images = []
+    for name in (path, other):
+        reader = vtkPNGReader()
+        reader.SetFileName(name)
+        reader.Update()
+        images.append(vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(np.int32))
+    difference = np.abs(images[0] - images[1]).max(axis=1)
+    return float(np.mean(difference > 2)), int(difference.max())
+
+
 def measure(kind):
     view = CreateView("RenderView")  # noqa: F405
     view.ViewSize = [args.size, args.size]
@@ -99,6 +134,7 @@ def measure(kind):
     GetOpacityTransferFunction("RTData").Points = [17.0, 0.0, 0.5, 0.0, 150.0, 0.05, 0.5, 0.0,  # noqa: F405
                                                    297.0, 0.6, 0.5, 0.0]
     display.ScalarOpacityUnitDistance = EXTENT / 4.0
+    display.KeepRankPartitions = args.keep_partitions
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraPosition = [3.5 * EXTENT, 2.2 * EXTENT, 2.0 * EXTENT]
     view.CameraViewUp = [0.0, 0.0, 1.0]
@@ -112,21 +148,36 @@ def measure(kind):
         view.ViewTime = float(step)
         steps.append(seconds(lambda: Render(view)))  # noqa: F405
     cells = series.GetDataInformation().GetNumberOfCells()
-    # The mapper is not wrapped in ParaView's Python: its PrintSelf says what it redid.
-    text = str(display.GetClientSideObject().GetActiveRepresentation().GetActiveVolumeMapper())
+    if args.image:
+        SaveScreenshot(args.image, view, ImageResolution=[args.size, args.size])  # noqa: F405
+    compared = image_difference(args.image, args.compare_to) if args.image and args.compare_to else None
+    memory = resident_megabytes()
+    # The mapper and representation are not wrapped in ParaView's Python: their PrintSelf says what
+    # the mapper redid and which partition the entry chose.
+    representation = display.GetClientSideObject().GetActiveRepresentation()
+    text = str(representation.GetActiveVolumeMapper())
     redone = "/".join(re.search(name + r": (\d+)", text).group(1)
                       for name in ("MeshBuilds", "PointRefreshes", "ValueRefreshes"))
+    partition = re.search(r"RankPartition: ([a-z ]+)", str(representation)).group(1)
     Delete(display)  # noqa: F405
     Delete(view)  # noqa: F405
     for proxy in (series, mesh, wavelet):
         Delete(proxy)  # noqa: F405
-    return cells, first, static, statistics.median(data), statistics.median(steps), redone
+    return dict(kind=kind, cells=cells, first=first, static=static, data=statistics.median(data),
+                step=statistics.median(steps), redone=redone, partition=partition, memory_mb=memory,
+                image_off=compared[0] if compared else None, image_worst=compared[1] if compared else None)
 
 
 print(f"{entry}, {ranks} rank(s), {args.size} px, {args.steps} steps per kind")
 print(f"{'kind':8s} {'cells':>9s} {'first':>7s} {'static':>7s} {'data':>7s} {'step':>7s} {'ratio':>6s}  "
-      "builds/point/value refreshes (rank 0)")
-for kind in ("values", "points"):
-    cells, first, static, data, step, redone = measure(kind)
-    print(f"{kind:8s} {cells:9d} {first:7.3f} {static:7.3f} {data:7.3f} {step:7.3f} {step / static:6.2f}  {redone}",
-          flush=True)
+      "builds/point/value refreshes (rank 0), partition, largest rank's memory")
+for kind in args.kinds.split(","):
+    row = measure(kind)
+    print(f"{kind:8s} {row['cells']:9d} {row['first']:7.3f} {row['static']:7.3f} {row['data']:7.3f} "
+          f"{row['step']:7.3f} {row['step'] / row['static']:6.2f}  {row['redone']}, {row['partition']}, "
+          f"{builtins.max(row['memory_mb']):.0f} MB", flush=True)
+    if args.json:
+        row.update(entry=entry, mapper=args.mapper, ranks=ranks, size=args.size, steps=args.steps,
+                   keep_partitions=args.keep_partitions)
+        with open(args.json, "a", encoding="utf-8") as stream:
+            stream.write(json.dumps(row) + "\n")
