@@ -28,7 +28,9 @@ import time
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview.vtk.vtkIOImage import vtkPNGWriter
-from paraview.vtk.vtkRenderingCore import vtkWindowToImageFilter
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "ParaView"))
+from pvwavelet import rgb_rmse, show_wavelet, window_rgb  # noqa: E402  (the scene the interaction test uses)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("plugin")
@@ -41,23 +43,6 @@ LoadPlugin(args.plugin, remote=False, ns=globals())  # noqa: F405
 
 ENTRIES = (("Volume (Pre-integrated Tetrahedra)", True), ("Volume (Barycentric Shells)", True),
            ("Volume (Hexahedral Ray Cast)", False))
-
-
-def window_rgb(view):
-    """The view's RGB as last rendered (not rendered again), as a list of byte triples, and the image."""
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(view.GetRenderWindow())
-    grab.ReadFrontBufferOff()
-    grab.ShouldRerenderOff()
-    grab.Update()
-    image = grab.GetOutput()
-    pixels = image.GetPointData().GetScalars()
-    return [pixels.GetTuple3(i) for i in range(pixels.GetNumberOfTuples())], image
-
-
-def rgb_rmse(a, b):
-    total = sum((x - y) ** 2 for p, q in zip(a, b) for x, y in zip(p, q))
-    return (total / (3.0 * len(a))) ** 0.5 / 255.0
 
 
 def write_png(image, path):
@@ -80,20 +65,7 @@ def frames(view, render, count):
 
 
 def measure(entry, tetrahedral, folder):
-    wavelet = Wavelet()  # noqa: F405
-    wavelet.WholeExtent = [-32, 31, -32, 31, -32, 31]
-    data = HexahedraToTetrahedra(Input=wavelet) if tetrahedral else wavelet  # noqa: F405
-    view = CreateView("RenderView")  # noqa: F405
-    view.ViewSize = [args.size, args.size]
-    view.OrientationAxesVisibility = 0
-    display = Show(data, view)  # noqa: F405
-    display.Representation = entry
-    ColorBy(display, ("POINTS", "RTData"))  # noqa: F405
-    GetColorTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)  # noqa: F405
-    GetOpacityTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)  # noqa: F405
-    view.ResetCamera()
-    view.GetActiveCamera().Elevation(20)
-    view.GetActiveCamera().Azimuth(30)
+    view, display = show_wavelet(entry, 32, args.size, HexahedraToTetrahedra if tetrahedral else None)  # noqa: F405
     proxy = view.SMProxy
     still_time = frames(view, proxy.StillRender, args.frames)
     proxy.StillRender()

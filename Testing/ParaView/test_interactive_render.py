@@ -11,7 +11,7 @@ import re
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from paraview.vtk.vtkRenderingCore import vtkWindowToImageFilter
+from pvwavelet import rgb_rmse as rmse, show_wavelet, window_rgb  # beside this script
 
 plugin, mapper = sys.argv[1], sys.argv[2]
 ENTRY, TETRAHEDRAL = {"preintegrated": ("Volume (Pre-integrated Tetrahedra)", True),
@@ -23,35 +23,13 @@ INTERACTIVE_RMSE = 0.05
 LOD_SURFACE_RMSE = 0.15  # the least ParaView's LOD must be off, for the test to tell the two apart
 LoadPlugin(plugin, remote=False, ns=globals())  # noqa: F405
 
-wavelet = Wavelet(WholeExtent=[-12, 11, -12, 11, -12, 11])  # noqa: F405
-data = HexahedraToTetrahedra(Input=wavelet) if TETRAHEDRAL else wavelet  # noqa: F405
-view = CreateView("RenderView")  # noqa: F405
-view.ViewSize = [256, 256]
-view.OrientationAxesVisibility = 0
-display = Show(data, view)  # noqa: F405
-display.Representation = ENTRY
-ColorBy(display, ("POINTS", "RTData"))  # noqa: F405
-GetColorTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)  # noqa: F405
-GetOpacityTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)  # noqa: F405
-view.ResetCamera()
-view.GetActiveCamera().Elevation(20)
-view.GetActiveCamera().Azimuth(30)
+view, display = show_wavelet(ENTRY, 12, 256, HexahedraToTetrahedra if TETRAHEDRAL else None)  # noqa: F405
 proxy = view.SMProxy
 
 
 def window():
     """The view's RGB bytes as last rendered (not rendered again)."""
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(view.GetRenderWindow())
-    grab.ReadFrontBufferOff()
-    grab.ShouldRerenderOff()
-    grab.Update()
-    pixels = grab.GetOutput().GetPointData().GetScalars()
-    return [pixels.GetTuple3(i) for i in range(pixels.GetNumberOfTuples())]
-
-
-def rmse(a, b):
-    return (sum((x - y) ** 2 for p, q in zip(a, b) for x, y in zip(p, q)) / (3.0 * len(a))) ** 0.5 / 255.0
+    return window_rgb(view)[0]
 
 
 def interactive_frame():

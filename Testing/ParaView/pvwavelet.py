@@ -1,0 +1,44 @@
+"""The scene ParaView's interaction test and benchmark share (pvbatch, after LoadPlugin): VTK's wavelet
+shown through one of the plugin's entries, coloured and made transparent by RTData, seen from 20
+degrees above; and the window's pixels as last rendered.
+"""
+from paraview import simple
+from paraview.vtk.vtkRenderingCore import vtkWindowToImageFilter
+
+
+def show_wavelet(entry, half_extent, size, tetrahedralize=None):
+    """A new view of the wavelet on (2 half_extent)^3 cells, drawn by `entry`: as its own cells, or
+    through `tetrahedralize` (the plugin's HexahedraToTetrahedra, which LoadPlugin put in the
+    caller's namespace). Returns the view and the display."""
+    wavelet = simple.Wavelet(WholeExtent=[-half_extent, half_extent - 1] * 3)
+    data = tetrahedralize(Input=wavelet) if tetrahedralize else wavelet
+    view = simple.CreateView("RenderView")
+    view.ViewSize = [size, size]
+    view.OrientationAxesVisibility = 0
+    display = simple.Show(data, view)
+    display.Representation = entry
+    simple.ColorBy(display, ("POINTS", "RTData"))
+    simple.GetColorTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)
+    simple.GetOpacityTransferFunction("RTData").RescaleTransferFunction(37.0, 277.0)
+    view.ResetCamera()
+    view.GetActiveCamera().Elevation(20)
+    view.GetActiveCamera().Azimuth(30)
+    return view, display
+
+
+def window_rgb(view):
+    """The view's RGB as last rendered (not rendered again): a list of byte triples, and the image."""
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    grab.ShouldRerenderOff()
+    grab.Update()
+    image = grab.GetOutput()
+    pixels = image.GetPointData().GetScalars()
+    return [pixels.GetTuple3(i) for i in range(pixels.GetNumberOfTuples())], image
+
+
+def rgb_rmse(a, b):
+    """RMSE over two windows' RGB byte triples, in [0, 1]."""
+    total = sum((x - y) ** 2 for p, q in zip(a, b) for x, y in zip(p, q))
+    return (total / (3.0 * len(a))) ** 0.5 / 255.0
