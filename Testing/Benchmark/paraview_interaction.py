@@ -30,7 +30,7 @@ from paraview.simple import *  # noqa: F401,F403
 from paraview.vtk.vtkIOImage import vtkPNGWriter
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "ParaView"))
-from pvwavelet import rgb_rmse, show_wavelet, window_rgb  # noqa: E402  (the scene the interaction test uses)
+from pvscene import rgb_rmse, show_wavelet, window_rgb  # noqa: E402  (the scene the interaction test uses)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("plugin")

@@ -11,7 +11,7 @@ import re
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from pvwavelet import rgb_rmse as rmse, show_wavelet, window_rgb  # beside this script
+from pvscene import rgb_rmse as rmse, show_wavelet, window_rgb  # beside this script
 
 plugin, mapper = sys.argv[1], sys.argv[2]
 ENTRY, TETRAHEDRAL = {"preintegrated": ("Volume (Pre-integrated Tetrahedra)", True),

@@ -18,6 +18,7 @@ import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
+from pvscene import new_view  # beside this script
 from vtkmodules.vtkCommonCore import vtkOutputWindow
 
 plugin, mapper = sys.argv[1], sys.argv[2]
@@ -39,14 +40,7 @@ class ErrorCounter:
         self.errors += 1
 
 
-view = CreateView("RenderView")  # noqa: F405
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.Background = [0.0, 0.0, 0.0]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = new_view(SIZE, (0.0, 0.0, 0.0))
 view.CameraPosition = [40.0, -30.0, 25.0]
 view.CameraFocalPoint = [0.0, 0.0, 0.0]
 view.CameraViewUp = [0.0, 0.0, 1.0]

@@ -17,6 +17,7 @@ import sys
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
+from pvscene import new_view  # beside this script
 
 plugin, mapper, output = sys.argv[1], sys.argv[2], sys.argv[3]
 baseline = sys.argv[4] if len(sys.argv) > 4 else None
@@ -44,14 +45,7 @@ LoadPlugin(plugin, remote=False, ns=globals())
 ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 print(f"ranks: {ranks}")
 
-view = CreateView("RenderView")  # noqa: F405
-view.ViewSize = [300, 300]
-view.OrientationAxesVisibility = 0
-view.Background = [0.1, 0.1, 0.12]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = new_view(300, (0.1, 0.1, 0.12))
 
 # Image data (a parallel source: each rank gets its piece), as ParaView users meet it.
 wavelet = Wavelet(WholeExtent=[-12, 12, -12, 12, -12, 12])  # noqa: F405

@@ -17,6 +17,7 @@ import sys
 import numpy as np
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
+from pvscene import new_view  # beside this script
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
@@ -83,14 +84,7 @@ out.GetPointData().RemoveArray("RTData")
 out.GetPointData().SetScalars(array)
 """
 
-view = CreateView("RenderView")  # noqa: F405
-view.ViewSize = [240, 240]
-view.OrientationAxesVisibility = 0
-view.Background = [0.1, 0.1, 0.12]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = new_view(240, (0.1, 0.1, 0.12))
 view.CameraPosition = [55.0, -40.0, 30.0]
 view.CameraFocalPoint = [0.0, 0.0, 0.0]
 view.CameraViewUp = [0.0, 0.0, 1.0]

@@ -1,9 +1,24 @@
-"""The scene ParaView's interaction test and benchmark share (pvbatch, after LoadPlugin): VTK's wavelet
-shown through one of the plugin's entries, coloured and made transparent by RTData, seen from 20
-degrees above; and the window's pixels as last rendered.
+"""What the ParaView tests and benchmarks share (pvbatch, after LoadPlugin): a view with a fixed
+background, the wavelet scene of the interaction test and benchmark (VTK's wavelet shown through one
+of the plugin's entries, coloured and made transparent by RTData, seen from 20 degrees above), and
+the window's pixels as last rendered.
 """
 from paraview import simple
 from paraview.vtk.vtkRenderingCore import vtkWindowToImageFilter
+
+
+def new_view(size, background=(0.1, 0.1, 0.12)):
+    """A render view of size x size pixels, no orientation axes, on a fixed background (not the
+    colour palette's, where this ParaView has one), so that images compare across versions."""
+    view = simple.CreateView("RenderView")
+    view.ViewSize = [size, size]
+    view.OrientationAxesVisibility = 0
+    view.Background = list(background)
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    return view
 
 
 def show_wavelet(entry, half_extent, size, tetrahedralize=None):
