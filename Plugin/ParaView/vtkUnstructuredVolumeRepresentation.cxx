@@ -14,12 +14,37 @@
 #include "uvPiecePartition.h"
 
 #include <algorithm>
+#include <limits>
+#include <map>
 #include <vector>
+
+namespace
+{
+/// The pieces each of this process's entries keeps where they are, by view. The view orders the
+/// ranks by the box around everything kept on each, so an entry keeps its pieces only where those
+/// boxes stay apart with its own added (another dataset split along another axis would not).
+/// Every rank holds the same table: it is filled from gathered pieces in the same order.
+using KeptPiecesByEntry = std::map<const vtkUnstructuredVolumeRepresentation*, std::vector<uv::RankPiece>>;
+std::map<const vtkView*, KeptPiecesByEntry>& KeptPieces()
+{
+  static std::map<const vtkView*, KeptPiecesByEntry> kept;
+  return kept;
+}
+
+void ForgetKeptPieces(const vtkUnstructuredVolumeRepresentation* entry)
+{
+  for (auto& view : KeptPieces())
+  {
+    view.second.erase(entry);
+  }
+}
+}
 
 vtkUnstructuredVolumeRepresentation::vtkUnstructuredVolumeRepresentation() = default;
 
 vtkUnstructuredVolumeRepresentation::~vtkUnstructuredVolumeRepresentation()
 {
+  ForgetKeptPieces(this);
   // The superclass still holds the mapper here.
   if (this->PinnedMapper)
   {
@@ -79,7 +104,34 @@ bool vtkUnstructuredVolumeRepresentation::PiecesFormPartition(vtkInformation* in
     std::copy(all.begin() + 7 * rank, all.begin() + 7 * rank + 6, pieces[rank].Bounds);
     pieces[rank].Cells = all[7 * rank + 6];
   }
-  return uv::PiecesFormPartition(pieces);
+  KeptPiecesByEntry& kept = KeptPieces()[this->GetView()];
+  kept.erase(this);
+  if (!uv::PiecesFormPartition(pieces))
+  {
+    return false;
+  }
+  std::vector<uv::RankPiece> together = pieces;
+  for (const auto& other : kept)
+  {
+    for (std::size_t rank = 0; rank < together.size() && rank < other.second.size(); ++rank)
+    {
+      together[rank].Merge(other.second[rank]);
+    }
+  }
+  uv::PiecePartitionLimits apartOnly; // the load of several datasets together is not the question
+  apartOnly.MaximumImbalance = std::numeric_limits<double>::infinity();
+  if (!uv::PiecesFormPartition(together, apartOnly))
+  {
+    return false;
+  }
+  kept[this] = pieces;
+  return true;
+}
+
+bool vtkUnstructuredVolumeRepresentation::RemoveFromView(vtkView* view)
+{
+  ForgetKeptPieces(this);
+  return this->Superclass::RemoveFromView(view);
 }
 
 int vtkUnstructuredVolumeRepresentation::ProcessViewRequest(
@@ -113,6 +165,7 @@ int vtkUnstructuredVolumeRepresentation::ProcessViewRequest(
     }
     else if (this->UseDataPartitions)
     {
+      ForgetKeptPieces(this); // the user vouches for these pieces; they are not checked
       this->RankPartition = PIECES_KEPT; // the superclass has told the view
     }
     else if (this->KeepRankPartitions && this->PiecesFormPartition(inInfo))
@@ -123,6 +176,7 @@ int vtkUnstructuredVolumeRepresentation::ProcessViewRequest(
     }
     else
     {
+      ForgetKeptPieces(this);
       this->RankPartition = REDISTRIBUTED;
     }
   }

@@ -82,7 +82,8 @@ public:
   ///@{
   /// On several ranks, render the ranks' pieces where they are when they already form a partition:
   /// each in its own box, no two boxes overlapping, none far above the average size
-  /// (uv::PiecesFormPartition). ParaView's default moves cells to a k-d tree of its own on every
+  /// (uv::PiecesFormPartition), and the boxes still apart with those of the view's other entries
+  /// that keep theirs (the view orders each rank by the box around all of them). ParaView's default moves cells to a k-d tree of its own on every
   /// change of the data, time steps included; pieces from a partitioned reader or a parallel
   /// source seldom need it. Otherwise (overlapping or unbalanced pieces) ParaView redistributes as
   /// before. Default on. The inherited SetUseDataPartitions (not a property of these entries:
@@ -98,6 +99,9 @@ public:
   };
   vtkGetMacro(RankPartition, int);
   ///@}
+
+  /// Also forgets the pieces this entry kept in that view.
+  bool RemoveFromView(vtkView* view) override;
 
   /// ParaView's passes; the superclass's, the ranks' partition and the level of detail above.
   int ProcessViewRequest(

@@ -23,6 +23,26 @@ struct RankPiece
     return !(this->Cells > 0.0) || !(this->Bounds[0] <= this->Bounds[1]) ||
       !(this->Bounds[2] <= this->Bounds[3]) || !(this->Bounds[4] <= this->Bounds[5]);
   }
+
+  /// This rank's piece together with another piece on the same rank: the box around both.
+  void Merge(const RankPiece& other)
+  {
+    if (other.IsEmpty())
+    {
+      return;
+    }
+    if (this->IsEmpty())
+    {
+      *this = other;
+      return;
+    }
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      this->Bounds[2 * axis] = std::min(this->Bounds[2 * axis], other.Bounds[2 * axis]);
+      this->Bounds[2 * axis + 1] = std::max(this->Bounds[2 * axis + 1], other.Bounds[2 * axis + 1]);
+    }
+    this->Cells += other.Cells;
+  }
 };
 
 struct PiecePartitionLimits

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace
 {
@@ -68,4 +69,36 @@ TEST(PiecePartition, OneRankOrNothingIsNot)
   EXPECT_FALSE(uv::PiecesFormPartition({}));
   const double nan = std::nan("");
   EXPECT_FALSE(uv::PiecesFormPartition({ Piece(nan, 1, 0, 1, 0, 1, 10), Piece(0, 1, 0, 1, 0, 1, 10) }));
+}
+
+TEST(PiecePartition, PartitionsOfTwoDatasetsTogether)
+{
+  // The view orders each rank by the box around everything kept there: two datasets split along
+  // different axes are each a partition, but not together.
+  std::vector<uv::RankPiece> z = { Piece(0, 2, 0, 2, 0, 1, 10), Piece(0, 2, 0, 2, 1, 2, 10) };
+  std::vector<uv::RankPiece> x = { Piece(0, 1, 0, 2, 0, 2, 10), Piece(1, 2, 0, 2, 0, 2, 10) };
+  ASSERT_TRUE(uv::PiecesFormPartition(z));
+  ASSERT_TRUE(uv::PiecesFormPartition(x));
+  std::vector<uv::RankPiece> together = z;
+  for (std::size_t rank = 0; rank < together.size(); ++rank)
+  {
+    together[rank].Merge(x[rank]);
+  }
+  EXPECT_FALSE(uv::PiecesFormPartition(together));
+  // A second dataset split like the first (a clip of it, say) keeps the ranks apart.
+  std::vector<uv::RankPiece> clipped = { Piece(0.5, 1.5, 0, 2, 0, 0.8, 4), Piece(0.5, 1.5, 0, 2, 1.2, 2, 4) };
+  together = z;
+  for (std::size_t rank = 0; rank < together.size(); ++rank)
+  {
+    together[rank].Merge(clipped[rank]);
+  }
+  EXPECT_TRUE(uv::PiecesFormPartition(together));
+  EXPECT_DOUBLE_EQ(together[0].Cells, 14.0);
+  // Merging an empty piece changes nothing; merging into one takes the other.
+  uv::RankPiece empty;
+  uv::RankPiece merged = z[0];
+  merged.Merge(empty);
+  EXPECT_DOUBLE_EQ(merged.Cells, 10.0);
+  empty.Merge(z[1]);
+  EXPECT_DOUBLE_EQ(empty.Bounds[4], 1.0);
 }
