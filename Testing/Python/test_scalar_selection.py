@@ -105,10 +105,12 @@ for _name, _make in generated_cell_meshes().items():
             (lambda make: lambda self: self.check(make(), "MarschnerLobb"))(_make))
 def untangled(mesh):
     """The hexahedra whose Jacobian keeps its sign (vtkMeshQuality's hexahedral Jacobian > 0). In a
-    folded cell a point of space is inside the cell more than once: the reference superposes every
-    sheet (its optical model), the marcher counts the point once. Measured on the can (51 folded
-    cells of 4800): the two differ by 1.9e-3 with the folded cells and agree to 1e-4 without them, so
-    the comparison leaves them out."""
+    folded cell a point of space can be inside the cell twice, with two values of the field. Both
+    renderers count such a point once per cell (the reference superposes cells, not a cell's
+    sheets), but with different preimages: the reference takes the one Newton reaches from the
+    cell's centre and misses stretches that end at a fold rather than at a face, the marcher's
+    locator finds its own. On the can they differ there and agree without the folded cells, so the
+    comparison leaves them out."""
     quality = vtkMeshQuality()
     quality.SetInputData(mesh)
     quality.SetHexQualityMeasureToJacobian()
