@@ -14,7 +14,6 @@
 #include "uvPiecePartition.h"
 
 #include <algorithm>
-#include <limits>
 #include <map>
 #include <vector>
 
@@ -106,21 +105,12 @@ bool vtkUnstructuredVolumeRepresentation::PiecesFormPartition(vtkInformation* in
   }
   KeptPiecesByEntry& kept = KeptPieces()[this->GetView()];
   kept.erase(this);
-  if (!uv::PiecesFormPartition(pieces))
-  {
-    return false;
-  }
-  std::vector<uv::RankPiece> together = pieces;
+  std::vector<std::vector<uv::RankPiece>> others;
   for (const auto& other : kept)
   {
-    for (std::size_t rank = 0; rank < together.size() && rank < other.second.size(); ++rank)
-    {
-      together[rank].Merge(other.second[rank]);
-    }
+    others.push_back(other.second);
   }
-  uv::PiecePartitionLimits apartOnly; // the load of several datasets together is not the question
-  apartOnly.MaximumImbalance = std::numeric_limits<double>::infinity();
-  if (!uv::PiecesFormPartition(together, apartOnly))
+  if (!uv::PiecesFormPartitionBeside(pieces, others))
   {
     return false;
   }

@@ -81,11 +81,11 @@ public:
 
   ///@{
   /// On several ranks, render the ranks' pieces where they are when they already form a partition:
-  /// each in its own box, no two boxes overlapping, none far above the average size
-  /// (uv::PiecesFormPartition), and the boxes still apart with those of the view's other entries
-  /// that keep theirs (the view orders each rank by the box around all of them). ParaView's default moves cells to a k-d tree of its own on every
-  /// change of the data, time steps included; pieces from a partitioned reader or a parallel
-  /// source seldom need it. Otherwise (overlapping or unbalanced pieces) ParaView redistributes as
+  /// each in its own box, no two boxes overlapping, none far above the average size, and the boxes
+  /// still apart with those of the view's other entries that keep theirs, since the view orders
+  /// each rank by the box around all of them (uv::PiecesFormPartitionBeside). ParaView's default
+  /// moves cells to a k-d tree of its own on every change of the data, time steps included; pieces
+  /// from a partitioned reader or a parallel source seldom need it. Otherwise (overlapping or unbalanced pieces) ParaView redistributes as
   /// before. Default on. The inherited SetUseDataPartitions (not a property of these entries:
   /// ParaView's own Volume holds that name) keeps the pieces whatever they are.
   void SetKeepRankPartitions(bool keep);

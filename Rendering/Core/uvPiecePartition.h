@@ -118,6 +118,30 @@ inline bool PiecesFormPartition(const std::vector<RankPiece>& pieces, const Piec
   return true;
 }
 
+/// Whether `pieces` (one dataset, one piece a rank) may be kept where they are beside the pieces of
+/// other datasets already kept in the same view (`kept`, one piece a rank each): `pieces` form a
+/// partition, and so do the boxes around everything kept on each rank, which is what the view
+/// orders the ranks by (their load together is not the question).
+inline bool PiecesFormPartitionBeside(const std::vector<RankPiece>& pieces,
+  const std::vector<std::vector<RankPiece>>& kept, const PiecePartitionLimits& limits = {})
+{
+  if (!PiecesFormPartition(pieces, limits))
+  {
+    return false;
+  }
+  std::vector<RankPiece> together = pieces;
+  for (const std::vector<RankPiece>& other : kept)
+  {
+    for (std::size_t rank = 0; rank < together.size() && rank < other.size(); ++rank)
+    {
+      together[rank].Merge(other[rank]);
+    }
+  }
+  PiecePartitionLimits apartOnly = limits;
+  apartOnly.MaximumImbalance = HUGE_VAL;
+  return PiecesFormPartition(together, apartOnly);
+}
+
 } // namespace uv
 
 #endif

@@ -77,28 +77,33 @@ TEST(PiecePartition, PartitionsOfTwoDatasetsTogether)
   // different axes are each a partition, but not together.
   std::vector<uv::RankPiece> z = { Piece(0, 2, 0, 2, 0, 1, 10), Piece(0, 2, 0, 2, 1, 2, 10) };
   std::vector<uv::RankPiece> x = { Piece(0, 1, 0, 2, 0, 2, 10), Piece(1, 2, 0, 2, 0, 2, 10) };
-  ASSERT_TRUE(uv::PiecesFormPartition(z));
-  ASSERT_TRUE(uv::PiecesFormPartition(x));
-  std::vector<uv::RankPiece> together = z;
-  for (std::size_t rank = 0; rank < together.size(); ++rank)
-  {
-    together[rank].Merge(x[rank]);
-  }
-  EXPECT_FALSE(uv::PiecesFormPartition(together));
-  // A second dataset split like the first (a clip of it, say) keeps the ranks apart.
+  ASSERT_TRUE(uv::PiecesFormPartitionBeside(z, {}));
+  ASSERT_TRUE(uv::PiecesFormPartitionBeside(x, {}));
+  EXPECT_FALSE(uv::PiecesFormPartitionBeside(x, { z }));
+  EXPECT_FALSE(uv::PiecesFormPartitionBeside(z, { x }));
+  // A second dataset split like the first (a clip of it, say) keeps the ranks apart, however
+  // unbalanced the two are together.
   std::vector<uv::RankPiece> clipped = { Piece(0.5, 1.5, 0, 2, 0, 0.8, 4), Piece(0.5, 1.5, 0, 2, 1.2, 2, 4) };
-  together = z;
-  for (std::size_t rank = 0; rank < together.size(); ++rank)
-  {
-    together[rank].Merge(clipped[rank]);
-  }
-  EXPECT_TRUE(uv::PiecesFormPartition(together));
-  EXPECT_DOUBLE_EQ(together[0].Cells, 14.0);
+  std::vector<uv::RankPiece> heavy = { Piece(0, 2, 0, 2, 0, 1, 100), Piece(0, 2, 0, 2, 1, 2, 100) };
+  EXPECT_TRUE(uv::PiecesFormPartitionBeside(clipped, { z, heavy }));
+  // Its own pieces must still be a partition, beside anything.
+  EXPECT_FALSE(uv::PiecesFormPartitionBeside({ Piece(0, 2, 0, 2, 0, 2, 50), Piece(0, 2, 0, 2, 0, 2, 50) }, {}));
+}
+
+TEST(PiecePartition, MergeTakesTheBoxAroundBoth)
+{
+  uv::RankPiece merged = Piece(0, 1, 0, 1, 0, 1, 10);
+  merged.Merge(Piece(2, 3, -1, 0.5, 0, 1, 4));
+  EXPECT_DOUBLE_EQ(merged.Cells, 14.0);
+  EXPECT_DOUBLE_EQ(merged.Bounds[0], 0.0);
+  EXPECT_DOUBLE_EQ(merged.Bounds[1], 3.0);
+  EXPECT_DOUBLE_EQ(merged.Bounds[2], -1.0);
+  EXPECT_DOUBLE_EQ(merged.Bounds[3], 1.0);
   // Merging an empty piece changes nothing; merging into one takes the other.
   uv::RankPiece empty;
-  uv::RankPiece merged = z[0];
   merged.Merge(empty);
-  EXPECT_DOUBLE_EQ(merged.Cells, 10.0);
-  empty.Merge(z[1]);
+  EXPECT_DOUBLE_EQ(merged.Cells, 14.0);
+  empty.Merge(Piece(0, 2, 0, 2, 1, 2, 10));
   EXPECT_DOUBLE_EQ(empty.Bounds[4], 1.0);
+  EXPECT_DOUBLE_EQ(empty.Cells, 10.0);
 }
