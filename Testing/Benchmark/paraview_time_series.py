@@ -18,12 +18,16 @@ runs it on 1, 2 and 4 ranks (--json, --image) for the rank-scaling table.
 import argparse
 import builtins
 import json
-import re
+import os
 import statistics
+import sys
 import time
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "ParaView"))
+from pvscene import ENTRIES, pixels_off, png_rgb, printed  # noqa: E402  (shared with the ParaView tests)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("plugin")
@@ -40,8 +44,7 @@ parser.add_argument("--json", help="append one JSON line per kind here")
 args = parser.parse_args()
 LoadPlugin(args.plugin, remote=False, ns=globals())  # noqa: F405
 ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
-entry = {"preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray Cast)",
-         "barycentric": "Volume (Barycentric Shells)"}[args.mapper]
+entry = ENTRIES[args.mapper]
 tetrahedral = args.mapper != "hexahedral"
 # Not a one-letter name: the programmable filter runs its script in this module's namespace, where it
 # also leaves numpy_interface's algorithms (max, min, sum: MPI reductions that hang when only this
@@ -98,21 +101,6 @@ def resident_megabytes():
     return [information.GetProcMemoryUse(i) / 1024.0 for i in range(information.GetSize())]
 
 
-def image_difference(path, other):
-    """The share of pixels more than 2 levels off in some colour channel, and the largest difference."""
-    import numpy as np
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    images = []
-    for name in (path, other):
-        reader = vtkPNGReader()
-        reader.SetFileName(name)
-        reader.Update()
-        images.append(vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(np.int32))
-    difference = np.abs(images[0] - images[1]).max(axis=1)
-    return float(np.mean(difference > 2)), int(difference.max())
-
-
 def measure(kind):
     view = CreateView("RenderView")  # noqa: F405
     view.ViewSize = [args.size, args.size]
@@ -150,15 +138,14 @@ def measure(kind):
     cells = series.GetDataInformation().GetNumberOfCells()
     if args.image:
         SaveScreenshot(args.image, view, ImageResolution=[args.size, args.size])  # noqa: F405
-    compared = image_difference(args.image, args.compare_to) if args.image and args.compare_to else None
+    compared = pixels_off(png_rgb(args.image), png_rgb(args.compare_to)) if args.image and args.compare_to else None
     memory = resident_megabytes()
     # The mapper and representation are not wrapped in ParaView's Python: their PrintSelf says what
     # the mapper redid and which partition the entry chose.
     representation = display.GetClientSideObject().GetActiveRepresentation()
-    text = str(representation.GetActiveVolumeMapper())
-    redone = "/".join(re.search(name + r": (\d+)", text).group(1)
-                      for name in ("MeshBuilds", "PointRefreshes", "ValueRefreshes"))
-    partition = re.search(r"RankPartition: ([a-z ]+)", str(representation)).group(1)
+    mapper = representation.GetActiveVolumeMapper()
+    redone = "/".join(printed(mapper, name) for name in ("MeshBuilds", "PointRefreshes", "ValueRefreshes"))
+    partition = printed(representation, "RankPartition")
     Delete(display)  # noqa: F405
     Delete(view)  # noqa: F405
     for proxy in (series, mesh, wavelet):

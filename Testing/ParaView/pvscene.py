@@ -1,10 +1,16 @@
-"""What the ParaView tests and benchmarks share (pvbatch, after LoadPlugin): a view with a fixed
-background, the wavelet scene of the interaction test and benchmark (VTK's wavelet shown through one
-of the plugin's entries, coloured and made transparent by RTData, seen from 20 degrees above), and
-the window's pixels as last rendered.
+"""What the ParaView tests and benchmarks share (pvbatch, after LoadPlugin): the entries' menu names,
+a view with a fixed background, the wavelet scene of the interaction test and benchmark (VTK's
+wavelet shown through one of the plugin's entries, coloured and made transparent by RTData, seen
+from 20 degrees above), the window's pixels as last rendered, PNG images compared pixel by pixel,
+and what an entry's PrintSelf says (its classes are not wrapped in ParaView's Python).
 """
+import re
+
 from paraview import simple
 from paraview.vtk.vtkRenderingCore import vtkWindowToImageFilter
+
+ENTRIES = {"preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray Cast)",
+           "barycentric": "Volume (Barycentric Shells)"}
 
 
 def new_view(size, background=(0.1, 0.1, 0.12)):
@@ -57,3 +63,27 @@ def rgb_rmse(a, b):
     """RMSE over two windows' RGB byte triples, in [0, 1]."""
     total = sum((x - y) ** 2 for p, q in zip(a, b) for x, y in zip(p, q))
     return (total / (3.0 * len(a))) ** 0.5 / 255.0
+
+
+def png_rgb(path):
+    """A PNG file's RGB as a numpy array of integers, a row per pixel."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(np.int32)
+
+
+def pixels_off(first, second):
+    """Between two png_rgb arrays: the share of pixels more than 2 levels off in some channel, and
+    the largest difference."""
+    import numpy as np
+    difference = np.abs(first - second).max(axis=1)
+    return float(np.mean(difference > 2)), int(difference.max())
+
+
+def printed(vtk_object, name):
+    """The value `vtk_object`'s PrintSelf gives for `name`, as text."""
+    return re.search(re.escape(name) + r": ([^\n]*)", str(vtk_object)).group(1).strip()

@@ -13,15 +13,12 @@ would overlap the other's), and the image must agree with both redistributed. La
 time step of the slabs keeps them kept. The entry's choice is read from the representation's PrintSelf.
 """
 import os
-import re
 import sys
 
 import numpy as np
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
-from pvscene import new_view  # beside this script
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+from pvscene import ENTRIES, new_view, pixels_off, png_rgb, printed  # beside this script
 
 # Not names the programmable source uses: its script runs in this module's namespace.
 plugin, mapper, OUTPUT_DIR = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -29,8 +26,7 @@ LoadPlugin(plugin, remote=False, ns=globals())  # noqa: F405
 ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 assert ranks == 2, f"run on 2 ranks, not {ranks}"
 os.makedirs(OUTPUT_DIR, exist_ok=True)
-ENTRY = {"preintegrated": "Volume (Pre-integrated Tetrahedra)", "hexahedral": "Volume (Hexahedral Ray Cast)",
-         "barycentric": "Volume (Barycentric Shells)"}[mapper]
+ENTRY = ENTRIES[mapper]
 
 INFORMATION = """
 from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm, vtkStreamingDemandDrivenPipeline as pipeline
@@ -136,21 +132,13 @@ def render(deals, keep=True, time=0.0):
     name = f"{'+'.join(deals)}{'' if keep else '_redistributed'}{'_step' if time else ''}"
     path = os.path.join(OUTPUT_DIR, f"{mapper}_{name}.png")
     SaveScreenshot(path, view, ImageResolution=[240, 240])  # noqa: F405
-    choices = [re.search(r"RankPartition: ([a-z ]+)",
-                         str(display.GetClientSideObject().GetActiveRepresentation())).group(1)
+    choices = [printed(display.GetClientSideObject().GetActiveRepresentation(), "RankPartition")
                for _, display in shown]
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    pixels = png_rgb(path)
     for source, display in shown:
         Delete(display)  # noqa: F405
         Delete(source)  # noqa: F405
     return name, choices, pixels
-
-
-def off_share(first, second):
-    return float(np.mean(np.abs(first - second).max(axis=1) > 2))
 
 
 def check(results, expected):
@@ -160,7 +148,7 @@ def check(results, expected):
     print(f"{ENTRY}: the volumes cover {100 * covered:.1f}% of the image")
     assert covered > 0.2, covered
     for name, choices, pixels in results:
-        share = off_share(pixels, first)
+        share = pixels_off(pixels, first)[0]
         print(f"{name}: {', '.join(choices)}; {100 * share:.2f}% of pixels more than 2 levels off {results[0][0]}")
         assert choices == expected[name], (name, choices)
         assert share <= 0.01, (name, share)
@@ -178,7 +166,7 @@ check([render(["slabs", "xslabs"]), render(["slabs", "xslabs"], keep=False)],
        "slabs+xslabs_redistributed": ["redistributed", "redistributed"]})
 # A value-only step (a programmable source's later time): the slabs stay kept, and the image moves.
 name, choices, stepped = render(["slabs"], time=1.0)
-share = off_share(stepped, kept)
+share = pixels_off(stepped, kept)[0]
 print(f"{name}: {', '.join(choices)}; {100 * share:.2f}% of pixels changed by the step")
 assert choices == ["pieces kept"], choices
 assert share > 0.01, share
