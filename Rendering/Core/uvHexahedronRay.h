@@ -63,8 +63,9 @@ inline HexahedronFrame MakeHexahedronFrame(const glm::dvec3 p[8])
 
 /// Whether the cell's trilinear map folds over itself: its Jacobian determinant takes both signs
 /// over the corners and the centre (where it is extreme for most cells). Zeros, as at a collapsed
-/// edge, do not count. Rays through such a cell meet parts of it more than once and overlapping
-/// neighbours; what they integrate there is not well defined.
+/// edge, do not count. A ray through such a cell may meet a face several times either way, and
+/// overlapping neighbours: the reference takes the cell's parts by Newton from its centre and adds
+/// overlapping cells' media; the hexahedral walk takes the parts alike and counts one medium.
 inline bool IsTangledHexahedron(const glm::dvec3 p[8])
 {
   auto determinant = [p](double r, double s, double t) {

@@ -319,6 +319,7 @@ struct TraversalSettings
   bool SkipInvisibleCells = false; // rays enter and leave at the visible region (GpuResources::VisibleCells)
   bool VertexGradients = false;    // isosurfaces lit by GpuResources::PointGradients
   int CellGeometry = 0;            // what every cell is (uv::MeshCellGeometry)
+  bool TangledCells = false;       // some cells fold over themselves (uv::IsTangledHexahedron)
   bool LastPeel = false;           // no peel is left to pick a ray up
 };
 
@@ -339,7 +340,7 @@ public:
     const bool vertexGradients = settings.VertexGradients, densities = settings.CellDensities;
     vtkShaderProgram* program = this->Ready(pass.Frame->Window,
       { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip, vertexGradients, densities,
-        settings.IntegrationMode, settings.CellGeometry });
+        settings.IntegrationMode, settings.CellGeometry, settings.TangledCells });
     if (program)
     {
       images.Entry->Activate();
@@ -614,7 +615,7 @@ bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const vtkuv::Rend
   if (built && mesh.TangledCells > 0)
   {
     vtkWarningMacro(<< mesh.TangledCells << " hexahedra are tangled (their Jacobian changes sign, as in a "
-                    << "crushed mesh): what a ray integrates through them is not well defined");
+                    << "crushed mesh): where they overlap other cells, a ray counts one medium");
   }
   if (built && mesh.FlatCells > 0)
   {
@@ -731,6 +732,7 @@ bool vtkHexahedralRayCastMapper::Draw(const vtkUnstructuredVolumeFrame& frame, v
   settings.CellDensities = !impl.Mesh.CellDensities.empty();
   settings.VertexGradients = impl.NeedGradients;
   settings.CellGeometry = static_cast<int>(impl.Mesh.Geometry);
+  settings.TangledCells = impl.Mesh.TangledCells > 0;
 
   impl.Images.Framebuffer->SaveCurrentBindingsAndBuffers();
   impl.Images.Framebuffer->Bind();

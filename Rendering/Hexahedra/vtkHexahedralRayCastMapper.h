@@ -57,7 +57,11 @@
  * prisms) are split into tetrahedra on the way (vtkHexahedraToTetrahedra, on the same points), which
  * join the same walk. Meshes of tetrahedra alone are handed to vtkPreIntegratedTetrahedraMapper
  * (DelegateTetrahedralMeshes). Cells touching a NaN scalar are left out (one
- * warning); folded (tangled) cells are rendered, with a warning per mesh build.
+ * warning); folded (tangled) cells are rendered, with a warning per mesh build. A ray takes a folded
+ * cell's parts as the reference does (the stretches between its face hits that Newton from the
+ * centre maps into the cell) and its field by Newton from the centre (a program variant for meshes
+ * with such cells); where different cells overlap, the walk counts one of them where the reference
+ * adds their media.
  */
 #ifndef vtkHexahedralRayCastMapper_h
 #define vtkHexahedralRayCastMapper_h

@@ -32,13 +32,14 @@ struct vtkHexahedralRayCastPrograms
     bool CellDensities = false;   // some cells stand for coincident copies: their media add up
     int IntegrationMode = 0;      // vtkHexahedralRayCastMapper's: only its code is compiled
     int CellGeometry = 0;         // what every cell is (uv::MeshCellGeometry): only its code is compiled
+    bool TangledCells = false;    // some cells fold over themselves: their parts are found as the reference's
 
     bool operator==(const TraversalOptions& other) const
     {
       return this->NodeTexture == other.NodeTexture && this->CellScalars == other.CellScalars &&
         this->SkipInvisibleCells == other.SkipInvisibleCells && this->VertexGradients == other.VertexGradients &&
         this->CellDensities == other.CellDensities && this->IntegrationMode == other.IntegrationMode &&
-        this->CellGeometry == other.CellGeometry;
+        this->CellGeometry == other.CellGeometry && this->TangledCells == other.TangledCells;
     }
   };
 
@@ -68,12 +69,15 @@ struct vtkHexahedralRayCastPrograms
       defines += "#define UV_ALL_CELLS_CONVEX\n"; // no bilinear face to solve
     if (options.CellGeometry >= 2)
       defines += "#define UV_ALL_PARALLELEPIPEDS\n"; // no collapsed or curved cell either
+    if (options.TangledCells && options.CellGeometry == 0)
+      defines += "#define UV_TANGLED_CELLS\n"; // a convex cell does not fold
     sources.Fragment = uvgl::ShaderSource(uvHexahedralTraverseFS, defines);
     return sources;
   }
 
   /// The variants a test compiles: every combination of the flags, each with an integration mode and
-  /// a cell geometry taken in turn, so that every pair of those two appears (all of their products
+  /// a cell geometry taken in turn, so that every pair of those two appears (tangled cells in every
+  /// other variant of the general geometry) (all of their products
   /// with the flags would be nine times as many programs to link, for no define they share).
   static std::vector<TraversalOptions> AllTraversalOptions()
   {
@@ -86,8 +90,9 @@ struct vtkHexahedralRayCastPrograms
               if (!(cellScalars && vertexGradients)) // a cell scalar's surfaces are lit by their faces
               {
                 const int turn = static_cast<int>(all.size());
-                all.push_back(
-                  { nodeTexture, cellScalars, skip, vertexGradients, densities, turn % 3, (turn / 3) % 3 });
+                const int geometry = (turn / 3) % 3;
+                all.push_back({ nodeTexture, cellScalars, skip, vertexGradients, densities, turn % 3, geometry,
+                  geometry == 0 && turn % 2 == 0 });
               }
     return all;
   }

@@ -251,6 +251,11 @@ void IntegrateCell(vec3 origin, vec3 direction, float t, float segmentEnd, float
   vec3 entryPoint = origin + t * direction, exitPoint = origin + segmentEnd * direction;
   vec3 xi0 = FrameCoordinates(frame, entryPoint);
   vec3 xi1 = FrameCoordinates(frame, exitPoint);
+#ifdef UV_TANGLED_CELLS
+  // A folded cell maps some points from two places: Newton from the centre picks the reference's.
+  xi0 = cellTangled ? InverseFromCentre(entryPoint) : xi0;
+  xi1 = cellTangled ? InverseFromCentre(exitPoint) : xi1;
+#endif
   vec4 field;
 #ifdef UV_ALL_PARALLELEPIPEDS
   field = TrilinearAlongSegment(scalars, xi0, xi1); // the frame is the cell's map

@@ -6,6 +6,7 @@
 in vec3 modelPosition;
 flat in int boundaryFace;
 flat in vec3 outwardNormal;
+flat in int tangled; // the face's cell folds over itself (uvHexahedralEntryVS.glsl)
 flat in int widening; // from a triangle of the face's other diagonal (uvHexahedralEntryVS.glsl)
 
 uniform vec3 nearPlane[3];    // the rays (EyeRay)
@@ -59,10 +60,14 @@ float EntryParameter(vec3 origin, vec3 direction, vec3 a, vec3 b, vec3 c, vec3 d
   }
   // Only where the ray enters the mesh: the patch's own normal there, turned outward (a curved
   // boundary face can be entered on one part and left on another).
-  vec3 normal0 = OrientedNormal(n0, outwardNormal);
-  vec3 normal1 = OrientedNormal(n1, outwardNormal);
-  // Leaving faces only beyond the near-plane point (t = 0), which the traversal walks back to.
-  bool leaves0 = dot(normal0, direction) >= 0.0, leaves1 = dot(normal1, direction) >= 0.0;
+  vec3 centreNormal = PatchNormalAt(a, b, c, d, vec2(0.5));
+  vec3 normal0 = OutwardNormalAt(n0, centreNormal, outwardNormal);
+  vec3 normal1 = OutwardNormalAt(n1, centreNormal, outwardNormal);
+  // Leaving faces only beyond the near-plane point (t = 0), which the traversal walks back to. A folded
+  // cell's face may be entered either way: the traversal finds where the cell's part starts
+  // (FindExitThroughParts).
+  bool leaves0 = tangled == 0 && dot(normal0, direction) >= 0.0;
+  bool leaves1 = tangled == 0 && dot(normal1, direction) >= 0.0;
   float t = 3.0e38;
   if (h0 > after && (!leaves0 || (anyCrossing && h0 > 0.0)))
   {
@@ -96,13 +101,14 @@ void main()
   // In proportion to the ray parameter and the face, not absolute: meshes of any size and distance.
   float wall = exit.g > 0.5 ? 1e-5 * (abs(exit.r) + length(c - a)) : 0.0;
   float after = firstPeel == 1 ? -3.0e38 : exit.r - wall;
+  // Not back into the cell the walk left the mesh from, where it left it (exit.a, -1: none); further
+  // on, a curved face of that cell may be entered again.
+  if (firstPeel == 0 && exit.g > 0.5 && exit.g < 1.5 && cell == int(exit.a))
+    after = exit.r + wall;
   // Where the first peel did not locate the ray's near-plane point (uvHexahedralTraverseFS.glsl's
   // UNLOCATED), the nearest crossing of either kind: where the ray leaves, the point is in the mesh.
   bool leaving;
   float t = EntryParameter(origin, direction, a, b, c, d, corners, after, firstPeel == 0 && exit.g > 2.5, leaving);
-  // Not back into the cell the walk left the mesh from, where it left it (exit.a, -1: none).
-  if (firstPeel == 0 && exit.g > 0.5 && exit.g < 1.5 && cell == int(exit.a) && t <= exit.r + wall)
-    discard;
   if (!(t < 3.0e38))
   {
     discard; // the ray leaves the mesh here, or this face was traversed already

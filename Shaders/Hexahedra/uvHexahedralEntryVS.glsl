@@ -13,6 +13,7 @@ uniform int faceOffset; // the first face of this draw (uvgl::DrawItemsInChunks)
 out vec3 modelPosition;
 flat out int boundaryFace;
 flat out vec3 outwardNormal;
+flat out int tangled;  // 1: the face's cell folds over itself (IsTangledCell)
 flat out int widening; // 1: a triangle of the other diagonal, which only widens the pixels tested
 
 //UV::Hexahedron
@@ -39,7 +40,8 @@ void main()
   }
   // A flat boundary cell (a sliver) has its centre in the face's plane up to rounding: the face's
   // corner order orients it there.
-  outwardNormal = OutwardFaceNormal(p, CellCentre(corners));
+  outwardNormal = OutwardFaceNormal(p, CellCentre(corners), CellHandedness(corners));
+  tangled = IsTangledCell(corners) ? 1 : 0;
   int order[12] = int[12](0, 1, 2, 0, 2, 3, 0, 1, 3, 1, 2, 3);
   // Flat within rounding (a triangle's repeated corner included): one pair covers the patch, and
   // the other pair collapses to a point, which draws nothing.

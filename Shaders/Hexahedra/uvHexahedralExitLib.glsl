@@ -5,21 +5,21 @@
 
 // ---- Traversal
 
-/// Whether a ray along `direction` leaves a cell where its face's normal is `normal` (either
-/// orientation; `outward`, the face's mean outward normal, orients it). A collapsed face does not
-/// block.
-bool Leaves(vec3 normal, vec3 outward, vec3 direction)
+/// Whether a ray along `direction` leaves a cell where its face's normal is `normal` (the face's
+/// canonical orientation; OutwardNormalAt turns it outward by `centreNormal` and `outward`, the face's
+/// mean outward normal). A collapsed face does not block.
+bool Leaves(vec3 normal, vec3 centreNormal, vec3 outward, vec3 direction)
 {
   if (!(MaxComponent(outward) > 0.0))
     return true;
-  return dot(OrientedNormal(normal, outward), direction) > 0.0;
+  return dot(OutwardNormalAt(normal, centreNormal, outward), direction) > 0.0;
 }
 
 /// The ray's hits on face f of the loaded cell (none on a collapsed face), as the exact bilinear
 /// patch (or triangle) through its corners, parameterised canonically, with the face's normal at
 /// each; a hit where the ray enters the cell instead of leaving it is -3e38 (near an edge the ray can
 /// meet, within the edge slack, a face it enters through, just after the entry on the neighbouring
-/// face).
+/// face; a curved face can be entered on one part and left on another).
 void LeavingHits(int f, vec3 origin, vec3 direction, vec3 cellCentre, out float h0, out float h1, out vec3 n0,
   out vec3 n1)
 {
@@ -34,10 +34,11 @@ void LeavingHits(int f, vec3 origin, vec3 direction, vec3 cellCentre, out float 
   int hits = HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
   vec3 q[4];
   CyclicFace(f, q);
-  vec3 outward = OutwardFaceNormal(q, cellCentre);
-  if (!(hits > 0 && Leaves(n0, outward, direction)))
+  vec3 outward = OutwardFaceNormal(q, cellCentre, cellHandedness);
+  vec3 centreNormal = PatchNormalAt(a, b, c, d, vec2(0.5));
+  if (!(hits > 0 && Leaves(n0, centreNormal, outward, direction)))
     h0 = -3.0e38;
-  if (!(hits > 1 && Leaves(n1, outward, direction)))
+  if (!(hits > 1 && Leaves(n1, centreNormal, outward, direction)))
     h1 = -3.0e38;
 }
 
@@ -98,18 +99,18 @@ int FindExitThroughPatches(vec3 origin, vec3 direction, float t, int enterFace, 
     float after = pass == 0 ? t + tolerance : t - tolerance;
     for (int f = 0; f < 6; ++f)
     {
-      if (f == enterFace)
-        continue;
+      // The entry face only beyond the entry: a curved face can be entered and left again.
+      float beyond = f == enterFace ? t + tolerance : after;
       float h0, h1;
       vec3 n0, n1;
       LeavingHits(f, origin, direction, cellCentre, h0, h1, n0, n1);
-      if (h0 > after && h0 < exitT)
+      if (h0 > beyond && h0 < exitT)
       {
         exitT = h0;
         exitFace = f;
         exitNormal = n0;
       }
-      if (h1 > after && h1 < exitT)
+      if (h1 > beyond && h1 < exitT)
       {
         exitT = h1;
         exitFace = f;
@@ -122,8 +123,78 @@ int FindExitThroughPatches(vec3 origin, vec3 direction, float t, int enterFace, 
   return exitFace;
 }
 
-/// The face of the loaded cell (other than `enterFace`) where the ray leaves it nearest beyond t, with
-/// that parameter in exitT; -1 when no face claims the ray. Where none does beyond rounding of t, the
+#ifdef UV_TANGLED_CELLS
+float partStart; // where FindExitThroughParts found the folded cell's part to start
+
+/// The index of the smallest of `hits` beyond `after`, or -1.
+int NextHit(float hits[12], float after)
+{
+  int next = -1;
+  for (int k = 0; k < 12; ++k)
+  {
+    if (hits[k] > after && hits[k] < noExit && (next < 0 || hits[k] < hits[next]))
+      next = k;
+  }
+  return next;
+}
+
+/// FindExit for a folded cell (IsTangledCell), whose faces' normals do not tell entering from leaving:
+/// its faces' hits beyond t in order, each stretch between two of them the cell's where ClaimsPoint
+/// holds at its middle, as the reference takes a cell's parts. The cell's part starts at t, or at the
+/// first hit after which a stretch is the cell's (partStart: where a fold's face only seemed to
+/// enter it), and the ray leaves it at the first hit after that where a stretch is not, or at the
+/// last. Each face's two hits have their own slots: softpipe writes an array at a per-pixel index
+/// wrongly (see HitPatchAt).
+int FindExitThroughParts(vec3 origin, vec3 direction, float t, out float exitT)
+{
+  float size = MaxComponent(points[6] - points[0]) + MaxComponent(points[7] - points[1]);
+  float tolerance = 1e-6 * (abs(t) + size);
+  float hits[12];
+  vec3 normals[12];
+  for (int f = 0; f < 6; ++f)
+  {
+    vec3 a, b, c, d;
+    float h0 = noExit, h1 = noExit;
+    vec3 n0 = vec3(0.0), n1 = vec3(0.0);
+    int corners = LoadedCellFace(f, a, b, c, d);
+    int count = corners < 3 ? 0 : HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
+    hits[2 * f] = count > 0 && h0 > t + tolerance ? h0 : noExit;
+    hits[2 * f + 1] = count > 1 && h1 > t + tolerance ? h1 : noExit;
+    normals[2 * f] = n0;
+    normals[2 * f + 1] = n1;
+  }
+  exitT = noExit;
+  int exitFace = -1;
+  int first = NextHit(hits, t);
+  bool inside = first >= 0 && ClaimsPoint(origin + 0.5 * (t + hits[first]) * direction, size);
+  partStart = inside ? t : noExit;
+  float after = t;
+  for (int part = 0; part < 12; ++part)
+  {
+    int k = NextHit(hits, after);
+    if (k < 0)
+      break;
+    exitT = hits[k];
+    exitFace = k / 2;
+    exitNormal = normals[k];
+    int following = NextHit(hits, exitT);
+    if (following < 0)
+      break;
+    bool claimed = hits[following] - exitT <= tolerance ? inside
+                                                        : ClaimsPoint(origin + 0.5 * (exitT + hits[following]) * direction, size);
+    if (inside && !claimed)
+      break;
+    partStart = !inside && claimed ? exitT : partStart;
+    inside = claimed;
+    after = exitT;
+  }
+  partStart = min(partStart, exitT); // nothing of the cell on this ray: no length
+  return exitFace;
+}
+#endif
+
+/// The face of the loaded cell where the ray leaves it nearest beyond t (the entry face `enterFace`
+/// only beyond rounding of t, or not at all through planes), with that parameter in exitT; -1 when no face claims the ray. Where none does beyond rounding of t, the
 /// ray leaves where it entered (a flat cell, whose faces coincide): exitT is then t, no length.
 int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
 {
@@ -131,6 +202,10 @@ int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exit
 #ifdef UV_ALL_CELLS_CONVEX
   return FindExitThroughPlanes(origin, direction, t, enterFace, exitT);
 #else
+#ifdef UV_TANGLED_CELLS
+  if (cellTangled)
+    return FindExitThroughParts(origin, direction, t, exitT);
+#endif
   return FindExitThroughPatches(origin, direction, t, enterFace, exitT);
 #endif
 }
@@ -165,7 +240,7 @@ float BeyondFace(int f, vec3 target)
   CyclicFace(f, q);
   if (FaceCornerCount(f) < 3)
     return -1.0;
-  vec3 normal = OutwardFaceNormal(q, CellCentre(points));
+  vec3 normal = OutwardFaceNormal(q, CellCentre(points), cellHandedness);
   return dot(SafeNormalize(normal), target - q[0]) / length(points[6] - points[0]);
 }
 

@@ -17,6 +17,14 @@ vec3 tetrahedronGradient;
 // Whether it has no thickness up to rounding (a collapsed layer, a sliver): it holds no point, adds
 // nothing to the ray, and its inverse map and frame are singular.
 bool cellFlat;
+#ifdef UV_TANGLED_CELLS
+// Whether it folds over itself (IsTangledCell): the walk then takes its parts and its field as the
+// reference does (FindExitThroughParts, IntegrateCell).
+bool cellTangled;
+#endif
+// Its CellHandedness, which orients its faces (0 in a program for convex cells, whose centre lies
+// inside every face: OutwardFaceNormal turns faces away from it).
+float cellHandedness;
 
 /// A tetrahedron (corners 0, 1, 2, 4 distinct) has a linear field: its gradient.
 vec3 LinearFieldGradient()
@@ -82,8 +90,13 @@ void LoadCell(int cell)
 #endif
 #ifdef UV_ALL_CELLS_CONVEX
   cellFlat = false; // a convex cell has a volume
+  cellHandedness = 0.0;
 #else
   cellFlat = IsFlat();
+  cellHandedness = CellHandedness(points);
+#endif
+#ifdef UV_TANGLED_CELLS
+  cellTangled = cellShape == HEXAHEDRON && !cellFlat && IsTangledCell(points);
 #endif
 }
 
@@ -122,14 +135,19 @@ mat3 Jacobian(vec3 xi)
     mapD + mapF * r + mapG * s + mapH * r * s);
 }
 
+/// The loaded cell's isoparametric map at xi.
+vec3 MapTrilinear(vec3 xi)
+{
+  float r = xi.x, s = xi.y, t = xi.z;
+  return points[0] + mapB * r + mapC * s + mapD * t + mapE * r * s + mapF * r * t + mapG * s * t + mapH * r * s * t;
+}
+
 /// Trilinear coordinates of x in the loaded cell: Newton on the isoparametric map from `xi`.
 vec3 InverseTrilinear(vec3 x, vec3 xi)
 {
   for (int iteration = 0; iteration < 8; ++iteration)
   {
-    float r = xi.x, s = xi.y, t = xi.z;
-    vec3 mapped = points[0] + mapB * r + mapC * s + mapD * t + mapE * r * s + mapF * r * t + mapG * s * t +
-      mapH * r * s * t;
+    vec3 mapped = MapTrilinear(xi);
     mat3 jacobian = Jacobian(xi);
     if (IsSingular(jacobian))
       break;
@@ -140,6 +158,39 @@ vec3 InverseTrilinear(vec3 x, vec3 xi)
   }
   return xi;
 }
+
+#ifdef UV_TANGLED_CELLS
+/// The loaded cell's coordinates of x by Newton from its centre, as the reference finds them
+/// (uv::SafeguardedNewton): steps limited to half the cell and more iterations than
+/// InverseTrilinear's, since Newton converges slowly near a fold, where the Jacobian vanishes.
+vec3 InverseFromCentre(vec3 x)
+{
+  vec3 xi = vec3(0.5);
+  for (int iteration = 0; iteration < 32; ++iteration)
+  {
+    mat3 jacobian = Jacobian(xi);
+    if (IsSingular(jacobian))
+      break;
+    vec3 step = inverse(jacobian) * (MapTrilinear(xi) - x);
+    float longest = MaxComponent(step);
+    xi = clamp(xi - (longest > 0.5 ? 0.5 / longest : 1.0) * step, vec3(-0.5), vec3(1.5));
+    if (longest < 1e-6)
+      break;
+  }
+  return xi;
+}
+
+/// Whether x lies in the loaded cell as the reference judges it (uv::IntersectIsoparametric): its
+/// coordinates by Newton from the centre map back onto it and lie in the unit cube. Where a folded
+/// cell covers x twice, it counts once.
+bool ClaimsPoint(vec3 x, float size)
+{
+  vec3 xi = InverseFromCentre(x);
+  const float slack = 1e-5;
+  return MaxComponent(MapTrilinear(xi) - x) <= 1e-4 * size && all(greaterThanEqual(xi, vec3(-slack))) &&
+    all(lessThanEqual(xi, vec3(1.0 + slack)));
+}
+#endif
 
 /// Wedge coordinates (r, s, t) of x in the loaded wedge (VTK's points 0..5 are corners 0, 2, 1,
 /// 4, 6, 5 of its collapsed hexahedron): x = (1 - t) B(r, s) + t T(r, s), B and T the bottom and top

@@ -221,8 +221,12 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
 #else
       bool visible = CellVisible();
 #endif
-      if (segmentEnd > t && !cellFlat && visible)
-        IntegrateCell(origin, direction, t, segmentEnd, CellDensity(cell));
+      float segmentStart = t;
+#ifdef UV_TANGLED_CELLS
+      segmentStart = cellTangled ? partStart : t;
+#endif
+      if (segmentEnd > segmentStart && !cellFlat && visible)
+        IntegrateCell(origin, direction, segmentStart, segmentEnd, CellDensity(cell));
       if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
         break;
       int across[6];

@@ -1035,6 +1035,57 @@ class StressTests(SceneTestCase):
         self.assertTrue(finite_image(image))
 
 
+def folded_slab(columns, depth):
+    """A slab of columns x columns x 1 unit hexahedra whose top point nearest the middle is pushed
+    down to z = depth, below the bottom: the cells around it fold over themselves (their Jacobians
+    take both signs) and their top faces, curved, poke out through the bottom."""
+    grid = vtkUnstructuredGrid()
+    points = vtkPoints()
+    values = vtkDoubleArray()
+    values.SetName("f")
+    middle = (columns + 1) // 2
+    for k in range(2):
+        for j in range(columns + 1):
+            for i in range(columns + 1):
+                points.InsertNextPoint(i, j, depth if (i, j, k) == (middle, middle, 1) else k)
+                values.InsertNextValue(0.2 + 0.15 * ((i + 2 * j + 3 * k) % 5))
+    grid.SetPoints(points)
+
+    def point(i, j, k):
+        return (k * (columns + 1) + j) * (columns + 1) + i
+
+    for j in range(columns):
+        for i in range(columns):
+            grid.InsertNextCell(VTK_HEXAHEDRON, 8, [point(i + a, j + b, k) for k in (0, 1)
+                                                    for a, b in ((0, 0), (1, 0), (1, 1), (0, 1))])
+    grid.GetPointData().SetScalars(values)
+    return grid
+
+
+class FoldedCellTests(SceneTestCase):
+    def test_folded_cells_against_the_reference(self):
+        # A ray may cross a folded cell's curved faces several times, and their normals do not tell
+        # where it enters the cell and where it leaves. The walk takes such a cell's parts as the
+        # reference does (the stretches between its face hits whose middles Newton from the centre
+        # maps into the cell), and the entry pass lets a ray into it by any crossing. Before, whole
+        # stretches of these cells were lost or added, far past both bounds.
+        prop = uvrender.volume_property((0, 1))
+        prop.SetScalarOpacityUnitDistance(0.5)
+        for columns, depth, tangled in ((1, -0.4, 1), (4, -0.5, 4)):
+            mesh = folded_slab(columns, depth)
+            for azimuth, elevation in ((30, 25), (120, -20), (250, 60), (0, 89), (10, -80)):
+                with self.subTest(columns=columns, azimuth=azimuth, elevation=elevation):
+                    camera = camera_for(mesh, azimuth, elevation, distance=1.8)
+                    scene = HexScene(mesh, prop, camera, 96)
+                    image = self.assert_near_reference(scene, mesh, prop, camera, 96, 3e-3)[1]
+                    self.assertEqual(statistic(scene.mapper, "TangledCells"), tangled)
+                    # The rim of a fold, where a ray grazes the crease, may leave a pixel or two.
+                    drawn, exact = image.GetPointData().GetScalars(), reference(mesh, prop, camera, 96).GetPointData().GetScalars()
+                    off = sum(1 for p in range(drawn.GetNumberOfTuples())
+                              if max(abs(x - y) for x, y in zip(drawn.GetTuple4(p), exact.GetTuple4(p))) > 0.05)
+                    self.assertLessEqual(off, 2)
+
+
 class ReservoirGridTests(SceneTestCase):
     """Corner-point grids (corner_point.py): layers pinching out into hexahedra with repeated ids and
     flat cells, a fault whose faces do not match across it, left-handed cells, UTM coordinates."""
@@ -1125,11 +1176,12 @@ class RealMeshTests(BaselineTestCase):
         self.check(self.load(shared_data.disk_out_ref, "Temp"), 0.05, 1e-3, "hexahedral_disk_out_ref", (0.4, 0.8))
 
     def test_can(self):
-        # The crushed can: 51 of its 4800 hexahedra are tangled (Jacobian of both signs), hence the
-        # looser bound: the walk takes one cell at a time where the optical model superposes
-        # overlapping cells.
+        # The crushed can: 51 of its 4800 hexahedra are tangled (Jacobian of both signs). The walk
+        # takes their parts as the reference does (FoldedCellTests), which halved this error; the
+        # bound stays looser than other meshes' because where different cells of the crushed wall
+        # overlap, the walk counts one medium and the reference adds them.
         mesh = self.load(shared_data.can, "DISPL_magnitude")
-        scene = self.check(mesh, 0.05, 0.007, "hexahedral_can", (0.5,))
+        scene = self.check(mesh, 0.05, 1e-3, "hexahedral_can", (0.5,))
         self.assertEqual(statistic(scene.mapper, "TangledCells"), 51)
         self.assertEqual(scene.events.warnings, 1)
 
