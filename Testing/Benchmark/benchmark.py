@@ -828,7 +828,8 @@ def readme_text(rows, command, started, machine, partial, left_out=()):
         "the per-scene plots of time against error and montages go to `--output` (default `out/benchmark`).",
         "Other benchmarks: `deforming.py` (a mesh whose points move every frame), `time_series.py` and",
         "`paraview_time_series.py` (a reader's time steps: values or points changing, against a static frame),",
-        "`paraview_ranks.py` (ParaView on 1, 2 and 4 ranks: [RANKS.md](RANKS.md)), `reference_render.py` (the reference alone),",
+        "`paraview_ranks.py` (ParaView on 1, 2 and 4 ranks: [RANKS.md](RANKS.md)), `mesh_errors.py` (the hexahedral caster's "
+        "error on every mesh of ../shared/data: [MESH_ERRORS.md](MESH_ERRORS.md)), `reference_render.py` (the reference alone),",
         "`scale.py` (each mapper from 1e4 to 1e7 cells, one process a run: [SCALE.md](SCALE.md)) and",
         "`build/vtk/bin/uvBenchmarkFilters` (the filters against VTK's).",
         "",
