@@ -76,9 +76,9 @@ struct vtkHexahedralRayCastPrograms
   }
 
   /// The variants a test compiles: every combination of the flags, each with an integration mode and
-  /// a cell geometry taken in turn, so that every pair of those two appears (tangled cells in every
-  /// other variant of the general geometry) (all of their products
-  /// with the flags would be nine times as many programs to link, for no define they share).
+  /// a cell geometry taken in turn, so that every pair of those two appears (all of their products
+  /// with the flags would be nine times as many programs to link, for no define they share); every
+  /// other variant of the general geometry has folded cells.
   static std::vector<TraversalOptions> AllTraversalOptions()
   {
     std::vector<TraversalOptions> all;

@@ -194,8 +194,9 @@ int FindExitThroughParts(vec3 origin, vec3 direction, float t, out float exitT)
 #endif
 
 /// The face of the loaded cell where the ray leaves it nearest beyond t (the entry face `enterFace`
-/// only beyond rounding of t, or not at all through planes), with that parameter in exitT; -1 when no face claims the ray. Where none does beyond rounding of t, the
-/// ray leaves where it entered (a flat cell, whose faces coincide): exitT is then t, no length.
+/// only beyond rounding of t, or not at all through planes), with that parameter in exitT; -1 when
+/// no face claims the ray. Where none does beyond rounding of t, the ray leaves where it entered (a
+/// flat cell, whose faces coincide): exitT is then t, no length.
 int FindExit(vec3 origin, vec3 direction, float t, int enterFace, out float exitT)
 {
   // One of the two per program: a CPU driver runs both sides of a branch that differs between pixels.
