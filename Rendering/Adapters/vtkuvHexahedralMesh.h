@@ -9,6 +9,7 @@
 
 #include "uvHexahedralMesh.h"
 #include "uvNonConformingFaces.h"
+#include "uvOverlappingCells.h"
 #include "uvLinearCellSplit.h"
 #include "uvScalarNormalisation.h"
 #include "vtkuvMeshContent.h"
@@ -57,6 +58,10 @@ public:
   vtkSmartPointer<vtkDataSet> Drawn;
   RenderedScalar DrawnScalar;
   vtkIdType TangledCells = 0, NaNCells = 0;
+  // Where cells fold, which cells overlap which (uvOverlappingCells.h; empty without folded cells),
+  // and the same packed for the GPU.
+  uv::OverlapPartners Overlaps;
+  std::vector<std::int32_t> PackedOverlaps;
   std::size_t NonConformingFaces = 0; ///< boundary faces lying against another cell's (faults)
   vtkIdType FlatCells = 0; // vertices, lines and polygons: not volumes, left out
   int Builds = 0, PointRefreshes = 0, ValueRefreshes = 0;
@@ -136,8 +141,7 @@ private:
     }
     if (changed.Points)
     {
-      this->TangledCells =
-        static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, vtkuv::ParallelFor));
+      this->FindFoldedCells();
       this->Geometry = uv::MeshCellGeometry(this->CellPoints, this->Points.Values, vtkuv::ParallelFor);
       // Which faces lie against which depends on where the points are; the neighbours' GPU copy
       // follows the cells' version, so a mesh with such faces is built again.
@@ -180,8 +184,7 @@ private:
     const std::vector<std::uint32_t> samePoint = uv::CoincidentPointRepresentatives(
       this->Points.Values, [](auto begin, auto end, auto less) { vtkSMPTools::Sort(begin, end, less); });
     this->MergeCoincidentCells(samePoint);
-    this->TangledCells =
-      static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, vtkuv::ParallelFor));
+    this->FindFoldedCells();
     this->Geometry = uv::MeshCellGeometry(this->CellPoints, this->Points.Values, vtkuv::ParallelFor);
     this->Faces = uv::MakeHexahedralFaces(
       this->CellPoints, samePoint, vtkuv::ParallelFor, [](auto begin, auto end) { vtkSMPTools::Sort(begin, end); },
@@ -194,12 +197,25 @@ private:
     return std::string();
   }
 
+  /// TangledCells, and where there are any, which cells overlap (OverlapPartners).
+  void FindFoldedCells()
+  {
+    this->TangledCells =
+      static_cast<vtkIdType>(uv::CountTangledHexahedra(this->CellPoints, this->Points.Values, vtkuv::ParallelFor));
+    this->Overlaps = uv::OverlapPartners();
+    this->PackedOverlaps.clear();
+    if (this->TangledCells == 0)
+      return;
+    this->Overlaps = uv::FindOverlapPartners(this->CellPoints, this->Points.Values, vtkuv::ParallelFor);
+    this->PackedOverlaps = this->Overlaps.Packed();
+  }
+
 public:
   std::size_t Bytes() const
   {
     return sizeof(std::uint32_t) * this->CellPoints.size() + sizeof(float) * this->Points.Values.size() +
       sizeof(float) * (this->CellScalars.size() + this->CellDensities.size()) +
-      sizeof(std::int32_t) * (this->Faces.Neighbours.size() + this->Faces.Boundary.size());
+      sizeof(std::int32_t) * (this->Faces.Neighbours.size() + this->Faces.Boundary.size() + this->PackedOverlaps.size());
   }
 
 private:

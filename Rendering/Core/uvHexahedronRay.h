@@ -65,7 +65,8 @@ inline HexahedronFrame MakeHexahedronFrame(const glm::dvec3 p[8])
 /// over the corners and the centre (where it is extreme for most cells). Zeros, as at a collapsed
 /// edge, do not count. A ray through such a cell may meet a face several times either way, and
 /// overlapping neighbours: the reference takes the cell's parts by Newton from its centre and adds
-/// overlapping cells' media; the hexahedral walk takes the parts alike and counts one medium.
+/// overlapping cells' media; the hexahedral walk takes the parts alike and adds the media of the
+/// cells it overlaps (uvOverlappingCells.h).
 inline bool IsTangledHexahedron(const glm::dvec3 p[8])
 {
   auto determinant = [p](double r, double s, double t) {

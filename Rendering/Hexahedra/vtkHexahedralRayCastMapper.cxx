@@ -164,6 +164,7 @@ public:
       this->VisibleBits.clear();
       this->Region = uv::VisibleRegion();
     }
+    changed = this->AddFacesOfOverlappingCells(mesh, skip, changed) || changed;
     this->Skip = skip;
     this->MeshCellsVersion = mesh.CellsVersion;
     this->Mesh = &mesh;
@@ -173,6 +174,8 @@ public:
 
   const std::vector<std::int32_t>& Boundary() const
   {
+    if (!this->WithOverlaps.empty())
+      return this->WithOverlaps;
     return this->Skip || !this->Mesh ? this->Region.Boundary : this->Mesh->Faces.Boundary;
   }
   std::size_t BoundaryCount() const { return this->Boundary().size() / 4; }
@@ -199,6 +202,27 @@ private:
   std::vector<std::uint32_t> VisibleBits;
   std::array<float, 6> Box{};
   uv::VisibleRegion Region;
+  std::uint64_t OverlapsMeshVersion = 0;
+  std::vector<std::int32_t> WithOverlaps; // the entry faces and the faces of overlapping cells
+
+  /// Where cells overlap, the entry faces and the faces of the overlapping (visible) cells inside the
+  /// mesh, through which a fold can let a ray in before any boundary face (uvOverlappingCells.h);
+  /// true when that list changed.
+  bool AddFacesOfOverlappingCells(const vtkuv::HexahedralMesh& mesh, bool skip, bool changed)
+  {
+    if (!changed && mesh.Version == this->OverlapsMeshVersion)
+      return false;
+    this->OverlapsMeshVersion = mesh.Version;
+    const bool had = !this->WithOverlaps.empty();
+    this->WithOverlaps.clear();
+    if (mesh.Overlaps.PairCount() == 0)
+      return had;
+    this->WithOverlaps = skip ? this->Region.Boundary : mesh.Faces.Boundary;
+    const std::vector<std::int32_t> inside = uv::FacesOfOverlappingCells(mesh.Overlaps, mesh.Faces.Neighbours,
+      [&](std::size_t cell) { return !skip || this->Visible[cell]; });
+    this->WithOverlaps.insert(this->WithOverlaps.end(), inside.begin(), inside.end());
+    return true;
+  }
 };
 
 /// The GPU copies of the mesh, the transfer function and the isosurfaces.
@@ -209,6 +233,7 @@ struct GpuResources
   vtkUnstructuredVolumeBufferTexture CellDensities; // only where cells coincide
   vtkUnstructuredVolumeBufferTexture VisibleCells; // skipping only
   vtkUnstructuredVolumeBufferTexture PointGradients; // vertex-gradient lighting only
+  vtkUnstructuredVolumeBufferTexture OverlapPartners; // folded cells only
   vtkUnstructuredVolumeTransferFunctionTexture TransferFunction;
   vtkUnstructuredVolumeTexture Isosurfaces;
 
@@ -216,7 +241,7 @@ struct GpuResources
   {
     for (vtkUnstructuredVolumeBufferTexture* texture : { &this->CellPoints, &this->Points, &this->Neighbours,
            &this->BoundaryFaces, &this->CellScalars, &this->CellDensities, &this->VisibleCells,
-           &this->PointGradients })
+           &this->PointGradients, &this->OverlapPartners })
       texture->Release();
     this->TransferFunction.Release();
     this->Isosurfaces.Release();
@@ -338,6 +363,7 @@ public:
     images.Framebuffer->ActivateDrawBuffers(2);
     const bool cellScalars = settings.CellScalars, skip = settings.SkipInvisibleCells;
     const bool vertexGradients = settings.VertexGradients, densities = settings.CellDensities;
+    const bool folded = settings.TangledCells && settings.CellGeometry == 0; // the program's UV_TANGLED_CELLS
     vtkShaderProgram* program = this->Ready(pass.Frame->Window,
       { uvgl::NodesNeedTexture(gpu.TransferFunction.GetNodes()), cellScalars, skip, vertexGradients, densities,
         settings.IntegrationMode, settings.CellGeometry, settings.TangledCells });
@@ -361,6 +387,8 @@ public:
         gpu.VisibleCells.Bind(program, "visibleCells");
       if (vertexGradients)
         gpu.PointGradients.Bind(program, "pointGradients");
+      if (folded)
+        gpu.OverlapPartners.Bind(program, "overlapPartners");
       gpu.TransferFunction.Bind(program);
       gpu.Isosurfaces.Bind(program, "isosurfaces");
       SetUniforms(program, pass, settings);
@@ -380,6 +408,8 @@ public:
         gpu.VisibleCells.Unbind();
       if (vertexGradients)
         gpu.PointGradients.Unbind();
+      if (folded)
+        gpu.OverlapPartners.Unbind();
       gpu.TransferFunction.Unbind();
       gpu.Isosurfaces.Unbind();
     }
@@ -549,6 +579,7 @@ void vtkHexahedralRayCastMapper::ReportStatistics(vtkUnstructuredVolumeFrameStat
   statistics->SetValue("Delegated", impl.Delegated ? 1.0 : 0.0);
   statistics->SetValue("Cells", static_cast<double>(impl.Mesh.CellCount()));
   statistics->SetValue("TangledCells", static_cast<double>(impl.Mesh.TangledCells));
+  statistics->SetValue("OverlappingPairs", static_cast<double>(impl.Mesh.Overlaps.PairCount()));
   statistics->SetValue("BoundaryFaces", static_cast<double>(impl.Mesh.BoundaryCount()));
   statistics->SetValue("Peels", impl.Peels);
   statistics->SetValue("GradientComputations", impl.Gradients.Computations);
@@ -615,7 +646,8 @@ bool vtkHexahedralRayCastMapper::UpdateMesh(vtkDataSet* input, const vtkuv::Rend
   if (built && mesh.TangledCells > 0)
   {
     vtkWarningMacro(<< mesh.TangledCells << " hexahedra are tangled (their Jacobian changes sign, as in a "
-                    << "crushed mesh): where they overlap other cells, a ray counts one medium");
+                    << "crushed mesh): rendered as the reference takes them, by slower steps where they overlap other "
+                    << "cells");
   }
   if (built && mesh.FlatCells > 0)
   {
@@ -701,6 +733,8 @@ bool vtkHexahedralRayCastMapper::Upload(const vtkUnstructuredVolumeFrame& frame)
     impl.Gpu.CellScalars.Sync(window, mesh.CellScalars, 1, mesh.Version);
   if (!mesh.CellDensities.empty())
     impl.Gpu.CellDensities.Sync(window, mesh.CellDensities, 1, mesh.CellsVersion);
+  if (!mesh.PackedOverlaps.empty())
+    impl.Gpu.OverlapPartners.Sync(window, mesh.PackedOverlaps, 1, mesh.Version);
   if (impl.NeedGradients)
     impl.Gpu.PointGradients.Sync(window, impl.Gradients.Values, 4, impl.Gradients.Version);
   impl.Gpu.TransferFunction.Sync(window, impl.TransferFunction.Nodes);

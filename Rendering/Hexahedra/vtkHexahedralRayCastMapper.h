@@ -60,8 +60,11 @@
  * warning); folded (tangled) cells are rendered, with a warning per mesh build. A ray takes a folded
  * cell's parts as the reference does (the stretches between its face hits that Newton from the
  * centre maps into the cell) and its field by Newton from the centre (a program variant for meshes
- * with such cells); where different cells overlap, the walk counts one of them where the reference
- * adds their media.
+ * with such cells). The cells a folded cell overlaps are found once per mesh build (sampled, so an
+ * overlap thinner than a sixth of a cell may be missed); where they overlap, the walk adds their
+ * media as the reference does, by midpoint steps over that cell's segment, and rays also enter the
+ * mesh through their inner faces (a fold may push them out through the boundary). Isosurfaces there
+ * keep one cell's medium.
  */
 #ifndef vtkHexahedralRayCastMapper_h
 #define vtkHexahedralRayCastMapper_h
@@ -153,8 +156,9 @@ public:
 
 protected:
   /// The statistics (GetFrameStatistics) the caster adds: Delegated (above); of the last frame,
-  /// Cells in the mesh, BoundaryFaces, Peels run and TangledCells (folded over themselves; warned
-  /// about once per mesh build); GradientComputations, the times vtkVertexGradientFilter ran since
+  /// Cells in the mesh, BoundaryFaces, Peels run, TangledCells (folded over themselves; warned
+  /// about once per mesh build) and OverlappingPairs (pairs of cells whose volumes overlap, one of
+  /// them folded); GradientComputations, the times vtkVertexGradientFilter ran since
   /// creation (VERTEX_GRADIENTS without a gradient array); and with skipping (SkipInvisibleCells)
   /// VisibleCells the walk takes (every cell when off), EntryFaces rays enter them by (the visible
   /// region's boundary, or the mesh's) and VisibleRegionBuilds (only when a transfer-function or

@@ -16,6 +16,7 @@
 #include "uvHexahedronLib.h"
 #include "uvHexahedralCutsLib.h"
 #include "uvHexahedralExitLib.h"
+#include "uvHexahedralOverlapLib.h"
 #include "uvHexahedralLoadedCellLib.h"
 #include "uvHexahedralSegmentLib.h"
 #include "uvPhongLib.h"
@@ -384,6 +385,7 @@ inline const std::vector<uv::ShaderLibrary>& ShaderLibraries()
     { "HexahedralSegment", uvHexahedralSegmentLib, { "HexahedralLoadedCell", "Phong" } },
     { "HexahedralCuts", uvHexahedralCutsLib, { "HexahedralSegment", "TransferFunction" } },
     { "HexahedralExit", uvHexahedralExitLib, { "HexahedralLoadedCell" } },
+    { "HexahedralOverlap", uvHexahedralOverlapLib, { "HexahedralCuts" } },
     { "Phong", uvPhongLib, {} },
     { "ProjectedTetrahedron", uvProjectedTetrahedronLib, {} },
     { "SegmentIntegration", uvSegmentIntegrationLib, { "TransferFunction", "Phong" } },

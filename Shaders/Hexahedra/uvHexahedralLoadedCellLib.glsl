@@ -56,21 +56,27 @@ bool IsFlat()
   return true;
 }
 
-void LoadCell(int cell)
+/// The corners of `cell` (point ids `ids`) and their scalars.
+void CellCorners(int cell, uint ids[8], out vec3 q[8], out float f[8])
 {
-  CellPointIds(cell, cellIds);
   for (int k = 0; k < 8; ++k)
   {
-    vec4 data = texelFetch(pointData, int(cellIds[k]));
-    points[k] = data.xyz;
-    scalars[k] = data.w;
+    vec4 data = texelFetch(pointData, int(ids[k]));
+    q[k] = data.xyz;
+    f[k] = data.w;
   }
 #ifdef UV_CELL_SCALARS
   // Every corner takes the cell's value: the cubic along the ray is that constant.
   float value = texelFetch(cellScalars, cell).r;
   for (int k = 0; k < 8; ++k)
-    scalars[k] = value;
+    f[k] = value;
 #endif
+}
+
+void LoadCell(int cell)
+{
+  CellPointIds(cell, cellIds);
+  CellCorners(cell, cellIds, points, scalars);
   mapB = points[1] - points[0];
   mapC = points[3] - points[0];
   mapD = points[4] - points[0];
@@ -160,18 +166,18 @@ vec3 InverseTrilinear(vec3 x, vec3 xi)
 }
 
 #ifdef UV_TANGLED_CELLS
-/// The loaded cell's coordinates of x by Newton from its centre, as the reference finds them
-/// (uv::SafeguardedNewton): steps limited to half the cell and more iterations than
+/// Coordinates of x in the cell with corners q by Newton from its centre, as the reference finds
+/// them (uv::SafeguardedNewton): steps limited to half the cell and more iterations than
 /// InverseTrilinear's, since Newton converges slowly near a fold, where the Jacobian vanishes.
-vec3 InverseFromCentre(vec3 x)
+vec3 InverseFromCentreOf(vec3 q[8], vec3 x)
 {
   vec3 xi = vec3(0.5);
   for (int iteration = 0; iteration < 32; ++iteration)
   {
-    mat3 jacobian = Jacobian(xi);
+    mat3 jacobian = MapJacobian(q, xi);
     if (IsSingular(jacobian))
       break;
-    vec3 step = inverse(jacobian) * (MapTrilinear(xi) - x);
+    vec3 step = inverse(jacobian) * (MapPoint(q, xi) - x);
     float longest = MaxComponent(step);
     xi = clamp(xi - (longest > 0.5 ? 0.5 / longest : 1.0) * step, vec3(-0.5), vec3(1.5));
     if (longest < 1e-6)
@@ -180,15 +186,27 @@ vec3 InverseFromCentre(vec3 x)
   return xi;
 }
 
-/// Whether x lies in the loaded cell as the reference judges it (uv::IntersectIsoparametric): its
-/// coordinates by Newton from the centre map back onto it and lie in the unit cube. Where a folded
-/// cell covers x twice, it counts once.
+/// Whether x lies in the cell with corners q (of that size) as the reference judges it
+/// (uv::IntersectIsoparametric): its coordinates xi by Newton from the centre map back onto it and
+/// lie in the unit cube. Where a folded cell covers x twice, it counts once.
+bool ClaimsPointOf(vec3 q[8], float size, vec3 x, out vec3 xi)
+{
+  xi = InverseFromCentreOf(q, x);
+  const float slack = 1e-5;
+  return MaxComponent(MapPoint(q, xi) - x) <= 1e-4 * size && all(greaterThanEqual(xi, vec3(-slack))) &&
+    all(lessThanEqual(xi, vec3(1.0 + slack)));
+}
+
+vec3 InverseFromCentre(vec3 x)
+{
+  return InverseFromCentreOf(points, x);
+}
+
+/// ClaimsPointOf for the loaded cell.
 bool ClaimsPoint(vec3 x, float size)
 {
-  vec3 xi = InverseFromCentre(x);
-  const float slack = 1e-5;
-  return MaxComponent(MapTrilinear(xi) - x) <= 1e-4 * size && all(greaterThanEqual(xi, vec3(-slack))) &&
-    all(lessThanEqual(xi, vec3(1.0 + slack)));
+  vec3 xi;
+  return ClaimsPointOf(points, size, x, xi);
 }
 #endif
 

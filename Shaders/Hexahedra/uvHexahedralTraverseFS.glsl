@@ -109,6 +109,10 @@ void Composite(vec3 premultiplied, float depth)
 
 //UV::HexahedralExit
 
+#ifdef UV_TANGLED_CELLS
+//UV::HexahedralOverlap
+#endif
+
 
 #ifdef UV_SKIP_INVISIBLE_CELLS
 /// Whether `cell` is in the visible region (the cells whose entry faces the next peel draws).
@@ -142,7 +146,15 @@ bool GoOnFromRelocation(vec3 origin, vec3 direction, inout float t, inout int ce
   // between them) is a gap for the next peel, not medium.
   float ahead;
   int attempts;
+  int from = cell;
   bool located = Relocate(origin, direction, t, cell, ahead, attempts) && (faultFrom < 0 || attempts == 1);
+#ifdef UV_TANGLED_CELLS
+  if (!located && faultFrom < 0)
+  {
+    cell = from;
+    located = PartnerAhead(origin, direction, t, cell, ahead);
+  }
+#endif
   if (!located && faultFrom >= 0)
   {
     exitParameter = t; // the fault's face is bare here (its throw): the ray left the mesh
@@ -222,10 +234,15 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
       bool visible = CellVisible();
 #endif
       float segmentStart = t;
+      bool overlapped = false;
 #ifdef UV_TANGLED_CELLS
       segmentStart = cellTangled ? partStart : t;
+      // Where folded cells overlap others the media add, as in the reference. Isosurfaces keep the
+      // walk's one medium: the midpoint steps do not find them.
+      overlapped = isosurfaceCount == 0 && segmentEnd > t && !cellFlat &&
+        IntegrateOverlapping(origin, direction, t, segmentEnd, cell);
 #endif
-      if (segmentEnd > segmentStart && !cellFlat && visible)
+      if (!overlapped && segmentEnd > segmentStart && !cellFlat && visible)
         IntegrateCell(origin, direction, segmentStart, segmentEnd, CellDensity(cell));
       if (transmittance <= 1.0 - opacityThreshold || exitT >= opaqueT)
         break;
@@ -241,6 +258,18 @@ float Walk(vec3 origin, vec3 direction, float opaqueT, int cell, int enterFace, 
         t = exitT;
         continue;
       }
+#ifdef UV_TANGLED_CELLS
+      // A fold may have pushed a partner of this cell through the boundary here: the ray goes on in it.
+      float ahead;
+      int partner = cell;
+      if (next < 0 && PartnerAhead(origin, direction, exitT, partner, ahead))
+      {
+        cell = partner;
+        enterFace = -1;
+        t = exitT;
+        continue;
+      }
+#endif
       if (next < 0)
       {
         exitParameter = exitT; // left the mesh: the next peel looks beyond here

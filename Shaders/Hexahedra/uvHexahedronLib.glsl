@@ -174,6 +174,14 @@ mat3 MapJacobian(vec3 p[8], vec3 xi)
   return mat3(dr, ds, dt);
 }
 
+/// The isoparametric map of the cell with corners p at xi.
+vec3 MapPoint(vec3 p[8], vec3 xi)
+{
+  vec3 bottom = mix(mix(p[0], p[1], xi.x), mix(p[3], p[2], xi.x), xi.y);
+  vec3 top = mix(mix(p[4], p[5], xi.x), mix(p[7], p[6], xi.x), xi.y);
+  return mix(bottom, top, xi.z);
+}
+
 /// Whether the cell with corners p folds over itself: its map's Jacobian takes both signs over its
 /// corners and centre (uv::IsTangledHexahedron's test; zeros, as at a collapsed edge, do not count).
 /// Its faces' normals then do not tell where a ray enters it and where it leaves.

@@ -130,11 +130,11 @@ FLAT_CELLS = {VTK_VERTEX, VTK_POLY_VERTEX, VTK_LINE, VTK_POLY_LINE, VTK_TRIANGLE
 MAPPER_PIXELS = 300
 WORST_PIXELS = 20
 MAPPER_BOUNDS = {"preintegrated": 2e-3, "shells": 1.5e-2, "hexahedral": 1e-2}
-# Known limit: the hexahedral walk through the can's crushed wall, at a few covered pixels, where
-# different cells overlap and the walk counts one medium (the reference adds them). (The
-# tetrahedra mapper's projection was off on the non-convex tetra_mesh and mfem_escher, by its centroid
-# order; it ray-casts them now, AUTOMATIC at this size.)
-MESH_BOUNDS = {("can", "hexahedral"): 1.5e-2}
+# Per mesh and mapper, where a mesh needs its own bound: none now. (The can's crushed wall needed
+# one for the hexahedral walk until it added overlapping cells' media; the tetrahedra mapper's
+# projection was off on the non-convex tetra_mesh and mfem_escher, by its centroid order, and it
+# ray-casts them now, AUTOMATIC at this size.)
+MESH_BOUNDS = {}
 
 
 def float_image_tuples(image):
