@@ -143,8 +143,9 @@ int NextHit(float hits[12], float after)
 /// holds at its middle, as the reference takes a cell's parts. The cell's part starts at t, or at the
 /// first hit after which a stretch is the cell's (partStart: where a fold's face only seemed to
 /// enter it), and the ray leaves it at the first hit after that where a stretch is not, or at the
-/// last. Each face's two hits have their own slots: softpipe writes an array at a per-pixel index
-/// wrongly (see HitPatchAt).
+/// last. Each face's two hits have their own slots, written by constant indices only: softpipe
+/// writes an array element at the index the first pixel of the 2x2 quad has (HitPatchAt), and where
+/// that pixel is done with its walk, even this loop's counter is stale there.
 int FindExitThroughParts(vec3 origin, vec3 direction, float t, out float exitT)
 {
   float size = MaxComponent(points[6] - points[0]) + MaxComponent(points[7] - points[1]);
@@ -158,10 +159,15 @@ int FindExitThroughParts(vec3 origin, vec3 direction, float t, out float exitT)
     vec3 n0 = vec3(0.0), n1 = vec3(0.0);
     int corners = LoadedCellFace(f, a, b, c, d);
     int count = corners < 3 ? 0 : HitFace(origin, direction, a, b, c, d, corners, h0, h1, n0, n1);
-    hits[2 * f] = count > 0 && h0 > t + tolerance ? h0 : noExit;
-    hits[2 * f + 1] = count > 1 && h1 > t + tolerance ? h1 : noExit;
-    normals[2 * f] = n0;
-    normals[2 * f + 1] = n1;
+    h0 = count > 0 && h0 > t + tolerance ? h0 : noExit;
+    h1 = count > 1 && h1 > t + tolerance ? h1 : noExit;
+    for (int j = 0; j < 6; ++j) // constant indices once unrolled
+    {
+      hits[2 * j] = j == f ? h0 : hits[2 * j];
+      hits[2 * j + 1] = j == f ? h1 : hits[2 * j + 1];
+      normals[2 * j] = j == f ? n0 : normals[2 * j];
+      normals[2 * j + 1] = j == f ? n1 : normals[2 * j + 1];
+    }
   }
   exitT = noExit;
   int exitFace = -1;

@@ -96,6 +96,36 @@ def inside_out(mesh):
     return result
 
 
+def folded_slab(columns, depth, layers=1):
+    """A slab of columns x columns x layers unit hexahedra whose point nearest the middle of the
+    first layer's top is pushed down to z = depth, below the bottom: the first layer's cells around it
+    fold over themselves (their Jacobians take both signs) and their top faces, curved, poke out
+    through the bottom. With a second layer, its cells above the point reach down through the folded
+    ones and out through the bottom with them: different cells overlap."""
+    grid = vtkUnstructuredGrid()
+    points = vtkPoints()
+    values = vtkDoubleArray()
+    values.SetName("f")
+    middle = (columns + 1) // 2
+    for k in range(layers + 1):
+        for j in range(columns + 1):
+            for i in range(columns + 1):
+                points.InsertNextPoint(i, j, depth if (i, j, k) == (middle, middle, 1) else k)
+                values.InsertNextValue(0.2 + 0.15 * ((i + 2 * j + 3 * k) % 5))
+    grid.SetPoints(points)
+
+    def point(i, j, k):
+        return (k * (columns + 1) + j) * (columns + 1) + i
+
+    for layer in range(layers):
+        for j in range(columns):
+            for i in range(columns):
+                grid.InsertNextCell(VTK_HEXAHEDRON, 8, [point(i + a, j + b, k) for k in (layer, layer + 1)
+                                                        for a, b in ((0, 0), (1, 0), (1, 1), (0, 1))])
+    grid.GetPointData().SetScalars(values)
+    return grid
+
+
 def hex_dominant(resolution, distortion=vtkAnalyticMeshSource.JITTER):
     """analytic_hexahedra(resolution) made hex-dominant and conforming, with every linear 3D cell
     type: the columns of the lowest x third split into two wedges each (the same diagonal all the

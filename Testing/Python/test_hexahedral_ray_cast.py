@@ -12,7 +12,7 @@ import stress  # noqa: E402  (its generated degenerate meshes and placements)
 import corner_point  # noqa: E402
 import uvrender  # noqa: E402
 from fixtures import (BaselineTestCase, HexScene, Scene, SceneTestCase, analytic, analytic_hexahedra, as_polyhedra,  # noqa: E402
-                      camera_for, check_geometry_shown_later, copy_image, covered_colour_error, finite_image, hex_dominant, inside_camera,
+                      camera_for, check_geometry_shown_later, copy_image, covered_colour_error, finite_image, folded_slab, hex_dominant, inside_camera,
                       largest_difference,
                       load_shared, plane_scene_setup, property_from_nodes, reference, rmse, statistic,
                       thin_shell_property, transparent_property)
@@ -1033,36 +1033,6 @@ class StressTests(SceneTestCase):
         image = scene.render()
         self.assertEqual(scene.events.errors, 0)
         self.assertTrue(finite_image(image))
-
-
-def folded_slab(columns, depth, layers=1):
-    """A slab of columns x columns x layers unit hexahedra whose point nearest the middle of the
-    first layer's top is pushed down to z = depth, below the bottom: the first layer's cells around it
-    fold over themselves (their Jacobians take both signs) and their top faces, curved, poke out
-    through the bottom. With a second layer, its cells above the point reach down through the folded
-    ones and out through the bottom with them: different cells overlap."""
-    grid = vtkUnstructuredGrid()
-    points = vtkPoints()
-    values = vtkDoubleArray()
-    values.SetName("f")
-    middle = (columns + 1) // 2
-    for k in range(layers + 1):
-        for j in range(columns + 1):
-            for i in range(columns + 1):
-                points.InsertNextPoint(i, j, depth if (i, j, k) == (middle, middle, 1) else k)
-                values.InsertNextValue(0.2 + 0.15 * ((i + 2 * j + 3 * k) % 5))
-    grid.SetPoints(points)
-
-    def point(i, j, k):
-        return (k * (columns + 1) + j) * (columns + 1) + i
-
-    for layer in range(layers):
-        for j in range(columns):
-            for i in range(columns):
-                grid.InsertNextCell(VTK_HEXAHEDRON, 8, [point(i + a, j + b, k) for k in (layer, layer + 1)
-                                                        for a, b in ((0, 0), (1, 0), (1, 1), (0, 1))])
-    grid.GetPointData().SetScalars(values)
-    return grid
 
 
 class FoldedCellTests(SceneTestCase):

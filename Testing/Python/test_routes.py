@@ -11,7 +11,7 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import uvrender  # noqa: E402
 from fixtures import (HexScene, Scene, SceneTestCase, analytic, analytic_hexahedra, camera_for,  # noqa: E402
-                      reference, rmse, shared_window, thin_shell_property, transparent_property)
+                      folded_slab, reference, rmse, shared_window, thin_shell_property, transparent_property)
 
 from unstructuredvolume import vtkBarycentricShellMapper  # noqa: E402
 
@@ -34,12 +34,12 @@ class RouteTestCase(SceneTestCase):
         renderer = [line for line in window.ReportCapabilities().splitlines() if "renderer string" in line]
         assert renderer and DRIVER in renderer[0], f"asked for {DRIVER}, got {renderer}"
 
-    def check(self, make_scene, mesh, bound, isovalue=None):
+    def check(self, make_scene, mesh, bound, isovalue=None, camera=None):
         """Renders the scene `make_scene(mesh, property, camera)` makes and checks its RMSE against the
         reference. With `isovalue` (a fraction of the range) the volume is transparent and the scene
         draws an opaque, unlit isosurface there, which the reference renders as its limit: a thin,
         very opaque shell of the transfer function (only rays grazing it differ)."""
-        camera = camera_for(mesh)
+        camera = camera or camera_for(mesh)
         if isovalue is None:
             prop = uvrender.volume_property((0.0, 1.0))
             expected = reference(mesh, prop, camera, SIZE)
@@ -100,6 +100,14 @@ class HexahedralRoutes(RouteTestCase):
 
     def test_fixed_steps(self):
         self.check(self.scene(IntegrationMode=FIXED_STEPS), analytic_hexahedra(12), 1.5e-3)
+
+    def test_folded_and_overlapping_cells(self):
+        # The folded-cell program: a folded cell's parts from its faces' hits in order, the media of
+        # overlapping cells added. softpipe wrote those hits to the wrong slots where the pixels of a
+        # 2x2 quad walked different cells.
+        mesh = folded_slab(4, -0.5, layers=2)
+        for azimuth, elevation in ((30, 25), (120, -20)):
+            self.check(self.scene(), mesh, 1e-3, camera=camera_for(mesh, azimuth, elevation, distance=1.8))
 
 
 class ShellRoutes(RouteTestCase):
