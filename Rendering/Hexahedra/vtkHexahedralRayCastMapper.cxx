@@ -289,9 +289,10 @@ struct PassFrame
 class EntryPass
 {
 public:
-  /// False when the program failed; `entered` tells whether any ray entered the mesh.
+  /// False when the program failed; `entered` tells whether any ray entered the mesh. `foldedCells`:
+  /// the mesh has some, whose faces a ray may enter by any crossing (the test runs only then).
   bool Draw(const PassFrame& pass, PeelImages& images, GpuResources& gpu, std::size_t boundaryCount, bool firstPeel,
-    bool& entered)
+    bool foldedCells, bool& entered)
   {
     vtkOpenGLRenderWindow* window = pass.Frame->Window;
     vtkOpenGLState* state = window->GetState();
@@ -305,6 +306,7 @@ public:
       images.Exit->Activate();
       program->SetUniformi("previousExit", images.Exit->GetTextureUnit());
       program->SetUniformi("firstPeel", firstPeel ? 1 : 0);
+      program->SetUniformi("foldedCells", foldedCells ? 1 : 0);
       program->SetUniformf("meshRadius", static_cast<float>(pass.MeshRadius));
       SetMatrix(program, "modelToClip", pass.ModelToClip);
       pass.SetRayUniforms(program);
@@ -538,7 +540,8 @@ public:
     for (int peel = 0; peel < maximumPeels; ++peel)
     {
       bool entered = false;
-      if (!this->Entry.Draw(pass, this->Images, this->Gpu, this->Entries.BoundaryCount(), peel == 0, entered))
+      if (!this->Entry.Draw(
+            pass, this->Images, this->Gpu, this->Entries.BoundaryCount(), peel == 0, settings.TangledCells, entered))
         return false;
       this->Self->CheckGLErrors("the hexahedral entry pass");
       const bool fromStartCell = peel == 0 && this->StartCellOfFrame >= 0;

@@ -9,6 +9,7 @@
 uniform isamplerBuffer boundaryFaces; // (cell, local face) per boundary face
 uniform mat4 modelToClip;
 uniform int faceOffset; // the first face of this draw (uvgl::DrawItemsInChunks)
+uniform int foldedCells; // 1: some cells of the mesh fold over themselves (else none is tested)
 
 out vec3 modelPosition;
 flat out int boundaryFace;
@@ -41,7 +42,7 @@ void main()
   // A flat boundary cell (a sliver) has its centre in the face's plane up to rounding: the face's
   // corner order orients it there.
   outwardNormal = OutwardFaceNormal(p, CellCentre(corners), CellHandedness(corners));
-  tangled = IsTangledCell(corners) ? 1 : 0;
+  tangled = foldedCells == 1 && IsTangledCell(corners) ? 1 : 0;
   int order[12] = int[12](0, 1, 2, 0, 2, 3, 0, 1, 3, 1, 2, 3);
   // Flat within rounding (a triangle's repeated corner included): one pair covers the patch, and
   // the other pair collapses to a point, which draws nothing.
